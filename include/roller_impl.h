@@ -1,0 +1,152 @@
+/* The Roller context and the functions the source files share. One concern per file:
+     options.c        parameters, validation, -help                      (SPEC section 6)
+     mesh.c           gmsh annulus (C API or file), labels, validation
+     partition.c      METIS partition of the cell graph, distribution
+     discretization.c PetscFE spaces, Dirichlet boundary, M, K, A, loads   (SPEC sections 2-3)
+     kernels.h        pointwise FE kernels
+     forcing.c        theta(t), the explicit Euler/centrifugal/Coriolis load (SPEC section 1)
+     step.c           one DMF step                                        (SPEC section 2)
+     contact*.c       the obstacle QP in rotated contact coordinates       (SPEC section 2)
+     diagnostics.c    R, alpha, energy                                    (SPEC section 4)
+     driver.c         the time loop, monitors, progress line
+     output.c         CSV, HDF5 fields, XDMF
+     checkpoint.c     checkpoint and restart, signals */
+#ifndef ROLLER_IMPL_H
+#define ROLLER_IMPL_H
+
+#include <roller.h>
+#include <petsctao.h>
+#include <petscsnes.h>
+#include <petscds.h>
+#include <petscsf.h>
+
+typedef enum { ROLLER_IC_REST, ROLLER_IC_BUMP, ROLLER_IC_MMS } RollerInitialCondition;
+PETSC_EXTERN const char *const RollerInitialConditions[];
+
+/* Manufactured solutions used to verify the discretization (docs/validation.md). */
+typedef enum { ROLLER_MMS_NONE, ROLLER_MMS_LINEAR, ROLLER_MMS_SINE } RollerMMSType;
+PETSC_EXTERN const char *const RollerMMSTypes[];
+
+/* The velocity in the explicit Coriolis term of f^{k-1}: the paper's backward difference
+   (xi^{k-1} - xi^{k-2})/dt (first order in time when theta' != 0), or the second-order extrapolation
+   (3 xi^{k-1} - 4 xi^{k-2} + xi^{k-3})/(2 dt) (docs/model.md). */
+typedef enum { ROLLER_CORIOLIS_BACKWARD, ROLLER_CORIOLIS_EXTRAPOLATED } RollerCoriolisVelocity;
+PETSC_EXTERN const char *const RollerCoriolisVelocities[];
+
+typedef struct _n_RollerContact *RollerContact;
+typedef struct _n_RollerOutput  *RollerOutput;
+
+/* Indices into ctx->stage for -log_view. */
+enum { ROLLER_STAGE_SETUP, ROLLER_STAGE_STEP, ROLLER_STAGE_CONTACT, ROLLER_STAGE_DIAGNOSTICS, ROLLER_STAGE_OUTPUT, ROLLER_NUM_STAGES };
+
+/* What the diagnostics of one step give (SPEC section 6, CSV columns and extras). */
+typedef struct {
+  PetscReal R, alpha, energy;
+  PetscInt  contact_nodes;
+  PetscReal contact_force, gap_min;
+  PetscInt  qp_iterations;
+  PetscReal kkt_residual;
+} RollerStepInfo;
+
+struct _n_Roller {
+  MPI_Comm comm;
+
+  /* Geometry and mesh */
+  PetscReal r_inner, r_outer, mesh_h;
+  char      mesh_file[PETSC_MAX_PATH_LEN];
+  PetscBool partition_view;
+  DM        dm;
+  PetscReal boundary_length; /* |Gamma_C| of the discrete (polygonal) outer circle */
+
+  /* Discretization */
+  PetscInt  degree;      /* Lagrange degree, 1 (the paper) or 2 */
+  PetscBool clamp_outer; /* xi = 0 on Gamma_C too (Theorem 1 setting) */
+  RollerCoriolisVelocity coriolis;
+
+  /* Material */
+  PetscReal young, poisson, density, lambda, mu;
+
+  /* Driving rotation theta(t) = omega t + a cos(b t) */
+  PetscReal omega, theta_a, theta_b;
+
+  /* Obstacle g(t) = min(speed t, depth) - r_outer, damping eta */
+  PetscBool obstacle;
+  PetscReal obstacle_speed, obstacle_depth, damping;
+
+  /* Time */
+  PetscReal dt, max_time;
+  PetscInt  max_steps;
+  PetscBool quiet;
+
+  /* Initial state and verification */
+  RollerInitialCondition ic;
+  PetscReal              ic_amplitude;
+  RollerMMSType          mms;
+
+  /* Operators: mass M, stiffness K, step matrix A = rho/dt^2 M + K/2 (+ eta/(2 dt) M), all on the
+     free (non-Dirichlet) dofs; loads of the rigid-body parts of f: L_euler = M-load of R(-pi/2) x,
+     L_centrifugal = M-load of x (exact integrals, SPEC section 2). */
+  Mat M, K, A;
+  Vec L_euler, L_centrifugal;
+  Vec coordinates; /* nodal positions x_n of every free dof pair */
+  KSP ksp;
+
+  /* History: xi^k (xi), xi^{k-1} (xi1), xi^{k-2} (xi2), xi^{k-3} (xi3, extrapolated Coriolis only);
+     K xi of the last two levels; work */
+  Vec       xi, xi1, xi2, xi3, Kxi1, Kxi2, rhs, work;
+  PetscInt  step;
+  PetscReal time;
+
+  /* Boundary functionals: R = w_R . xi, alpha = w_alpha . xi (exact integrals over discrete Gamma_C) */
+  Vec w_R, w_alpha;
+
+  RollerContact contact;
+  RollerOutput  output;
+  RollerStepInfo info;
+
+  PetscLogStage stage[ROLLER_NUM_STAGES];
+};
+
+/* options.c */
+PETSC_INTERN PetscErrorCode RollerLameFromYoung(PetscReal, PetscReal, PetscReal *, PetscReal *);
+
+/* mesh.c, partition.c: ctx->dm becomes the distributed annulus with labels "inner" (Gamma_D) and
+   "outer" (Gamma_C), each marking faces and their closure (vertices) with value 1. With a mesh file,
+   ctx->r_inner and ctx->r_outer are measured from it. */
+PETSC_INTERN PetscErrorCode RollerMeshCreate(Roller);
+PETSC_INTERN PetscErrorCode RollerMeshDistribute(Roller);
+PETSC_INTERN PetscErrorCode RollerMeshMeasure(Roller);
+
+/* discretization.c */
+PETSC_INTERN PetscErrorCode RollerDiscretizationSetUp(Roller);
+PETSC_INTERN PetscErrorCode RollerSetConstants(Roller, PetscReal, PetscReal, PetscReal);
+PETSC_INTERN PetscErrorCode RollerOperatorsSetUp(Roller);
+PETSC_INTERN PetscErrorCode RollerComputeBoundaryFunctionals(Roller);
+
+/* forcing.c: theta and its derivatives; the load rho (f^{k-1}, v) of SPEC section 2 */
+PETSC_INTERN void           RollerTheta(Roller, PetscReal, PetscReal *, PetscReal *, PetscReal *);
+PETSC_INTERN PetscReal      RollerObstacleHeight(Roller, PetscReal);
+PETSC_INTERN PetscErrorCode RollerApplyRotate90(Vec, Vec);
+PETSC_INTERN PetscErrorCode RollerAddMMSLoad(Roller, PetscReal, Vec);
+PETSC_INTERN PetscErrorCode RollerMMSExact(Roller, PetscReal, Vec);
+
+/* step.c */
+PETSC_INTERN PetscErrorCode RollerInitialState(Roller);
+PETSC_INTERN PetscErrorCode RollerStep(Roller);
+
+/* contact.c: the obstacle QP (only built when -obstacle is on) */
+PETSC_INTERN PetscErrorCode RollerContactCreate(Roller, RollerContact *);
+PETSC_INTERN PetscErrorCode RollerContactSolve(Roller, RollerContact, PetscReal, Vec, Vec);
+PETSC_INTERN PetscErrorCode RollerContactInfo(Roller, RollerContact, Vec, PetscReal, RollerStepInfo *);
+PETSC_INTERN PetscErrorCode RollerContactDestroy(RollerContact *);
+
+/* diagnostics.c */
+PETSC_INTERN PetscErrorCode RollerComputeStepInfo(Roller);
+PETSC_INTERN PetscErrorCode RollerComputeErrors(Roller, PetscReal, PetscReal *, PetscReal *);
+
+/* output.c */
+PETSC_INTERN PetscErrorCode RollerOutputCreate(Roller, RollerOutput *);
+PETSC_INTERN PetscErrorCode RollerOutputStep(Roller, RollerOutput);
+PETSC_INTERN PetscErrorCode RollerOutputDestroy(Roller, RollerOutput *);
+
+#endif

@@ -1,0 +1,260 @@
+/* PetscFE discretization (SPEC section 3) and the constant operators of the DMF step (SPEC section 2):
+   mass M, stiffness K, A = rho/dt^2 M + K/2 (+ eta/(2 dt) M), factored once; the loads of the rigid part
+   of f; the nodal positions; the boundary functionals behind R and alpha (SPEC section 4). */
+#include <roller_impl.h>
+#include "kernels.h"
+
+static PetscErrorCode Zero(PetscInt dim, PetscReal time, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *ctx)
+{
+  for (PetscInt c = 0; c < Nc; ++c) u[c] = 0.0;
+  return 0;
+}
+
+static PetscErrorCode Position(PetscInt dim, PetscReal time, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *ctx)
+{
+  for (PetscInt c = 0; c < Nc; ++c) u[c] = x[c];
+  return 0;
+}
+
+static PetscErrorCode AddDirichlet(Roller ctx, const char *name)
+{
+  DMLabel        label;
+  const PetscInt one = 1;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLabel(ctx->dm, name, &label));
+  PetscCheck(label, ctx->comm, PETSC_ERR_ARG_WRONG, "The mesh has no label \"%s\"", name);
+  PetscCall(DMAddBoundary(ctx->dm, DM_BC_ESSENTIAL, name, label, 1, &one, 0, 0, NULL, (void (*)(void))Zero, NULL, NULL, NULL));
+  PetscFunctionReturn(0);
+}
+
+/* Lagrange P1 or P2 displacement; xi = 0 on Gamma_D (and on Gamma_C with -clamp_outer) removed from
+   the global space, so every global vector and matrix lives on the free dofs. */
+PetscErrorCode RollerDiscretizationSetUp(Roller ctx)
+{
+  PetscFE fe;
+
+  PetscFunctionBeginUser;
+  /* quadrature of order 2k integrates the mass matrix exactly on affine triangles */
+  PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, 2, 2, PETSC_TRUE, ctx->degree, 2 * ctx->degree, &fe));
+  PetscCall(PetscObjectSetName((PetscObject)fe, "displacement"));
+  PetscCall(DMSetField(ctx->dm, 0, NULL, (PetscObject)fe));
+  PetscCall(PetscFEDestroy(&fe));
+  PetscCall(DMCreateDS(ctx->dm));
+  PetscCall(AddDirichlet(ctx, "inner"));
+  if (ctx->clamp_outer) PetscCall(AddDirichlet(ctx, "outer"));
+  PetscCall(RollerSetConstants(ctx, 0.0, 0.0, 0.0));
+  PetscFunctionReturn(0);
+}
+
+/* The DS constants (kernels.h): material, the time t of a load and theta there, the Jacobian weights. */
+PetscErrorCode RollerSetConstants(Roller ctx, PetscReal t, PetscReal mass_weight, PetscReal stiffness_weight)
+{
+  PetscDS     ds;
+  PetscScalar constants[ROLLER_NUM_CONSTANTS];
+  PetscReal   td, tdd;
+
+  PetscFunctionBeginUser;
+  RollerTheta(ctx, t, NULL, &td, &tdd);
+  constants[ROLLER_C_LAMBDA]           = ctx->lambda;
+  constants[ROLLER_C_MU]               = ctx->mu;
+  constants[ROLLER_C_RHO]              = ctx->density;
+  constants[ROLLER_C_TIME]             = t;
+  constants[ROLLER_C_THETA_DOT]        = td;
+  constants[ROLLER_C_THETA_DDOT]       = tdd;
+  constants[ROLLER_C_MMS]              = ctx->mms;
+  constants[ROLLER_C_R_INNER]          = ctx->r_inner;
+  constants[ROLLER_C_R_OUTER]          = ctx->r_outer;
+  constants[ROLLER_C_MASS_WEIGHT]      = mass_weight;
+  constants[ROLLER_C_STIFFNESS_WEIGHT] = stiffness_weight;
+  constants[ROLLER_C_MMS_AMPLITUDE]    = ctx->ic_amplitude;
+  PetscCall(DMGetDS(ctx->dm, &ds));
+  PetscCall(PetscDSSetConstants(ds, ROLLER_NUM_CONSTANTS, constants));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode AssembleMatrix(Roller ctx, PetscBool mass, Mat *J)
+{
+  PetscDS ds;
+  Vec     loc;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetDS(ctx->dm, &ds));
+  PetscCall(PetscDSSetJacobian(ds, 0, 0, g0_mass, NULL, NULL, g3_elastic));
+  PetscCall(RollerSetConstants(ctx, 0.0, mass ? 1.0 : 0.0, mass ? 0.0 : 1.0));
+  PetscCall(DMCreateMatrix(ctx->dm, J));
+  PetscCall(DMGetLocalVector(ctx->dm, &loc));
+  PetscCall(VecZeroEntries(loc));
+  PetscCall(DMPlexSNESComputeJacobianFEM(ctx->dm, loc, *J, *J, NULL));
+  PetscCall(DMRestoreLocalVector(ctx->dm, &loc));
+  PetscCall(PetscObjectSetName((PetscObject)*J, mass ? "M" : "K"));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode AssembleLoad(Roller ctx, void (*f0)(ROLLER_KERNEL_ARGS, const PetscReal[], PetscInt, const PetscScalar[], PetscScalar[]), Vec *L)
+{
+  PetscDS ds;
+  Vec     loc, locF;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetDS(ctx->dm, &ds));
+  PetscCall(PetscDSSetResidual(ds, 0, f0, NULL));
+  PetscCall(DMCreateGlobalVector(ctx->dm, L));
+  PetscCall(DMGetLocalVector(ctx->dm, &loc));
+  PetscCall(DMGetLocalVector(ctx->dm, &locF));
+  PetscCall(VecZeroEntries(loc));
+  PetscCall(VecZeroEntries(locF));
+  PetscCall(DMPlexSNESComputeResidualFEM(ctx->dm, loc, locF, NULL));
+  PetscCall(DMLocalToGlobal(ctx->dm, locF, ADD_VALUES, *L));
+  PetscCall(DMRestoreLocalVector(ctx->dm, &loc));
+  PetscCall(DMRestoreLocalVector(ctx->dm, &locF));
+  PetscFunctionReturn(0);
+}
+
+/* The step solver: a direct Cholesky factorization of A, computed once and reused by every step
+   (PETSc's own with nested dissection in serial, MUMPS in parallel); -ksp_type cg -pc_type gamg (the
+   rigid-body near-null space is attached) or hypre for large meshes. */
+static PetscErrorCode StepSolverSetUp(Roller ctx)
+{
+  PC          pc;
+  MatNullSpace nsp;
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
+  PetscCall(DMPlexCreateRigidBody(ctx->dm, 0, &nsp));
+  PetscCall(MatSetNearNullSpace(ctx->A, nsp));
+  PetscCall(MatNullSpaceDestroy(&nsp));
+  PetscCall(KSPCreate(ctx->comm, &ctx->ksp));
+  PetscCall(KSPSetOperators(ctx->ksp, ctx->A, ctx->A));
+  PetscCall(KSPSetType(ctx->ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ctx->ksp, &pc));
+  PetscCall(PCSetType(pc, PCCHOLESKY));
+  if (size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  else PetscCall(PCFactorSetMatOrderingType(pc, MATORDERINGND));
+  PetscCall(KSPSetTolerances(ctx->ksp, 1e-12, 1e-50, PETSC_DEFAULT, PETSC_DEFAULT));
+  PetscCall(KSPSetFromOptions(ctx->ksp));
+  PetscCall(KSPSetUp(ctx->ksp));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerOperatorsSetUp(Roller ctx)
+{
+  PetscErrorCode (*position[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {Position};
+  const PetscReal shift = ctx->density / (ctx->dt * ctx->dt) + ctx->damping / (2.0 * ctx->dt);
+
+  PetscFunctionBeginUser;
+  PetscCall(AssembleMatrix(ctx, PETSC_TRUE, &ctx->M));
+  PetscCall(AssembleMatrix(ctx, PETSC_FALSE, &ctx->K));
+  PetscCall(MatDuplicate(ctx->K, MAT_COPY_VALUES, &ctx->A));
+  PetscCall(MatScale(ctx->A, 0.5));
+  PetscCall(MatAXPY(ctx->A, shift, ctx->M, SAME_NONZERO_PATTERN));
+  PetscCall(MatSetOption(ctx->A, MAT_SPD, PETSC_TRUE));
+  PetscCall(MatSetOption(ctx->A, MAT_SPD_ETERNAL, PETSC_TRUE));
+  PetscCall(PetscObjectSetName((PetscObject)ctx->A, "A"));
+  PetscCall(AssembleLoad(ctx, f0_euler, &ctx->L_euler));
+  PetscCall(AssembleLoad(ctx, f0_centrifugal, &ctx->L_centrifugal));
+  PetscCall(DMCreateGlobalVector(ctx->dm, &ctx->coordinates));
+  PetscCall(DMProjectFunction(ctx->dm, 0.0, position, NULL, INSERT_VALUES, ctx->coordinates));
+  PetscCall(StepSolverSetUp(ctx));
+  PetscFunctionReturn(0);
+}
+
+/* w_R . xi = int_{Gamma_C} xi . x/|x| ds and w_alpha . xi = int_{Gamma_C} xi . x_perp/|x| ds, exact for the
+   FE field on the discrete (polygonal) Gamma_C: 5-point Gauss on every outer edge, basis functions of the
+   edge's trace (P1: two vertices; P2: two vertices and the midpoint). |Gamma_C| comes from RollerMeshMeasure. */
+PetscErrorCode RollerComputeBoundaryFunctionals(Roller ctx)
+{
+  static const PetscReal qx[5] = {0.046910077030668, 0.230765344947158, 0.5, 0.769234655052842, 0.953089922969332};
+  static const PetscReal qw[5] = {0.118463442528095, 0.239314335249683, 0.284444444444444, 0.239314335249683, 0.118463442528095};
+  DMLabel            label;
+  IS                 is;
+  PetscSection       section, csection;
+  Vec                wR, wA, clocal;
+  const PetscScalar *carr;
+  PetscScalar       *r, *a;
+  const PetscInt    *points;
+  PetscInt           n, eStart, eEnd, pStart, pEnd, nleaves;
+  const PetscInt    *leaves;
+  PetscBool         *ghost;
+  PetscSF            sf;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLabel(ctx->dm, "outer", &label));
+  PetscCall(DMGetLocalSection(ctx->dm, &section));
+  PetscCall(DMGetCoordinatesLocal(ctx->dm, &clocal));
+  PetscCall(DMGetCoordinateSection(ctx->dm, &csection));
+  PetscCall(DMPlexGetHeightStratum(ctx->dm, 1, &eStart, &eEnd));
+  PetscCall(DMGetPointSF(ctx->dm, &sf));
+  PetscCall(PetscSFGetGraph(sf, NULL, &nleaves, &leaves, NULL));
+  PetscCall(DMPlexGetChart(ctx->dm, &pStart, &pEnd));
+  PetscCall(PetscCalloc1(pEnd - pStart, &ghost));
+  for (PetscInt l = 0; l < PetscMax(nleaves, 0); ++l) ghost[(leaves ? leaves[l] : l) - pStart] = PETSC_TRUE;
+  PetscCall(DMGetLocalVector(ctx->dm, &wR));
+  PetscCall(DMGetLocalVector(ctx->dm, &wA));
+  PetscCall(VecZeroEntries(wR));
+  PetscCall(VecZeroEntries(wA));
+  PetscCall(VecGetArray(wR, &r));
+  PetscCall(VecGetArray(wA, &a));
+  PetscCall(VecGetArrayRead(clocal, &carr));
+  PetscCall(DMLabelGetStratumIS(label, 1, &is));
+  n = 0;
+  if (is) PetscCall(ISGetLocalSize(is, &n));
+  if (is) PetscCall(ISGetIndices(is, &points));
+  for (PetscInt i = 0; i < n; ++i) {
+    const PetscInt e = points[i];
+    const PetscInt *cone;
+    PetscInt        off[3], ndof, coff0, coff1;
+    PetscReal       x0[2], x1[2], len;
+
+    if (e < eStart || e >= eEnd) continue;
+    if (ghost[e - pStart]) continue; /* its owner counts it */
+    PetscCall(DMPlexGetCone(ctx->dm, e, &cone));
+    PetscCall(PetscSectionGetOffset(csection, cone[0], &coff0));
+    PetscCall(PetscSectionGetOffset(csection, cone[1], &coff1));
+    for (PetscInt d = 0; d < 2; ++d) {
+      x0[d] = PetscRealPart(carr[coff0 + d]);
+      x1[d] = PetscRealPart(carr[coff1 + d]);
+    }
+    len = PetscSqrtReal(PetscSqr(x1[0] - x0[0]) + PetscSqr(x1[1] - x0[1]));
+    PetscCall(PetscSectionGetOffset(section, cone[0], &off[0]));
+    PetscCall(PetscSectionGetOffset(section, cone[1], &off[1]));
+    PetscCall(PetscSectionGetOffset(section, e, &off[2]));
+    PetscCall(PetscSectionGetDof(section, e, &ndof));
+    for (PetscInt q = 0; q < 5; ++q) {
+      const PetscReal s = qx[q], x[2] = {x0[0] + s * (x1[0] - x0[0]), x0[1] + s * (x1[1] - x0[1])};
+      const PetscReal rad = PetscSqrtReal(x[0] * x[0] + x[1] * x[1]);
+      const PetscReal er[2] = {x[0] / rad, x[1] / rad}, ep[2] = {-x[1] / rad, x[0] / rad};
+      PetscReal       phi[3];
+      PetscInt        nb = 2;
+
+      if (ndof == 0) {
+        phi[0] = 1.0 - s;
+        phi[1] = s;
+      } else {
+        phi[0] = (1.0 - s) * (1.0 - 2.0 * s);
+        phi[1] = s * (2.0 * s - 1.0);
+        phi[2] = 4.0 * s * (1.0 - s);
+        nb     = 3;
+      }
+      for (PetscInt b = 0; b < nb; ++b)
+        for (PetscInt c = 0; c < 2; ++c) {
+          r[off[b] + c] += qw[q] * len * phi[b] * er[c];
+          a[off[b] + c] += qw[q] * len * phi[b] * ep[c];
+        }
+    }
+  }
+  if (is) PetscCall(ISRestoreIndices(is, &points));
+  PetscCall(ISDestroy(&is));
+  PetscCall(PetscFree(ghost));
+  PetscCall(VecRestoreArrayRead(clocal, &carr));
+  PetscCall(VecRestoreArray(wR, &r));
+  PetscCall(VecRestoreArray(wA, &a));
+  PetscCall(DMCreateGlobalVector(ctx->dm, &ctx->w_R));
+  PetscCall(DMCreateGlobalVector(ctx->dm, &ctx->w_alpha));
+  PetscCall(DMLocalToGlobal(ctx->dm, wR, ADD_VALUES, ctx->w_R));
+  PetscCall(DMLocalToGlobal(ctx->dm, wA, ADD_VALUES, ctx->w_alpha));
+  PetscCall(DMRestoreLocalVector(ctx->dm, &wR));
+  PetscCall(DMRestoreLocalVector(ctx->dm, &wA));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,70 @@
+/* The TS-like driver: advances the three-level DMF scheme from t = 0 to -ts_max_time (or
+   -ts_max_steps), runs the diagnostics and monitors of every step and prints a progress line. */
+#include <roller_impl.h>
+
+typedef struct {
+  PetscBool      monitor, quiet;
+  PetscLogDouble start, last;
+} Progress;
+
+static PetscErrorCode Monitor(Roller ctx, Progress *p, PetscInt nsteps)
+{
+  const RollerStepInfo *info = &ctx->info;
+  PetscLogDouble        now;
+
+  PetscFunctionBeginUser;
+  if (p->monitor) {
+    PetscCall(PetscPrintf(ctx->comm, "%5" PetscInt_FMT " t %-10.6g R %+.6e alpha %+.6e energy %.10e", ctx->step, (double)ctx->time, (double)info->R, (double)info->alpha, (double)info->energy));
+    if (ctx->contact) PetscCall(PetscPrintf(ctx->comm, " contact %" PetscInt_FMT " force %.6e gap %+.3e its %" PetscInt_FMT " kkt %.2e", info->contact_nodes, (double)info->contact_force, (double)info->gap_min, info->qp_iterations, (double)info->kkt_residual));
+    PetscCall(PetscPrintf(ctx->comm, "\n"));
+  }
+  if (p->quiet || ctx->step == 0) PetscFunctionReturn(0);
+  PetscCall(PetscTime(&now));
+  if (now - p->last >= 5.0 || ctx->step == nsteps) {
+    const PetscLogDouble eta = (now - p->start) * (nsteps - ctx->step) / ctx->step;
+    PetscCall(PetscPrintf(ctx->comm, "roller: step %" PetscInt_FMT "/%" PetscInt_FMT " t = %g, %.1f s elapsed, ETA %.1f s\n", ctx->step, nsteps, (double)ctx->time, now - p->start, eta));
+    p->last = now;
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Number of steps: floor(max_time/dt) (to a rounding tolerance), capped by -ts_max_steps. */
+static PetscInt StepCount(Roller ctx)
+{
+  PetscInt n = (PetscInt)PetscFloorReal(ctx->max_time / ctx->dt + 1e-9);
+
+  if (ctx->max_steps >= 0) n = PetscMin(n, ctx->max_steps);
+  return n;
+}
+
+PetscErrorCode RollerSolve(Roller ctx)
+{
+  Progress p      = {PETSC_FALSE, ctx->quiet, 0, 0};
+  PetscInt nsteps = StepCount(ctx);
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(ctx->comm, NULL, "Roller: monitors", NULL);
+  PetscCall(PetscOptionsBool("-ts_monitor", "Print R, alpha, energy (and contact) every step", NULL, p.monitor, &p.monitor, NULL));
+  PetscOptionsEnd();
+  PetscCall(PetscTime(&p.start));
+  p.last = p.start;
+  PetscCall(RollerComputeStepInfo(ctx));
+  PetscCall(Monitor(ctx, &p, nsteps));
+  PetscCall(RollerOutputStep(ctx, ctx->output));
+  while (ctx->step < nsteps) {
+    PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_STEP]));
+    PetscCall(RollerStep(ctx));
+    PetscCall(PetscLogStagePop());
+    PetscCall(RollerComputeStepInfo(ctx));
+    PetscCheck(!PetscIsInfOrNanReal(ctx->info.energy), ctx->comm, PETSC_ERR_FP, "The solution is not finite at step %" PetscInt_FMT ", t = %g", ctx->step, (double)ctx->time);
+    PetscCall(Monitor(ctx, &p, nsteps));
+    PetscCall(RollerOutputStep(ctx, ctx->output));
+  }
+  if (ctx->mms != ROLLER_MMS_NONE) {
+    PetscReal l2, h1;
+
+    PetscCall(RollerComputeErrors(ctx, ctx->time, &l2, &h1));
+    PetscCall(PetscPrintf(ctx->comm, "mms: t %.17g L2 %.17g H1 %.17g\n", (double)ctx->time, (double)l2, (double)h1));
+  }
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,41 @@
+/* The prescribed motions: the driving rotation theta(t) and the obstacle height g(t) (SPEC sections 1, 5),
+   and the pointwise R(-pi/2) that the Euler and Coriolis terms of f apply. */
+#include <roller_impl.h>
+
+/* theta(t) = omega t + a cos(b t) and its first two derivatives. */
+void RollerTheta(Roller ctx, PetscReal t, PetscReal *theta, PetscReal *theta_dot, PetscReal *theta_ddot)
+{
+  const PetscReal a = ctx->theta_a, b = ctx->theta_b;
+
+  if (theta) *theta = ctx->omega * t + a * PetscCosReal(b * t);
+  if (theta_dot) *theta_dot = ctx->omega - a * b * PetscSinReal(b * t);
+  if (theta_ddot) *theta_ddot = -a * b * b * PetscCosReal(b * t);
+}
+
+/* g(t) = min(speed t, depth) - r_outer (SPEC section 6). */
+PetscReal RollerObstacleHeight(Roller ctx, PetscReal t)
+{
+  return PetscMin(ctx->obstacle_speed * t, ctx->obstacle_depth) - ctx->r_outer;
+}
+
+/* y = R(-pi/2) x at every node: (a, b) -> (b, -a). Displacement dofs are stored in (x, y) pairs, and a
+   Dirichlet node drops both, so pairs stay aligned in the global vector. */
+PetscErrorCode RollerApplyRotate90(Vec x, Vec y)
+{
+  const PetscScalar *xa;
+  PetscScalar       *ya;
+  PetscInt           n;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(x, &n));
+  PetscCall(VecGetArrayRead(x, &xa));
+  PetscCall(VecGetArrayWrite(y, &ya));
+  for (PetscInt i = 0; i < n; i += 2) {
+    const PetscScalar a = xa[i], b = xa[i + 1];
+    ya[i]     = b;
+    ya[i + 1] = -a;
+  }
+  PetscCall(VecRestoreArrayRead(x, &xa));
+  PetscCall(VecRestoreArrayWrite(y, &ya));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,20 @@
+static const char help[] = "Roller: a rubber roller (elastic annulus) driven in rotation and pressed by a moving flat\n"
+                           "obstacle, in the co-rotating frame, advanced by the energy-conserving discrete Morse flow.\n"
+                           "Scenes are YAML options files: roller -options_file jobs/rolling.yaml\n"
+                           "Model and options: docs/model.md, docs/options.md.\n\n";
+
+#include <roller.h>
+
+int main(int argc, char **argv)
+{
+  Roller roller;
+
+  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  PetscCall(RollerCreate(PETSC_COMM_WORLD, &roller));
+  PetscCall(RollerSetFromOptions(roller));
+  PetscCall(RollerSetUp(roller));
+  PetscCall(RollerSolve(roller));
+  PetscCall(RollerDestroy(&roller));
+  PetscCall(PetscFinalize());
+  return 0;
+}

@@ -1,0 +1,112 @@
+/* The command-line contract of SPEC section 6: every option read in one place, validated, listed by -help. */
+#include <roller_impl.h>
+
+const char *const RollerInitialConditions[] = {"rest", "bump", "mms", "RollerInitialCondition", "ROLLER_IC_", NULL};
+const char *const RollerMMSTypes[]          = {"none", "linear", "sine", "RollerMMSType", "ROLLER_MMS_", NULL};
+const char *const RollerCoriolisVelocities[] = {"backward", "extrapolated", "RollerCoriolisVelocity", "ROLLER_CORIOLIS_", NULL};
+
+/* Plane-strain Lame constants (SPEC section 1). */
+PetscErrorCode RollerLameFromYoung(PetscReal young, PetscReal poisson, PetscReal *lambda, PetscReal *mu)
+{
+  PetscFunctionBeginUser;
+  *lambda = young * poisson / ((1.0 + poisson) * (1.0 - 2.0 * poisson));
+  *mu     = young / (2.0 * (1.0 + poisson));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerCreate(MPI_Comm comm, Roller *roller)
+{
+  Roller ctx;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(&ctx));
+  ctx->comm           = comm;
+  ctx->r_inner        = 0.25;
+  ctx->r_outer        = 0.5;
+  ctx->mesh_h         = 0.0125;
+  ctx->degree         = 1;
+  ctx->young          = 0.1;
+  ctx->poisson        = 0.49;
+  ctx->density        = 1.0;
+  ctx->omega          = PETSC_PI / 10.0;
+  ctx->obstacle_speed = 0.005;
+  ctx->obstacle_depth = 0.025;
+  ctx->dt             = 0.0125;
+  ctx->max_time       = 20.0;
+  ctx->max_steps      = -1;
+  ctx->ic             = ROLLER_IC_REST;
+  ctx->ic_amplitude   = 1e-3;
+  ctx->mms            = ROLLER_MMS_NONE;
+  PetscCall(PetscLogStageRegister("Roller setup", &ctx->stage[ROLLER_STAGE_SETUP]));
+  PetscCall(PetscLogStageRegister("Roller step", &ctx->stage[ROLLER_STAGE_STEP]));
+  PetscCall(PetscLogStageRegister("Roller contact", &ctx->stage[ROLLER_STAGE_CONTACT]));
+  PetscCall(PetscLogStageRegister("Roller diagnostics", &ctx->stage[ROLLER_STAGE_DIAGNOSTICS]));
+  PetscCall(PetscLogStageRegister("Roller output", &ctx->stage[ROLLER_STAGE_OUTPUT]));
+  *roller = ctx;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerSetFromOptions(Roller ctx)
+{
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(ctx->comm, NULL, "Roller: geometry and mesh", NULL);
+  PetscCall(PetscOptionsReal("-mesh_h", "Edge length of the gmsh annulus mesh", NULL, ctx->mesh_h, &ctx->mesh_h, NULL));
+  PetscCall(PetscOptionsString("-dm_plex_filename", "gmsh mesh file (physical groups inner, outer, body) instead of -mesh_h", NULL, ctx->mesh_file, ctx->mesh_file, sizeof(ctx->mesh_file), NULL));
+  PetscCall(PetscOptionsReal("-r_inner", "Inner radius r_D (Gamma_D, driven)", NULL, ctx->r_inner, &ctx->r_inner, NULL));
+  PetscCall(PetscOptionsReal("-r_outer", "Outer radius r_C (Gamma_C, contact)", NULL, ctx->r_outer, &ctx->r_outer, NULL));
+  PetscCall(PetscOptionsBool("-partition_view", "Print the partition sizes and edge cut", NULL, ctx->partition_view, &ctx->partition_view, NULL));
+  PetscOptionsEnd();
+
+  PetscOptionsBegin(ctx->comm, NULL, "Roller: discretization and material", NULL);
+  PetscCall(PetscOptionsInt("-degree", "Lagrange degree of the displacement (1 = the paper, 2)", NULL, ctx->degree, &ctx->degree, NULL));
+  PetscCall(PetscOptionsEnum("-coriolis_velocity", "Velocity in the explicit Coriolis term: backward (the paper, 1st order) or extrapolated (2nd order)", "RollerCoriolisVelocity", RollerCoriolisVelocities, (PetscEnum)ctx->coriolis, (PetscEnum *)&ctx->coriolis, NULL));
+  PetscCall(PetscOptionsBool("-clamp_outer", "Also clamp Gamma_C (xi = 0 on the whole boundary, Theorem 1)", NULL, ctx->clamp_outer, &ctx->clamp_outer, NULL));
+  PetscCall(PetscOptionsReal("-young", "Young's modulus E", NULL, ctx->young, &ctx->young, NULL));
+  PetscCall(PetscOptionsReal("-poisson", "Poisson's ratio nu", NULL, ctx->poisson, &ctx->poisson, NULL));
+  PetscCall(PetscOptionsReal("-density", "Density rho", NULL, ctx->density, &ctx->density, NULL));
+  PetscOptionsEnd();
+
+  PetscOptionsBegin(ctx->comm, NULL, "Roller: rotation theta(t) = omega t + a cos(b t), obstacle g(t) = min(speed t, depth) - r_outer", NULL);
+  PetscCall(PetscOptionsReal("-omega", "Angular velocity omega", NULL, ctx->omega, &ctx->omega, NULL));
+  PetscCall(PetscOptionsReal("-theta_a", "Amplitude a of the rotation perturbation", NULL, ctx->theta_a, &ctx->theta_a, NULL));
+  PetscCall(PetscOptionsReal("-theta_b", "Angular frequency b of the rotation perturbation", NULL, ctx->theta_b, &ctx->theta_b, NULL));
+  PetscCall(PetscOptionsBool("-obstacle", "Enable the rigid flat obstacle", NULL, ctx->obstacle, &ctx->obstacle, NULL));
+  PetscCall(PetscOptionsReal("-obstacle_speed", "Obstacle speed v", NULL, ctx->obstacle_speed, &ctx->obstacle_speed, NULL));
+  PetscCall(PetscOptionsReal("-obstacle_depth", "Final indentation depth", NULL, ctx->obstacle_depth, &ctx->obstacle_depth, NULL));
+  PetscCall(PetscOptionsReal("-damping", "Damping eta of the DMF functional", NULL, ctx->damping, &ctx->damping, NULL));
+  PetscOptionsEnd();
+
+  PetscOptionsBegin(ctx->comm, NULL, "Roller: time stepping", NULL);
+  PetscCall(PetscOptionsReal("-ts_dt", "Time step dt", NULL, ctx->dt, &ctx->dt, NULL));
+  PetscCall(PetscOptionsReal("-ts_max_time", "End time", NULL, ctx->max_time, &ctx->max_time, NULL));
+  PetscCall(PetscOptionsInt("-ts_max_steps", "Cap on the number of steps (-1: none)", NULL, ctx->max_steps, &ctx->max_steps, NULL));
+  PetscCall(PetscOptionsBool("-quiet", "Silence the progress line", NULL, ctx->quiet, &ctx->quiet, NULL));
+  PetscCall(PetscOptionsEnum("-initial_condition", "Initial state xi0, eta0", "RollerInitialCondition", RollerInitialConditions, (PetscEnum)ctx->ic, (PetscEnum *)&ctx->ic, NULL));
+  PetscCall(PetscOptionsReal("-ic_amplitude", "Amplitude of the bump initial displacement", NULL, ctx->ic_amplitude, &ctx->ic_amplitude, NULL));
+  PetscCall(PetscOptionsEnum("-mms", "Manufactured solution for verification (adds its body force)", "RollerMMSType", RollerMMSTypes, (PetscEnum)ctx->mms, (PetscEnum *)&ctx->mms, NULL));
+  PetscOptionsEnd();
+
+  PetscCheck(ctx->mesh_h > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_h %g must be > 0", (double)ctx->mesh_h);
+  PetscCheck(ctx->r_inner > 0 && ctx->r_inner < ctx->r_outer, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-r_inner %g and -r_outer %g must satisfy 0 < r_inner < r_outer", (double)ctx->r_inner, (double)ctx->r_outer);
+  PetscCheck(ctx->mesh_file[0] || ctx->mesh_h < ctx->r_outer - ctx->r_inner, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_h %g must be smaller than the annulus width r_outer - r_inner = %g", (double)ctx->mesh_h, (double)(ctx->r_outer - ctx->r_inner));
+  PetscCheck(ctx->degree == 1 || ctx->degree == 2, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-degree %" PetscInt_FMT " must be 1 or 2", ctx->degree);
+  PetscCheck(ctx->young > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-young %g must be > 0", (double)ctx->young);
+  PetscCheck(ctx->poisson > -1 && ctx->poisson < 0.5, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-poisson %g must lie in (-1, 0.5)", (double)ctx->poisson);
+  PetscCheck(ctx->density > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-density %g must be > 0", (double)ctx->density);
+  PetscCheck(ctx->dt > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_dt %g must be > 0", (double)ctx->dt);
+  PetscCheck(ctx->max_time >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_max_time %g must be >= 0", (double)ctx->max_time);
+  PetscCheck(ctx->max_steps >= -1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_max_steps %" PetscInt_FMT " must be >= 0 (or -1 for no cap)", ctx->max_steps);
+  PetscCheck(ctx->damping >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-damping %g must be >= 0", (double)ctx->damping);
+  PetscCheck(ctx->obstacle_speed > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-obstacle_speed %g must be > 0", (double)ctx->obstacle_speed);
+  PetscCheck(ctx->obstacle_depth >= 0 && ctx->obstacle_depth < ctx->r_outer - ctx->r_inner, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-obstacle_depth %g must lie in [0, r_outer - r_inner = %g)", (double)ctx->obstacle_depth, (double)(ctx->r_outer - ctx->r_inner));
+  PetscCheck(ctx->theta_b >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-theta_b %g must be >= 0", (double)ctx->theta_b);
+  PetscCheck(ctx->ic_amplitude >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ic_amplitude %g must be >= 0", (double)ctx->ic_amplitude);
+  PetscCheck(ctx->ic != ROLLER_IC_BUMP || ctx->clamp_outer, ctx->comm, PETSC_ERR_ARG_INCOMP, "-initial_condition bump needs -clamp_outer (the bump vanishes on both circles)");
+  PetscCheck(ctx->mms == ROLLER_MMS_NONE || (ctx->clamp_outer && !ctx->obstacle), ctx->comm, PETSC_ERR_ARG_INCOMP, "-mms %s needs -clamp_outer and no -obstacle", RollerMMSTypes[ctx->mms]);
+  PetscCheck(!(ctx->obstacle && ctx->clamp_outer), ctx->comm, PETSC_ERR_ARG_INCOMP, "-obstacle cannot be combined with -clamp_outer (Gamma_C would be fixed)");
+  if (ctx->mms != ROLLER_MMS_NONE) ctx->ic = ROLLER_IC_MMS;
+  PetscCheck(ctx->ic != ROLLER_IC_MMS || ctx->mms != ROLLER_MMS_NONE, ctx->comm, PETSC_ERR_ARG_INCOMP, "-initial_condition mms needs -mms linear or sine");
+  PetscCall(RollerLameFromYoung(ctx->young, ctx->poisson, &ctx->lambda, &ctx->mu));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,21 @@
+// Bad mesh for tests/mesh: a correctly named annulus meshed with quadrilaterals (Roller needs triangles).
+//   gmsh -2 -format msh41 annulus_quads.geo -o annulus_quads.msh
+h = 0.1;
+Point(1) = {0, 0, 0, h};
+Point(2) = {0.25, 0, 0, h};
+Point(3) = {-0.25, 0, 0, h};
+Point(4) = {0.5, 0, 0, h};
+Point(5) = {-0.5, 0, 0, h};
+Circle(1) = {2, 1, 3};
+Circle(2) = {3, 1, 2};
+Circle(3) = {4, 1, 5};
+Circle(4) = {5, 1, 4};
+Curve Loop(1) = {3, 4};
+Curve Loop(2) = {1, 2};
+Plane Surface(1) = {1, 2};
+Recombine Surface{1};
+Mesh.RecombineAll = 1;
+Mesh.SubdivisionAlgorithm = 1;
+Physical Curve("inner", 1) = {1, 2};
+Physical Curve("outer", 2) = {3, 4};
+Physical Surface("body", 3) = {1};

@@ -1,0 +1,3 @@
+# The DMF elastodynamics without obstacle (issue: the rotating roller, verified).
+roller_test(dmf_energy dmf_energy.py LABELS quick)
+roller_test(dmf_mms dmf_mms.py LABELS quick TIMEOUT 900)

@@ -1,0 +1,55 @@
+"""Shared helpers for Roller's tests: run the executable, read its CSV, fit slopes, assert."""
+import csv
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+EXE = os.environ.get("ROLLER_EXE", "build/roller")
+MPIEXEC = os.environ.get("ROLLER_MPIEXEC", "mpiexec")
+SOURCE = os.environ.get("ROLLER_SOURCE_DIR", os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def run(args, nproc=1, check=True):
+    """Run roller with a list of options; return (returncode, stdout, stderr)."""
+    cmd = [EXE] + [str(a) for a in args]
+    if nproc > 1:
+        cmd = [MPIEXEC, "-n", str(nproc)] + cmd
+    proc = subprocess.run(cmd, capture_output=True, text=True)
+    if check and proc.returncode != 0:
+        sys.stderr.write(proc.stdout + proc.stderr)
+        raise SystemExit(f"FAIL: {' '.join(cmd)} exited {proc.returncode}")
+    return proc.returncode, proc.stdout, proc.stderr
+
+
+def read_csv(path):
+    """The monitor CSV as a dict of numpy arrays keyed by column name."""
+    with open(path) as f:
+        rows = list(csv.reader(f))
+    head, body = rows[0], rows[1:]
+    return {name: np.array([float(r[i]) for r in body]) for i, name in enumerate(head)}
+
+
+def slope(hs, errs):
+    """Least-squares slope of log(err) against log(h)."""
+    return float(np.polyfit(np.log(hs), np.log(errs), 1)[0])
+
+
+class Checker:
+    """Collects named assertions, prints each, and exits non-zero if any failed."""
+
+    def __init__(self, name):
+        self.name, self.passed, self.failed = name, 0, 0
+
+    def check(self, ok, what):
+        print(("PASS " if ok else "FAIL ") + what, flush=True)
+        if ok:
+            self.passed += 1
+        else:
+            self.failed += 1
+
+    def close(self):
+        print(f"{self.name}: {self.passed} passed, {self.failed} failed")
+        sys.exit(1 if self.failed or not self.passed else 0)
