@@ -78,6 +78,10 @@ struct _n_Roller {
   PetscInt  max_steps;
   PetscBool quiet;
 
+  /* Checkpoint and restart */
+  char     checkpoint[PETSC_MAX_PATH_LEN], restart[PETSC_MAX_PATH_LEN];
+  PetscInt checkpoint_every;
+
   /* Initial state and verification */
   RollerInitialCondition ic;
   PetscReal              ic_amplitude;
@@ -139,6 +143,12 @@ PETSC_INTERN PetscErrorCode RollerContactCreate(Roller, RollerContact *);
 PETSC_INTERN PetscErrorCode RollerContactSolve(Roller, RollerContact, PetscReal, Vec, Vec);
 PETSC_INTERN PetscErrorCode RollerContactInfo(Roller, RollerContact, Vec, PetscReal, RollerStepInfo *);
 PETSC_INTERN PetscErrorCode RollerContactDestroy(RollerContact *);
+
+/* checkpoint.c */
+PETSC_INTERN PetscErrorCode RollerCheckpointWrite(Roller, const char *);
+PETSC_INTERN PetscErrorCode RollerCheckpointRead(Roller, const char *);
+PETSC_INTERN PetscErrorCode RollerSignalsInstall(void);
+PETSC_INTERN PetscErrorCode RollerSignalCaught(Roller, PetscInt *);
 
 /* diagnostics.c */
 PETSC_INTERN PetscErrorCode RollerComputeStepInfo(Roller);

@@ -40,25 +40,38 @@ static PetscInt StepCount(Roller ctx)
 PetscErrorCode RollerSolve(Roller ctx)
 {
   Progress p      = {PETSC_FALSE, ctx->quiet, 0, 0};
-  PetscInt nsteps = StepCount(ctx);
+  PetscInt  nsteps = StepCount(ctx);
+  PetscBool help;
 
   PetscFunctionBeginUser;
+  /* -help lists every option (with the solvers', which setup has read): no need to run the scene */
+  PetscCall(PetscOptionsHasHelp(NULL, &help));
+  if (help) nsteps = 0;
   PetscOptionsBegin(ctx->comm, NULL, "Roller: monitors", NULL);
   PetscCall(PetscOptionsBool("-ts_monitor", "Print R, alpha, energy (and contact) every step", NULL, p.monitor, &p.monitor, NULL));
   PetscOptionsEnd();
+  PetscCall(RollerSignalsInstall());
   PetscCall(PetscTime(&p.start));
   p.last = p.start;
   PetscCall(RollerComputeStepInfo(ctx));
   PetscCall(Monitor(ctx, &p, nsteps));
-  PetscCall(RollerOutputStep(ctx, ctx->output));
+  if (!ctx->restart[0]) PetscCall(RollerOutputStep(ctx, ctx->output)); /* a restart continues after its row */
   while (ctx->step < nsteps) {
+    PetscInt sig;
+
     PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_STEP]));
     PetscCall(RollerStep(ctx));
     PetscCall(PetscLogStagePop());
     PetscCall(RollerComputeStepInfo(ctx));
-    PetscCheck(!PetscIsInfOrNanReal(ctx->info.energy), ctx->comm, PETSC_ERR_FP, "The solution is not finite at step %" PetscInt_FMT ", t = %g", ctx->step, (double)ctx->time);
     PetscCall(Monitor(ctx, &p, nsteps));
     PetscCall(RollerOutputStep(ctx, ctx->output));
+    if (ctx->checkpoint_every && ctx->step % ctx->checkpoint_every == 0) PetscCall(RollerCheckpointWrite(ctx, ctx->checkpoint));
+    PetscCall(RollerSignalCaught(ctx, &sig));
+    if (sig) {
+      PetscCall(RollerCheckpointWrite(ctx, ctx->checkpoint));
+      PetscCall(PetscPrintf(ctx->comm, "roller: caught signal %d after step %" PetscInt_FMT " (t = %g); the state is in %s. Continue with the same options and -restart %s\n", (int)sig, ctx->step, (double)ctx->time, ctx->checkpoint, ctx->checkpoint));
+      break;
+    }
   }
   if (ctx->mms != ROLLER_MMS_NONE) {
     PetscReal l2, h1;

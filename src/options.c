@@ -37,6 +37,7 @@ PetscErrorCode RollerCreate(MPI_Comm comm, Roller *roller)
   ctx->ic             = ROLLER_IC_REST;
   ctx->ic_amplitude   = 1e-3;
   ctx->mms            = ROLLER_MMS_NONE;
+  PetscCall(PetscStrncpy(ctx->checkpoint, "checkpoint.h5", sizeof(ctx->checkpoint)));
   PetscCall(PetscLogStageRegister("Roller setup", &ctx->stage[ROLLER_STAGE_SETUP]));
   PetscCall(PetscLogStageRegister("Roller step", &ctx->stage[ROLLER_STAGE_STEP]));
   PetscCall(PetscLogStageRegister("Roller contact", &ctx->stage[ROLLER_STAGE_CONTACT]));
@@ -87,6 +88,14 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsEnum("-mms", "Manufactured solution for verification (adds its body force)", "RollerMMSType", RollerMMSTypes, (PetscEnum)ctx->mms, (PetscEnum *)&ctx->mms, NULL));
   PetscOptionsEnd();
 
+  PetscOptionsBegin(ctx->comm, NULL, "Roller: checkpoint and restart", NULL);
+  PetscCall(PetscOptionsString("-checkpoint", "HDF5 file of the full state (written every N steps, on SIGTERM/SIGINT, and on divergence)", NULL, ctx->checkpoint, ctx->checkpoint, sizeof(ctx->checkpoint), NULL));
+  PetscCall(PetscOptionsInt("-checkpoint_every", "Write the checkpoint every N steps (0: only on a signal or divergence)", NULL, ctx->checkpoint_every, &ctx->checkpoint_every, NULL));
+  PetscCall(PetscOptionsString("-restart", "Continue from this checkpoint (same mesh, -degree, -ts_dt and ranks)", NULL, ctx->restart, ctx->restart, sizeof(ctx->restart), NULL));
+  PetscOptionsEnd();
+
+  PetscCheck(ctx->checkpoint_every >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-checkpoint_every %" PetscInt_FMT " must be >= 0", ctx->checkpoint_every);
+  PetscCheck(ctx->checkpoint[0], ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-checkpoint needs a file name");
   PetscCheck(ctx->mesh_h > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_h %g must be > 0", (double)ctx->mesh_h);
   PetscCheck(ctx->r_inner > 0 && ctx->r_inner < ctx->r_outer, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-r_inner %g and -r_outer %g must satisfy 0 < r_inner < r_outer", (double)ctx->r_inner, (double)ctx->r_outer);
   PetscCheck(ctx->mesh_file[0] || ctx->mesh_h < ctx->r_outer - ctx->r_inner, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_h %g must be smaller than the annulus width r_outer - r_inner = %g", (double)ctx->mesh_h, (double)(ctx->r_outer - ctx->r_inner));

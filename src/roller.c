@@ -11,6 +11,7 @@ PetscErrorCode RollerSetUp(Roller ctx)
   PetscCall(RollerOperatorsSetUp(ctx));
   PetscCall(RollerComputeBoundaryFunctionals(ctx));
   PetscCall(RollerInitialState(ctx));
+  if (ctx->restart[0]) PetscCall(RollerCheckpointRead(ctx, ctx->restart));
   if (ctx->obstacle) PetscCall(RollerContactCreate(ctx, &ctx->contact));
   PetscCall(RollerOutputCreate(ctx, &ctx->output));
   PetscCall(PetscLogStagePop());

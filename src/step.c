@@ -88,6 +88,16 @@ PetscErrorCode RollerStep(Roller ctx)
     PetscCall(KSPGetConvergedReason(ctx->ksp, &reason));
     PetscCheck(reason > 0, ctx->comm, PETSC_ERR_NOT_CONVERGED, "The step solve diverged at step %" PetscInt_FMT ", t = %g: %s", ctx->step + 1, (double)t, KSPConvergedReasons[reason]);
   }
+  /* a non-finite solution: keep the last good state and say where it happened */
+  {
+    PetscReal norm;
+
+    PetscCall(VecNorm(ctx->xi, NORM_INFINITY, &norm));
+    if (PetscIsInfOrNanReal(norm)) {
+      PetscCall(RollerCheckpointWrite(ctx, ctx->checkpoint));
+      SETERRQ(ctx->comm, PETSC_ERR_FP, "The solution is not finite at step %" PetscInt_FMT ", t = %g; the last good state (step %" PetscInt_FMT ") is in the checkpoint %s", ctx->step + 1, (double)t, ctx->step, ctx->checkpoint);
+    }
+  }
   /* rotate the history: xi3 <- xi2 <- xi1 <- xi, and K xi likewise */
   tmp      = ctx->xi3;
   ctx->xi3 = ctx->xi2;

@@ -1,3 +1,4 @@
 # The DMF elastodynamics without obstacle (issue: the rotating roller, verified).
 roller_test(dmf_energy dmf_energy.py LABELS quick)
 roller_test(dmf_mms dmf_mms.py LABELS quick TIMEOUT 900)
+roller_test(dmf_paper dmf_paper.py LABELS quick)

@@ -1,0 +1,128 @@
+/* Checkpoint and restart: the full state of the three-level scheme (xi^k, xi^{k-1}, xi^{k-2}, the step
+   k and its time; theta and the obstacle height are functions of time) in an HDF5 file, written to a
+   temporary name and renamed so that a kill during a write never leaves a corrupt latest checkpoint.
+   SIGTERM/SIGINT (what a batch scheduler sends before the kill) make the driver finish the step, write a
+   checkpoint and stop cleanly. */
+#include <roller_impl.h>
+#include <petscviewerhdf5.h>
+#include <signal.h>
+#include <stdio.h>
+
+static volatile sig_atomic_t roller_signal = 0;
+
+static void RollerSignalHandler(int sig)
+{
+  roller_signal = sig;
+}
+
+/* The scheme's history, in the order it is written. */
+static void History(Roller ctx, Vec v[3])
+{
+  v[0] = ctx->xi1;
+  v[1] = ctx->xi2;
+  v[2] = ctx->xi3;
+}
+
+static const char *const history_names[3] = {"xi_k", "xi_k1", "xi_k2"};
+
+/* Through a plain MPI vector of the same layout, HDF5 writes a flat dataset by name, not the DM's fields.
+   (VecLoad replaces a vector's array, so the load goes through a copy.) */
+static PetscErrorCode PlainView(Vec v, const char *name, PetscViewer viewer, PetscBool load)
+{
+  Vec      plain;
+  PetscInt n, N;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(v, &n));
+  PetscCall(VecGetSize(v, &N));
+  PetscCall(VecCreateMPI(PetscObjectComm((PetscObject)v), n, N, &plain));
+  PetscCall(PetscObjectSetName((PetscObject)plain, name));
+  if (load) {
+    PetscCall(VecLoad(plain, viewer));
+    PetscCall(VecCopy(plain, v));
+  } else {
+    PetscCall(VecCopy(v, plain));
+    PetscCall(VecView(plain, viewer));
+  }
+  PetscCall(VecDestroy(&plain));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerCheckpointWrite(Roller ctx, const char *path)
+{
+  char        tmp[PETSC_MAX_PATH_LEN];
+  PetscViewer viewer;
+  Vec         v[3];
+  PetscInt    N;
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
+  PetscCall(PetscViewerHDF5Open(ctx->comm, tmp, FILE_MODE_WRITE, &viewer));
+  History(ctx, v);
+  for (PetscInt i = 0; i < 3; ++i) PetscCall(PlainView(v[i], history_names[i], viewer, PETSC_FALSE));
+  PetscCall(VecGetSize(ctx->xi1, &N));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "step", PETSC_INT, &ctx->step));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "time", PETSC_REAL, &ctx->time));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "dt", PETSC_REAL, &ctx->dt));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "dofs", PETSC_INT, &N));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "degree", PETSC_INT, &ctx->degree));
+  PetscCall(PetscViewerDestroy(&viewer));
+  PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
+  if (rank == 0) PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-checkpoint %s: cannot rename %s to it", path, tmp);
+  PetscCallMPI(MPI_Barrier(ctx->comm));
+  PetscFunctionReturn(0);
+}
+
+/* Continue from a checkpoint: same mesh, degree, dt and number of ranks as the run that wrote it. */
+PetscErrorCode RollerCheckpointRead(Roller ctx, const char *path)
+{
+  PetscViewer viewer;
+  Vec         v[3];
+  PetscInt    N, dofs, degree;
+  PetscReal   dt;
+  PetscBool   exists;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscTestFile(path, 'r', &exists));
+  PetscCheck(exists, ctx->comm, PETSC_ERR_FILE_OPEN, "-restart %s: no such readable file", path);
+  PetscCall(PetscViewerHDF5Open(ctx->comm, path, FILE_MODE_READ, &viewer));
+  PetscCall(PetscViewerHDF5HasAttribute(viewer, "/", "step", &exists));
+  PetscCheck(exists, ctx->comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: not a Roller checkpoint (no step attribute)", path);
+  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "dofs", PETSC_INT, NULL, &dofs));
+  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "degree", PETSC_INT, NULL, &degree));
+  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "dt", PETSC_REAL, NULL, &dt));
+  PetscCall(VecGetSize(ctx->xi1, &N));
+  PetscCheck(dofs == N && degree == ctx->degree, ctx->comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written for %" PetscInt_FMT " dofs of P%" PetscInt_FMT ", this run has %" PetscInt_FMT " of P%" PetscInt_FMT " (use the same mesh and -degree)", path, dofs, degree, N, ctx->degree);
+  PetscCheck(dt == ctx->dt, ctx->comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written with -ts_dt %g, this run has %g", path, (double)dt, (double)ctx->dt);
+  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "step", PETSC_INT, NULL, &ctx->step));
+  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "time", PETSC_REAL, NULL, &ctx->time));
+  History(ctx, v);
+  for (PetscInt i = 0; i < 3; ++i) PetscCall(PlainView(v[i], history_names[i], viewer, PETSC_TRUE));
+  PetscCall(PetscViewerDestroy(&viewer));
+  PetscCall(MatMult(ctx->K, ctx->xi1, ctx->Kxi1));
+  PetscCall(MatMult(ctx->K, ctx->xi2, ctx->Kxi2));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerSignalsInstall(void)
+{
+  struct sigaction sa;
+
+  PetscFunctionBeginUser;
+  sa.sa_handler = RollerSignalHandler;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = 0;
+  PetscCheck(sigaction(SIGTERM, &sa, NULL) == 0 && sigaction(SIGINT, &sa, NULL) == 0, PETSC_COMM_SELF, PETSC_ERR_SYS, "Cannot install the SIGTERM/SIGINT handler");
+  PetscFunctionReturn(0);
+}
+
+/* The signal caught on any rank (0 if none), agreed on by all ranks. */
+PetscErrorCode RollerSignalCaught(Roller ctx, PetscInt *sig)
+{
+  PetscInt local = (PetscInt)roller_signal;
+
+  PetscFunctionBeginUser;
+  PetscCall(MPIU_Allreduce(&local, sig, 1, MPIU_INT, MPI_MAX, ctx->comm));
+  PetscFunctionReturn(0);
+}
