@@ -28,9 +28,10 @@ typedef enum { ROLLER_MMS_NONE, ROLLER_MMS_LINEAR, ROLLER_MMS_SINE } RollerMMSTy
 PETSC_EXTERN const char *const RollerMMSTypes[];
 
 /* The velocity in the explicit Coriolis term of f^{k-1}: the paper's backward difference
-   (xi^{k-1} - xi^{k-2})/dt (first order in time when theta' != 0), or the second-order extrapolation
-   (3 xi^{k-1} - 4 xi^{k-2} + xi^{k-3})/(2 dt) (docs/model.md). */
-typedef enum { ROLLER_CORIOLIS_BACKWARD, ROLLER_CORIOLIS_EXTRAPOLATED } RollerCoriolisVelocity;
+   (xi^{k-1} - xi^{k-2})/dt (first order in time when theta' != 0), the second-order extrapolation
+   (3 xi^{k-1} - 4 xi^{k-2} + xi^{k-3})/(2 dt), or the implicit centred (xi^k - xi^{k-2})/(2 dt), which
+   does no work and is unconditionally stable but makes A non-symmetric (docs/model.md, docs/stability.md). */
+typedef enum { ROLLER_CORIOLIS_BACKWARD, ROLLER_CORIOLIS_EXTRAPOLATED, ROLLER_CORIOLIS_CENTERED } RollerCoriolisVelocity;
 PETSC_EXTERN const char *const RollerCoriolisVelocities[];
 
 typedef struct _n_RollerContact *RollerContact;
@@ -91,6 +92,7 @@ struct _n_Roller {
      free (non-Dirichlet) dofs; loads of the rigid-body parts of f: L_euler = M-load of R(-pi/2) x,
      L_centrifugal = M-load of x (exact integrals, SPEC section 2). */
   Mat M, K, A;
+  Mat G, A0; /* centred Coriolis only: the gyroscopic matrix and the symmetric part of A */
   Vec L_euler, L_centrifugal;
   Vec coordinates; /* nodal positions x_n of every free dof pair */
   KSP ksp;
@@ -123,7 +125,8 @@ PETSC_INTERN PetscErrorCode RollerMeshMeasure(Roller);
 
 /* discretization.c */
 PETSC_INTERN PetscErrorCode RollerDiscretizationSetUp(Roller);
-PETSC_INTERN PetscErrorCode RollerSetConstants(Roller, PetscReal, PetscReal, PetscReal);
+PETSC_INTERN PetscErrorCode RollerSetConstants(Roller, PetscReal, PetscReal, PetscReal, PetscReal);
+PETSC_INTERN PetscErrorCode RollerUpdateGyroscopic(Roller, PetscReal);
 PETSC_INTERN PetscErrorCode RollerOperatorsSetUp(Roller);
 PETSC_INTERN PetscErrorCode RollerComputeBoundaryFunctionals(Roller);
 
@@ -143,6 +146,9 @@ PETSC_INTERN PetscErrorCode RollerContactCreate(Roller, RollerContact *);
 PETSC_INTERN PetscErrorCode RollerContactSolve(Roller, RollerContact, PetscReal, Vec, Vec);
 PETSC_INTERN PetscErrorCode RollerContactInfo(Roller, RollerContact, Vec, PetscReal, RollerStepInfo *);
 PETSC_INTERN PetscErrorCode RollerContactDestroy(RollerContact *);
+
+/* stability.c */
+PETSC_INTERN PetscErrorCode RollerCheckRotation(Roller);
 
 /* checkpoint.c */
 PETSC_INTERN PetscErrorCode RollerCheckpointWrite(Roller, const char *);

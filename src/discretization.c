@@ -43,12 +43,12 @@ PetscErrorCode RollerDiscretizationSetUp(Roller ctx)
   PetscCall(DMCreateDS(ctx->dm));
   PetscCall(AddDirichlet(ctx, "inner"));
   if (ctx->clamp_outer) PetscCall(AddDirichlet(ctx, "outer"));
-  PetscCall(RollerSetConstants(ctx, 0.0, 0.0, 0.0));
+  PetscCall(RollerSetConstants(ctx, 0.0, 0.0, 0.0, 0.0));
   PetscFunctionReturn(0);
 }
 
 /* The DS constants (kernels.h): material, the time t of a load and theta there, the Jacobian weights. */
-PetscErrorCode RollerSetConstants(Roller ctx, PetscReal t, PetscReal mass_weight, PetscReal stiffness_weight)
+PetscErrorCode RollerSetConstants(Roller ctx, PetscReal t, PetscReal mass_weight, PetscReal stiffness_weight, PetscReal gyro_weight)
 {
   PetscDS     ds;
   PetscScalar constants[ROLLER_NUM_CONSTANTS];
@@ -67,13 +67,15 @@ PetscErrorCode RollerSetConstants(Roller ctx, PetscReal t, PetscReal mass_weight
   constants[ROLLER_C_R_OUTER]          = ctx->r_outer;
   constants[ROLLER_C_MASS_WEIGHT]      = mass_weight;
   constants[ROLLER_C_STIFFNESS_WEIGHT] = stiffness_weight;
+  constants[ROLLER_C_GYRO_WEIGHT]      = gyro_weight;
   constants[ROLLER_C_MMS_AMPLITUDE]    = ctx->ic_amplitude;
   PetscCall(DMGetDS(ctx->dm, &ds));
   PetscCall(PetscDSSetConstants(ds, ROLLER_NUM_CONSTANTS, constants));
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode AssembleMatrix(Roller ctx, PetscBool mass, Mat *J)
+/* weights (c_M, c_K, c_G) select M, K or G */
+static PetscErrorCode AssembleMatrix(Roller ctx, const char *name, PetscReal cm, PetscReal ck, PetscReal cg, Mat *J)
 {
   PetscDS ds;
   Vec     loc;
@@ -81,13 +83,13 @@ static PetscErrorCode AssembleMatrix(Roller ctx, PetscBool mass, Mat *J)
   PetscFunctionBeginUser;
   PetscCall(DMGetDS(ctx->dm, &ds));
   PetscCall(PetscDSSetJacobian(ds, 0, 0, g0_mass, NULL, NULL, g3_elastic));
-  PetscCall(RollerSetConstants(ctx, 0.0, mass ? 1.0 : 0.0, mass ? 0.0 : 1.0));
+  PetscCall(RollerSetConstants(ctx, 0.0, cm, ck, cg));
   PetscCall(DMCreateMatrix(ctx->dm, J));
   PetscCall(DMGetLocalVector(ctx->dm, &loc));
   PetscCall(VecZeroEntries(loc));
   PetscCall(DMPlexSNESComputeJacobianFEM(ctx->dm, loc, *J, *J, NULL));
   PetscCall(DMRestoreLocalVector(ctx->dm, &loc));
-  PetscCall(PetscObjectSetName((PetscObject)*J, mass ? "M" : "K"));
+  PetscCall(PetscObjectSetName((PetscObject)*J, name));
   PetscFunctionReturn(0);
 }
 
@@ -129,12 +131,27 @@ static PetscErrorCode StepSolverSetUp(Roller ctx)
   PetscCall(KSPSetOperators(ctx->ksp, ctx->A, ctx->A));
   PetscCall(KSPSetType(ctx->ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ctx->ksp, &pc));
-  PetscCall(PCSetType(pc, PCCHOLESKY));
+  PetscCall(PCSetType(pc, ctx->G ? PCLU : PCCHOLESKY));
   if (size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
   else PetscCall(PCFactorSetMatOrderingType(pc, MATORDERINGND));
   PetscCall(KSPSetTolerances(ctx->ksp, 1e-12, 1e-50, PETSC_DEFAULT, PETSC_DEFAULT));
   PetscCall(KSPSetFromOptions(ctx->ksp));
   PetscCall(KSPSetUp(ctx->ksp));
+  PetscFunctionReturn(0);
+}
+
+/* The implicit centred Coriolis term: A = A0 - rho theta'(t_{k-1})/dt G. With a constant theta' (no
+   perturbation) this happens once; with theta_a != 0 every step, and the factorization is redone. */
+PetscErrorCode RollerUpdateGyroscopic(Roller ctx, PetscReal t1)
+{
+  PetscReal td;
+
+  PetscFunctionBeginUser;
+  if (!ctx->G || (ctx->ksp && ctx->theta_a * ctx->theta_b == 0)) PetscFunctionReturn(0);
+  RollerTheta(ctx, t1, NULL, &td, NULL);
+  PetscCall(MatCopy(ctx->A0, ctx->A, SAME_NONZERO_PATTERN));
+  PetscCall(MatAXPY(ctx->A, -ctx->density * td / ctx->dt, ctx->G, SAME_NONZERO_PATTERN));
+  if (ctx->ksp) PetscCall(KSPSetOperators(ctx->ksp, ctx->A, ctx->A));
   PetscFunctionReturn(0);
 }
 
@@ -144,13 +161,20 @@ PetscErrorCode RollerOperatorsSetUp(Roller ctx)
   const PetscReal shift = ctx->density / (ctx->dt * ctx->dt) + ctx->damping / (2.0 * ctx->dt);
 
   PetscFunctionBeginUser;
-  PetscCall(AssembleMatrix(ctx, PETSC_TRUE, &ctx->M));
-  PetscCall(AssembleMatrix(ctx, PETSC_FALSE, &ctx->K));
+  PetscCall(AssembleMatrix(ctx, "M", 1.0, 0.0, 0.0, &ctx->M));
+  PetscCall(AssembleMatrix(ctx, "K", 0.0, 1.0, 0.0, &ctx->K));
   PetscCall(MatDuplicate(ctx->K, MAT_COPY_VALUES, &ctx->A));
   PetscCall(MatScale(ctx->A, 0.5));
   PetscCall(MatAXPY(ctx->A, shift, ctx->M, SAME_NONZERO_PATTERN));
-  PetscCall(MatSetOption(ctx->A, MAT_SPD, PETSC_TRUE));
-  PetscCall(MatSetOption(ctx->A, MAT_SPD_ETERNAL, PETSC_TRUE));
+  if (ctx->coriolis == ROLLER_CORIOLIS_CENTERED) {
+    /* A - rho theta'/dt G: no longer symmetric (G is skew), still positive definite */
+    PetscCall(AssembleMatrix(ctx, "G", 0.0, 0.0, 1.0, &ctx->G));
+    PetscCall(MatDuplicate(ctx->A, MAT_COPY_VALUES, &ctx->A0));
+    PetscCall(RollerUpdateGyroscopic(ctx, 0.0));
+  } else {
+    PetscCall(MatSetOption(ctx->A, MAT_SPD, PETSC_TRUE));
+    PetscCall(MatSetOption(ctx->A, MAT_SPD_ETERNAL, PETSC_TRUE));
+  }
   PetscCall(PetscObjectSetName((PetscObject)ctx->A, "A"));
   PetscCall(AssembleLoad(ctx, f0_euler, &ctx->L_euler));
   PetscCall(AssembleLoad(ctx, f0_centrifugal, &ctx->L_centrifugal));

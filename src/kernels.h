@@ -17,6 +17,7 @@ typedef enum {
   ROLLER_C_R_OUTER,
   ROLLER_C_MASS_WEIGHT,      /* the Jacobian kernels assemble c_M M + c_K K: a DS keeps every kernel */
   ROLLER_C_STIFFNESS_WEIGHT, /* once set, so M and K are assembled with weights (1, 0) and (0, 1) */
+  ROLLER_C_GYRO_WEIGHT,      /* and the gyroscopic (R(-pi/2) u, v), i.e. R(-pi/2) M, with c_G */
   ROLLER_C_MMS_AMPLITUDE,
   ROLLER_NUM_CONSTANTS
 } RollerConstant;
@@ -50,10 +51,15 @@ static inline void g3_elastic(ROLLER_KERNEL_ARGS, PetscReal u_tShift, const Pets
   }
 }
 
-/* M: the L2 inner product (no density; A carries rho). */
+/* M: the L2 inner product (no density; A carries rho); G: (R(-pi/2) u, v), skew, the Coriolis operator. */
 static inline void g0_mass(ROLLER_KERNEL_ARGS, PetscReal u_tShift, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar g0[])
 {
-  for (PetscInt c = 0; c < dim; ++c) g0[c * dim + c] = constants[ROLLER_C_MASS_WEIGHT];
+  const PetscScalar cm = constants[ROLLER_C_MASS_WEIGHT], cg = constants[ROLLER_C_GYRO_WEIGHT];
+
+  g0[0] = cm;
+  g0[3] = cm;
+  g0[1] = cg; /* R(-pi/2)(a, b) = (b, -a) */
+  g0[2] = -cg;
 }
 
 /* Load of the rigid-body part of the centrifugal force: (x, v). */

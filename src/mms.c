@@ -109,7 +109,7 @@ PetscErrorCode RollerAddMMSLoad(Roller ctx, PetscReal t, Vec b)
   Vec     loc, locF;
 
   PetscFunctionBeginUser;
-  PetscCall(RollerSetConstants(ctx, t, 0.0, 0.0));
+  PetscCall(RollerSetConstants(ctx, t, 0.0, 0.0, 0.0));
   PetscCall(DMGetDS(ctx->dm, &ds));
   PetscCall(PetscDSSetResidual(ds, 0, f0_mms, NULL));
   PetscCall(DMGetLocalVector(ctx->dm, &loc));
@@ -164,7 +164,7 @@ static PetscErrorCode IntegrateError(Roller ctx, void (*f0)(ROLLER_KERNEL_ARGS, 
 PetscErrorCode RollerComputeErrors(Roller ctx, PetscReal t, PetscReal *l2, PetscReal *h1)
 {
   PetscFunctionBeginUser;
-  PetscCall(RollerSetConstants(ctx, t, 0.0, 0.0));
+  PetscCall(RollerSetConstants(ctx, t, 0.0, 0.0, 0.0));
   PetscCall(IntegrateError(ctx, f0_l2_error, l2));
   PetscCall(IntegrateError(ctx, f0_h1_error, h1));
   PetscFunctionReturn(0);

@@ -3,7 +3,7 @@
 
 const char *const RollerInitialConditions[] = {"rest", "bump", "mms", "RollerInitialCondition", "ROLLER_IC_", NULL};
 const char *const RollerMMSTypes[]          = {"none", "linear", "sine", "RollerMMSType", "ROLLER_MMS_", NULL};
-const char *const RollerCoriolisVelocities[] = {"backward", "extrapolated", "RollerCoriolisVelocity", "ROLLER_CORIOLIS_", NULL};
+const char *const RollerCoriolisVelocities[] = {"backward", "extrapolated", "centered", "RollerCoriolisVelocity", "ROLLER_CORIOLIS_", NULL};
 
 /* Plane-strain Lame constants (SPEC section 1). */
 PetscErrorCode RollerLameFromYoung(PetscReal young, PetscReal poisson, PetscReal *lambda, PetscReal *mu)
@@ -61,7 +61,7 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
 
   PetscOptionsBegin(ctx->comm, NULL, "Roller: discretization and material", NULL);
   PetscCall(PetscOptionsInt("-degree", "Lagrange degree of the displacement (1 = the paper, 2)", NULL, ctx->degree, &ctx->degree, NULL));
-  PetscCall(PetscOptionsEnum("-coriolis_velocity", "Velocity in the explicit Coriolis term: backward (the paper, 1st order) or extrapolated (2nd order)", "RollerCoriolisVelocity", RollerCoriolisVelocities, (PetscEnum)ctx->coriolis, (PetscEnum *)&ctx->coriolis, NULL));
+  PetscCall(PetscOptionsEnum("-coriolis_velocity", "Coriolis velocity: backward (the paper, explicit, 1st order), extrapolated (explicit, 2nd order), centered (implicit, 2nd order, stable)", "RollerCoriolisVelocity", RollerCoriolisVelocities, (PetscEnum)ctx->coriolis, (PetscEnum *)&ctx->coriolis, NULL));
   PetscCall(PetscOptionsBool("-clamp_outer", "Also clamp Gamma_C (xi = 0 on the whole boundary, Theorem 1)", NULL, ctx->clamp_outer, &ctx->clamp_outer, NULL));
   PetscCall(PetscOptionsReal("-young", "Young's modulus E", NULL, ctx->young, &ctx->young, NULL));
   PetscCall(PetscOptionsReal("-poisson", "Poisson's ratio nu", NULL, ctx->poisson, &ctx->poisson, NULL));
@@ -113,6 +113,7 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCheck(ctx->ic_amplitude >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ic_amplitude %g must be >= 0", (double)ctx->ic_amplitude);
   PetscCheck(ctx->ic != ROLLER_IC_BUMP || ctx->clamp_outer, ctx->comm, PETSC_ERR_ARG_INCOMP, "-initial_condition bump needs -clamp_outer (the bump vanishes on both circles)");
   PetscCheck(ctx->mms == ROLLER_MMS_NONE || (ctx->clamp_outer && !ctx->obstacle), ctx->comm, PETSC_ERR_ARG_INCOMP, "-mms %s needs -clamp_outer and no -obstacle", RollerMMSTypes[ctx->mms]);
+  PetscCheck(!(ctx->obstacle && ctx->coriolis == ROLLER_CORIOLIS_CENTERED), ctx->comm, PETSC_ERR_ARG_INCOMP, "-coriolis_velocity centered makes the step matrix non-symmetric: the step is then no longer a minimization, and -obstacle needs one (use backward or extrapolated)");
   PetscCheck(!(ctx->obstacle && ctx->clamp_outer), ctx->comm, PETSC_ERR_ARG_INCOMP, "-obstacle cannot be combined with -clamp_outer (Gamma_C would be fixed)");
   if (ctx->mms != ROLLER_MMS_NONE) ctx->ic = ROLLER_IC_MMS;
   PetscCheck(ctx->ic != ROLLER_IC_MMS || ctx->mms != ROLLER_MMS_NONE, ctx->comm, PETSC_ERR_ARG_INCOMP, "-initial_condition mms needs -mms linear or sine");

@@ -10,6 +10,7 @@ PetscErrorCode RollerSetUp(Roller ctx)
   PetscCall(RollerDiscretizationSetUp(ctx));
   PetscCall(RollerOperatorsSetUp(ctx));
   PetscCall(RollerComputeBoundaryFunctionals(ctx));
+  PetscCall(RollerCheckRotation(ctx));
   PetscCall(RollerInitialState(ctx));
   if (ctx->restart[0]) PetscCall(RollerCheckpointRead(ctx, ctx->restart));
   if (ctx->obstacle) PetscCall(RollerContactCreate(ctx, &ctx->contact));
@@ -30,6 +31,8 @@ PetscErrorCode RollerDestroy(Roller *roller)
   PetscCall(MatDestroy(&ctx->M));
   PetscCall(MatDestroy(&ctx->K));
   PetscCall(MatDestroy(&ctx->A));
+  PetscCall(MatDestroy(&ctx->A0));
+  PetscCall(MatDestroy(&ctx->G));
   PetscCall(VecDestroy(&ctx->L_euler));
   PetscCall(VecDestroy(&ctx->L_centrifugal));
   PetscCall(VecDestroy(&ctx->coordinates));

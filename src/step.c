@@ -55,11 +55,17 @@ static PetscErrorCode StepRightHandSide(Roller ctx, Vec b)
   PetscFunctionBeginUser;
   RollerTheta(ctx, t1, NULL, &td, &tdd);
   /* w = R(-pi/2)(tdd xi^{k-1} + 2 td v^{k-1}) */
-  if (ctx->coriolis == ROLLER_CORIOLIS_BACKWARD) {
+  switch (ctx->coriolis) {
+  case ROLLER_CORIOLIS_BACKWARD:
     PetscCall(VecAXPBYPCZ(b, tdd + 2.0 * td / dt, -2.0 * td / dt, 0.0, ctx->xi1, ctx->xi2));
-  } else {
+    break;
+  case ROLLER_CORIOLIS_EXTRAPOLATED:
     PetscCall(VecAXPBYPCZ(b, tdd + 3.0 * td / dt, -4.0 * td / dt, 0.0, ctx->xi1, ctx->xi2));
     PetscCall(VecAXPY(b, td / dt, ctx->xi3));
+    break;
+  case ROLLER_CORIOLIS_CENTERED: /* the xi^k half is in A (RollerUpdateGyroscopic) */
+    PetscCall(VecAXPBYPCZ(b, tdd, -td / dt, 0.0, ctx->xi1, ctx->xi2));
+    break;
   }
   PetscCall(RollerApplyRotate90(b, w));
   PetscCall(VecAXPBYPCZ(w, rho * (2.0 / (dt * dt) + td * td), -rho / (dt * dt) + ctx->damping / (2.0 * dt), rho, ctx->xi1, ctx->xi2));
@@ -78,6 +84,7 @@ PetscErrorCode RollerStep(Roller ctx)
   const PetscReal    t = (ctx->step + 1) * ctx->dt;
 
   PetscFunctionBeginUser;
+  PetscCall(RollerUpdateGyroscopic(ctx, ctx->step * ctx->dt));
   PetscCall(StepRightHandSide(ctx, ctx->rhs));
   if (ctx->contact) {
     PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_CONTACT]));

@@ -1,0 +1,44 @@
+"""Bad input: every option out of range, a bad restart, an unwritable output path, fail at once with one
+message that names the option (or file), the value and what is allowed, a non-zero exit, and no output
+file left behind that looks complete."""
+import os
+
+from rollertest import Checker, run
+
+c = Checker("bad_input")
+cases = [
+    (["-mesh_h", "-0.1"], "-mesh_h", "-0.1"),
+    (["-mesh_h", "0.5"], "-mesh_h", "0.5"),
+    (["-r_inner", "0.6"], "-r_inner", "0.6"),
+    (["-r_inner", "0"], "-r_inner", "0"),
+    (["-young", "0"], "-young", "0"),
+    (["-poisson", "0.5"], "-poisson", "0.5"),
+    (["-poisson", "-1.5"], "-poisson", "-1.5"),
+    (["-density", "-1"], "-density", "-1"),
+    (["-degree", "3"], "-degree", "3"),
+    (["-ts_dt", "0"], "-ts_dt", "0"),
+    (["-ts_max_time", "-1"], "-ts_max_time", "-1"),
+    (["-ts_max_steps", "-5"], "-ts_max_steps", "-5"),
+    (["-damping", "-1"], "-damping", "-1"),
+    (["-obstacle", "-obstacle_speed", "0"], "-obstacle_speed", "0"),
+    (["-obstacle", "-obstacle_depth", "0.3"], "-obstacle_depth", "0.3"),
+    (["-theta_b", "-1"], "-theta_b", "-1"),
+    (["-checkpoint_every", "-1"], "-checkpoint_every", "-1"),
+    (["-output", "bad.h5", "-output_every", "0"], "-output_every", "0"),
+    (["-omega", "0.9"], "-omega", "0.9"),
+    (["-stability_margin", "2"], "-stability_margin", "2"),
+    (["-restart", "no-such-checkpoint.h5"], "no-such-checkpoint.h5", "-restart"),
+    (["-initial_condition", "bump"], "-initial_condition bump", "-clamp_outer"),
+]
+for args, name, value in cases:
+    code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet"] + args if args[0] != "-mesh_h" else args + ["-ts_max_steps", "2"], check=False)
+    text = out + err
+    first = next((line for line in text.splitlines() if name in line), "")
+    c.check(code != 0 and name in text and value in first, f"{' '.join(args)}: exit {code}, message: {first.strip()[:150]}")
+
+# an output path that cannot be written: no file left that looks complete
+for opt in ("-monitor_csv", "-output"):
+    path = f"no-such-dir/out.{'csv' if opt == '-monitor_csv' else 'h5'}"
+    code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet", opt, path], check=False)
+    c.check(code != 0 and path in out + err and not os.path.exists(path), f"{opt} {path}: exit {code}, named in the message")
+c.close()
