@@ -31,10 +31,10 @@ static PetscErrorCode Monitor(Roller ctx, Progress *p, PetscInt nsteps)
 /* Number of steps: floor(max_time/dt) (to a rounding tolerance), capped by -ts_max_steps. */
 static PetscInt StepCount(Roller ctx)
 {
-  PetscInt n = (PetscInt)PetscFloorReal(ctx->max_time / ctx->dt + 1e-9);
+  PetscReal n = PetscFloorReal(ctx->max_time / ctx->dt + 1e-9);
 
-  if (ctx->max_steps >= 0) n = PetscMin(n, ctx->max_steps);
-  return n;
+  if (ctx->max_steps >= 0) n = PetscMin(n, (PetscReal)ctx->max_steps);
+  return (PetscInt)PetscMin(n, (PetscReal)PETSC_MAX_INT);
 }
 
 PetscErrorCode RollerSolve(Roller ctx)

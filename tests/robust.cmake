@@ -1,2 +1,5 @@
 # Bad input, restarts, signals and hard cases (issue: it keeps working, says clearly what is wrong).
 roller_test(bad_input bad_input.py LABELS quick)
+roller_test(hard_long_run hard_long_run.py LABELS quick hard)
+roller_test(hard_large_steps hard_large_steps.py LABELS quick hard)
+roller_test(hard_fast_rotation hard_fast_rotation.py LABELS quick hard)

@@ -1,0 +1,28 @@
+"""Long runs: 100,000 steps without obstacle (theta = 0, xi = 0 on the boundary, no damping) keep the
+energy drift below 1e-8 relative, and the resident memory of the run does not grow."""
+import subprocess
+import time
+
+from rollertest import EXE, Checker, read_csv
+
+c = Checker("hard_long_run")
+cmd = [EXE, "-mesh_h", "0.05", "-clamp_outer", "-initial_condition", "bump", "-omega", "0",
+       "-ts_max_steps", "100000", "-ts_max_time", "1e9", "-quiet", "-monitor_csv", "long.csv"]
+proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+rss = []
+while proc.poll() is None:
+    try:
+        with open(f"/proc/{proc.pid}/status") as f:
+            rss += [int(line.split()[1]) for line in f if line.startswith("VmRSS:")]
+    except FileNotFoundError:
+        break
+    time.sleep(0.2)
+out, err = proc.communicate()
+c.check(proc.returncode == 0, f"100,000 steps ran (exit {proc.returncode}) {err[-300:]}")
+e = read_csv("long.csv")["energy"]
+drift = max(abs(e - e[0])) / e[0]
+c.check(len(e) == 100001 and drift < 1e-8, f"energy drift over {len(e) - 1} steps {drift:.2e} < 1e-8")
+if len(rss) >= 5:
+    early, late = rss[len(rss) // 5], max(rss[len(rss) // 5:])
+    c.check(late <= early * 1.02 + 1024, f"resident memory flat: {early} kB at 20% of the run, at most {late} kB after ({len(rss)} samples)")
+c.close()
