@@ -50,7 +50,6 @@ PetscErrorCode RollerSolve(Roller ctx)
   PetscOptionsBegin(ctx->comm, NULL, "Roller: monitors", NULL);
   PetscCall(PetscOptionsBool("-ts_monitor", "Print R, alpha, energy (and contact) every step", NULL, p.monitor, &p.monitor, NULL));
   PetscOptionsEnd();
-  PetscCall(RollerSignalsInstall());
   PetscCall(PetscTime(&p.start));
   p.last = p.start;
   PetscCall(RollerComputeStepInfo(ctx));

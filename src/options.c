@@ -38,6 +38,7 @@ PetscErrorCode RollerCreate(MPI_Comm comm, Roller *roller)
   ctx->ic_amplitude   = 1e-3;
   ctx->mms            = ROLLER_MMS_NONE;
   PetscCall(PetscStrncpy(ctx->checkpoint, "checkpoint.h5", sizeof(ctx->checkpoint)));
+  PetscCall(RollerSignalsInstall()); /* a SIGTERM during setup still ends in a checkpoint after step 1 */
   PetscCall(PetscLogStageRegister("Roller setup", &ctx->stage[ROLLER_STAGE_SETUP]));
   PetscCall(PetscLogStageRegister("Roller step", &ctx->stage[ROLLER_STAGE_STEP]));
   PetscCall(PetscLogStageRegister("Roller contact", &ctx->stage[ROLLER_STAGE_CONTACT]));

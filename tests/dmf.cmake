@@ -2,3 +2,4 @@
 roller_test(dmf_energy dmf_energy.py LABELS quick)
 roller_test(dmf_mms dmf_mms.py LABELS quick TIMEOUT 900)
 roller_test(dmf_paper dmf_paper.py LABELS quick)
+roller_test(dmf_axisym dmf_axisym.py LABELS quick)

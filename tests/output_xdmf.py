@@ -167,7 +167,7 @@ def check_run(tag, degree, nproc, steps=20, every=5):
     chk.check(ok, f"{tag}: {xmf} parses, every HDF5 reference exists with the stated shape and type {why}")
     if not ok:
         return
-    chk.check(name == h5 and sorted(attrs) == ["displacement", "displacement_lab", "stress_norm", "velocity"],
+    chk.check(name == h5 and {"displacement", "displacement_lab", "stress_norm", "velocity"} <= set(attrs),
               f"{tag}: the index refers to {name} with attributes {sorted(attrs)}")
     csv = read_csv(csvf)
     out_steps = np.arange(0, steps + 1, every)
@@ -227,7 +227,7 @@ def check_killed(tag):
     part = f"{tag}.part.xmf"
     if os.path.exists(part):
         os.remove(part)
-    proc = subprocess.Popen([EXE] + MESH + ["-ts_max_steps", "100000", "-output", h5, "-output_every", "4",
+    proc = subprocess.Popen([EXE] + MESH + ["-ts_max_time", "1e6", "-output", h5, "-output_every", "4",
                                             "-monitor_csv", csvf, "-quiet"],
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.time() + 120
