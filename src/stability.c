@@ -14,8 +14,9 @@ static PetscErrorCode LowestFrequency(Roller ctx, PetscReal *omega1)
   KSP       ksp;
   PC        pc;
   Vec       v, w, Mv;
-  PetscReal rq = 0, rq_old = PETSC_MAX_REAL;
-  PetscInt  it;
+  PetscReal   rq = 0, rq_old = PETSC_MAX_REAL;
+  PetscInt    it;
+  PetscMPIInt size;
 
   PetscFunctionBeginUser;
   PetscCall(KSPCreate(ctx->comm, &ksp));
@@ -24,7 +25,9 @@ static PetscErrorCode LowestFrequency(Roller ctx, PetscReal *omega1)
   PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCCHOLESKY));
-  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
+  if (size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  else PetscCall(PCFactorSetMatOrderingType(pc, MATORDERINGND));
   PetscCall(KSPSetFromOptions(ksp));
   PetscCall(VecDuplicate(ctx->coordinates, &v));
   PetscCall(VecDuplicate(ctx->coordinates, &w));
