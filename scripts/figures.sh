@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# The paper's figures 3-9 from the scenes in jobs/, into docs/figures/ (docs/validation.md shows them).
+# Usage: bash scripts/figures.sh [free|contact|all]   (runs build/roller; build first with scripts/build.sh)
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+source "$root/scripts/env.sh"
+roller="$root/build/roller"
+py=/usr/bin/python3
+fig="$root/docs/figures"
+work="$root/results/figures"
+mkdir -p "$fig" "$work"
+what="${1:-all}"
+
+if [ "$what" = free ] || [ "$what" = all ]; then
+  # exact axisymmetric reference (Table 1 values) for figures 3-4
+  $py "$root/scripts/axisym_reference.py" --scheme exact --t-end 20 --dt-out 0.0125 --out "$work/reference.csv"
+  # figures 3, 4: dx = dt = 0.0125 * 2^(i-1), i = 1..4
+  labels=()
+  for h in 0.0125 0.025 0.05 0.1; do
+    "$roller" -options_file "$root/jobs/free.yaml" -mesh_h $h -ts_dt $h -quiet -monitor_csv "$work/mesh_h$h.csv"
+    labels+=(--label "dx = dt = $h" "$work/mesh_h$h.csv")
+  done
+  for q in R alpha; do
+    $py "$root/scripts/plot_series.py" --quantity $q --out "$fig/fig$([ $q = R ] && echo 3 || echo 4)_$q.png" \
+      --title "no obstacle, mesh study (paper figure $([ $q = R ] && echo 3 || echo 4))" "${labels[@]}" \
+      --reference "$work/reference.csv" --reference-label "exact axisymmetric"
+  done
+  # figures 5, 6: E = 0.05, 0.1, 0.2
+  labels=()
+  for E in 0.05 0.1 0.2; do
+    "$roller" -options_file "$root/jobs/free.yaml" -young $E -quiet -monitor_csv "$work/young$E.csv"
+    labels+=(--label "E = $E" "$work/young$E.csv")
+  done
+  $py "$root/scripts/plot_series.py" --quantity R --out "$fig/fig5_R.png" --title "stiffness study (paper figure 5)" "${labels[@]}"
+  $py "$root/scripts/plot_series.py" --quantity alpha --out "$fig/fig6_alpha.png" --title "stiffness study (paper figure 6)" "${labels[@]}"
+  # figure 7: resonance
+  "$roller" -options_file "$root/jobs/resonance.yaml" -quiet -monitor_csv "$work/resonance.csv"
+  "$roller" -options_file "$root/jobs/resonance.yaml" -theta_a 0 -quiet -monitor_csv "$work/steady.csv"
+  $py "$root/scripts/plot_series.py" --quantity alpha --out "$fig/fig7_alpha.png" --title "perturbed rotation (paper figure 7)" \
+    --label "theta = omega t + 0.001 cos(2 pi t / 9.75)" "$work/resonance.csv" --label "theta = omega t" "$work/steady.csv"
+fi
+
+if [ "$what" = contact ] || [ "$what" = all ]; then
+  # figures 8, 9: |sigma| on the deformed roller, lab frame
+  for scene in compression rolling; do
+    "$roller" -options_file "$root/jobs/$scene.yaml" -quiet -monitor_csv "$work/$scene.csv" -output "$work/$scene.h5" -output_every 80
+    $py "$root/scripts/plot_fields.py" "$work/$scene.h5" --times 2 5 10 20 --out "$fig/${scene}_sigma.png"
+  done
+  $py "$root/scripts/plot_series.py" --quantity contact_force --out "$fig/contact_force.png" --title "total contact force" \
+    --label "compression (omega = 0)" "$work/compression.csv" --label "rolling (omega = pi/10)" "$work/rolling.csv"
+fi
+echo "figures: $fig"
