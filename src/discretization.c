@@ -136,6 +136,13 @@ static PetscErrorCode StepSolverSetUp(Roller ctx)
   else PetscCall(PCFactorSetMatOrderingType(pc, MATORDERINGND));
   PetscCall(KSPSetTolerances(ctx->ksp, 1e-12, 1e-50, PETSC_DEFAULT, PETSC_DEFAULT));
   PetscCall(KSPSetFromOptions(ctx->ksp));
+  {
+    PetscBool direct;
+
+    /* an iterative solver starts from the extrapolation 2 xi^{k-1} - xi^{k-2} (step.c) */
+    PetscCall(PetscObjectTypeCompare((PetscObject)ctx->ksp, KSPPREONLY, &direct));
+    PetscCall(KSPSetInitialGuessNonzero(ctx->ksp, (PetscBool)!direct));
+  }
   PetscCall(KSPSetUp(ctx->ksp));
   PetscFunctionReturn(0);
 }

@@ -91,6 +91,10 @@ PetscErrorCode RollerStep(Roller ctx)
     PetscCall(RollerContactSolve(ctx, ctx->contact, t, ctx->rhs, ctx->xi));
     PetscCall(PetscLogStagePop());
   } else {
+    PetscBool guess;
+
+    PetscCall(KSPGetInitialGuessNonzero(ctx->ksp, &guess));
+    if (guess) PetscCall(VecAXPBYPCZ(ctx->xi, 2.0, -1.0, 0.0, ctx->xi1, ctx->xi2));
     PetscCall(KSPSolve(ctx->ksp, ctx->rhs, ctx->xi));
     PetscCall(KSPGetConvergedReason(ctx->ksp, &reason));
     PetscCheck(reason > 0, ctx->comm, PETSC_ERR_NOT_CONVERGED, "The step solve diverged at step %" PetscInt_FMT ", t = %g: %s", ctx->step + 1, (double)t, KSPConvergedReasons[reason]);
