@@ -180,6 +180,9 @@ def check_run(tag, degree, nproc, steps=20, every=5):
         vel = f[attrs["velocity"]][:]
         sn = f[attrs["stress_norm"]][:]
         par = dict(f["/parameters"].attrs)
+        diag = {k: f["/diagnostics/" + k][:] for k in ("step", "t", "R", "alpha", "energy")}
+    chk.check(all(np.array_equal(diag[k], csv[k]) for k in diag),
+              f"{tag}: /diagnostics holds the CSV's step, t, R, alpha, energy for all {len(diag['t'])} steps, bit for bit")
     chk.check(len(times) == len(out_steps) and np.allclose(times, csv["t"][out_steps], rtol=0, atol=1e-14)
               and np.allclose(t5, times, rtol=0, atol=0),
               f"{tag}: XDMF times = /time = CSV t at steps {out_steps.tolist()}")
