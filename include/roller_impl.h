@@ -143,8 +143,10 @@ PETSC_INTERN PetscErrorCode RollerStep(Roller);
 
 /* contact.c: the obstacle QP (only built when -obstacle is on) */
 PETSC_INTERN PetscErrorCode RollerContactCreate(Roller, RollerContact *);
+PETSC_INTERN PetscErrorCode RollerContactHelp(Roller); /* -help without -obstacle: the options block only */
 PETSC_INTERN PetscErrorCode RollerContactSolve(Roller, RollerContact, PetscReal, Vec, Vec);
 PETSC_INTERN PetscErrorCode RollerContactInfo(Roller, RollerContact, Vec, PetscReal, RollerStepInfo *);
+PETSC_INTERN PetscErrorCode RollerContactPressure(Roller, RollerContact, Vec); /* into a P1 scalar Vec on the mesh */
 PETSC_INTERN PetscErrorCode RollerContactDestroy(RollerContact *);
 
 /* stability.c */
@@ -159,6 +161,12 @@ PETSC_INTERN PetscErrorCode RollerSignalCaught(Roller, PetscInt *);
 /* diagnostics.c */
 PETSC_INTERN PetscErrorCode RollerComputeStepInfo(Roller);
 PETSC_INTERN PetscErrorCode RollerComputeErrors(Roller, PetscReal, PetscReal *, PetscReal *);
+
+/* series.c: the diagnostics time series written into the HDF5 output */
+typedef struct _n_RollerSeries *RollerSeries;
+PETSC_INTERN PetscErrorCode RollerSeriesAppend(Roller, RollerSeries *);
+PETSC_INTERN PetscErrorCode RollerSeriesWrite(Roller, RollerSeries, PetscViewer);
+PETSC_INTERN PetscErrorCode RollerSeriesDestroy(RollerSeries *);
 
 /* output.c */
 PETSC_INTERN PetscErrorCode RollerOutputCreate(Roller, RollerOutput *);

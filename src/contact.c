@@ -53,7 +53,7 @@ static PetscErrorCode ContactGatherNodes(Roller ctx, RollerContact c)
   IS                 is, to;
   const PetscInt    *points;
   const PetscScalar *x;
-  PetscInt           npoints = 0, nown = 0, rstart, rend, *mine_idx, *idx, *perm;
+  PetscInt           npoints = 0, nown = 0, rstart, rend, *mine_idx, *mine_vert, *mine_point, *idx, *vert, *perm;
   PetscReal         *mine_x, *angle, *xc;
   PetscMPIInt        size, n_mine, *counts, *displs, *counts2, *displs2;
 
@@ -67,18 +67,21 @@ static PetscErrorCode ContactGatherNodes(Roller ctx, RollerContact c)
   if (is) PetscCall(ISGetLocalSize(is, &npoints));
   if (is) PetscCall(ISGetIndices(is, &points));
   /* every owned point of the label carries gdof/2 nodes (P1 vertex 1, P2 vertex or edge 1) */
-  PetscCall(PetscMalloc2(2 * npoints * ctx->degree, &mine_idx, 4 * npoints * ctx->degree, &mine_x));
+  PetscCall(PetscMalloc4(2 * npoints * ctx->degree, &mine_idx, 2 * npoints * ctx->degree, &mine_vert, 2 * npoints * ctx->degree, &mine_point, 4 * npoints * ctx->degree, &mine_x));
   PetscCall(VecGetArrayRead(ctx->coordinates, &x));
   for (PetscInt p = 0; p < npoints; ++p) {
-    PetscInt gdof, gcdof, goff;
+    PetscInt gdof, gcdof, goff, depth;
 
     PetscCall(PetscSectionGetDof(gsection, points[p], &gdof));
     PetscCall(PetscSectionGetConstraintDof(gsection, points[p], &gcdof));
     PetscCall(PetscSectionGetOffset(gsection, points[p], &goff));
     if (gdof <= 0 || goff < 0) continue; /* not owned here */
     PetscCheck(gcdof == 0 && gdof % 2 == 0, ctx->comm, PETSC_ERR_PLIB, "Gamma_C point %" PetscInt_FMT " has %" PetscInt_FMT " dofs, %" PetscInt_FMT " constrained", points[p], gdof, gcdof);
+    PetscCall(DMPlexGetPointDepth(ctx->dm, points[p], &depth));
     for (PetscInt j = 0; j < gdof; j += 2) {
       mine_idx[nown]      = goff + j;
+      mine_vert[nown]     = depth == 0 ? 1 : 0;
+      mine_point[nown]    = points[p];
       mine_x[2 * nown]    = PetscRealPart(x[goff + j - rstart]);
       mine_x[2 * nown + 1] = PetscRealPart(x[goff + j + 1 - rstart]);
       nown++;
@@ -100,32 +103,40 @@ static PetscErrorCode ContactGatherNodes(Roller ctx, RollerContact c)
     c->nc += counts[r];
   }
   PetscCheck(c->nc > 0, ctx->comm, PETSC_ERR_ARG_WRONG, "Gamma_C (label \"outer\") has no free nodes: the obstacle has nothing to touch");
-  PetscCall(PetscMalloc4(c->nc, &idx, 2 * c->nc, &xc, c->nc, &angle, c->nc, &perm));
+  PetscCall(PetscMalloc5(c->nc, &idx, c->nc, &vert, 2 * c->nc, &xc, c->nc, &angle, c->nc, &perm));
   PetscCallMPI(MPI_Allgatherv(mine_idx, n_mine, MPIU_INT, idx, counts, displs, MPIU_INT, ctx->comm));
+  PetscCallMPI(MPI_Allgatherv(mine_vert, n_mine, MPIU_INT, vert, counts, displs, MPIU_INT, ctx->comm));
   PetscCallMPI(MPI_Allgatherv(mine_x, 2 * n_mine, MPIU_REAL, xc, counts2, displs2, MPIU_REAL, ctx->comm));
   PetscCall(PetscFree4(counts, displs, counts2, displs2));
-  PetscCall(PetscFree2(mine_idx, mine_x));
+  PetscCall(PetscSortIntWithArray(nown, mine_idx, mine_point)); /* to find the mesh point of an owned node */
 
   for (PetscInt i = 0; i < c->nc; ++i) {
     angle[i] = PetscAtan2Real(xc[2 * i + 1], xc[2 * i]);
     perm[i]  = i;
   }
   PetscCall(PetscSortRealWithPermutation(c->nc, angle, perm));
-  PetscCall(PetscMalloc2(c->nc, &c->gidx, 2 * c->nc, &c->xc));
-  PetscCall(PetscMalloc2(nown, &c->own_node, nown, &c->own_off));
+  PetscCall(PetscMalloc3(c->nc, &c->gidx, c->nc, &c->is_vertex, 2 * c->nc, &c->xc));
+  PetscCall(PetscMalloc3(nown, &c->own_node, nown, &c->own_off, nown, &c->own_point));
   c->nown = 0;
   for (PetscInt i = 0; i < c->nc; ++i) {
     c->gidx[i]          = idx[perm[i]];
+    c->is_vertex[i]     = vert[perm[i]] ? PETSC_TRUE : PETSC_FALSE;
     c->xc[2 * i]        = xc[2 * perm[i]];
     c->xc[2 * i + 1]    = xc[2 * perm[i] + 1];
     if (c->gidx[i] >= rstart && c->gidx[i] < rend) {
+      PetscInt loc;
+
       c->own_node[c->nown] = i;
       c->own_off[c->nown]  = c->gidx[i] - rstart;
+      PetscCall(PetscFindInt(c->gidx[i], nown, mine_idx, &loc));
+      PetscCheck(loc >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Owned Gamma_C dof %" PetscInt_FMT " not found", c->gidx[i]);
+      c->own_point[c->nown] = mine_point[loc];
       c->nown++;
     }
   }
   PetscCheck(c->nown == nown, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Owned Gamma_C nodes %" PetscInt_FMT " != %" PetscInt_FMT, c->nown, nown);
-  PetscCall(PetscFree4(idx, xc, angle, perm));
+  PetscCall(PetscFree5(idx, vert, xc, angle, perm));
+  PetscCall(PetscFree4(mine_idx, mine_vert, mine_point, mine_x));
 
   PetscCall(PetscMalloc1(2 * c->nc, &idx));
   for (PetscInt i = 0; i < c->nc; ++i) {
@@ -143,6 +154,18 @@ static PetscErrorCode ContactGatherNodes(Roller ctx, RollerContact c)
   PetscFunctionReturn(0);
 }
 
+/* -help without -obstacle: list the contact options and their defaults too (the same block as a run with
+   the obstacle reads), without building any of the machinery. */
+PetscErrorCode RollerContactHelp(Roller ctx)
+{
+  struct _n_RollerContact c;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(&c, sizeof(c)));
+  PetscCall(ContactSetFromOptions(ctx, &c));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode RollerContactCreate(Roller ctx, RollerContact *contact)
 {
   RollerContact c;
@@ -152,7 +175,7 @@ PetscErrorCode RollerContactCreate(Roller ctx, RollerContact *contact)
   c->comm = ctx->comm;
   PetscCall(ContactSetFromOptions(ctx, c));
   PetscCall(ContactGatherNodes(ctx, c));
-  PetscCall(PetscMalloc6(c->nc, &c->cand, c->nc, &c->is_cand, c->nc, &c->lower, c->nc, &c->gap, c->nc, &c->result.lambda, c->nc, &c->check_result.lambda));
+  PetscCall(PetscMalloc7(c->nc, &c->cand, c->nc, &c->is_cand, c->nc, &c->on_obstacle, c->nc, &c->lower, c->nc, &c->gap, c->nc, &c->result.lambda, c->nc, &c->check_result.lambda));
   PetscCall(PetscArrayzero(c->result.lambda, c->nc));
   PetscCall(PetscArrayzero(c->is_cand, c->nc));
   PetscCall(VecDuplicate(ctx->xi1, &c->b));
@@ -237,11 +260,15 @@ static void ContactCandidateList(RollerContact c)
    x_n + 2 xi^{k-1}_n - xi^{k-2}_n against the obstacle at t_k (its motion and the rotation of n^k are exact
    in this prediction) is below the reach: -contact_margin, plus the obstacle's advance in one step, plus
    twice the largest displacement increment of a Gamma_C node in the last step (a bound on the change of
-   velocity a contact shock can bring). A node that still penetrates is added after the solve. */
+   velocity a contact shock can bring). A node that still penetrates is added after the solve.
+   Also the nodes on the obstacle at the previous level t_{k-1} (gap^{k-1} <= tol with n^{k-1}, g^{k-1}): the
+   initial active set of the condensed solver. It is derived from xi^{k-1}, not remembered from the last
+   solve, so that the step is a function of the checkpointed state only and a restart repeats it exactly. */
 static PetscErrorCode ContactCandidates(Roller ctx, RollerContact c)
 {
   const PetscScalar *u1, *u2;
-  PetscReal          dmax = 0.0, reach;
+  const PetscReal    tol = RollerContactGapTolerance(ctx);
+  PetscReal          dmax = 0.0, reach, theta1, n1[2], g1;
 
   PetscFunctionBeginUser;
   PetscCall(RollerContactGather(c, ctx->xi1, c->red1));
@@ -250,10 +277,16 @@ static PetscErrorCode ContactCandidates(Roller ctx, RollerContact c)
   PetscCall(VecGetArrayRead(c->red2, &u2));
   for (PetscInt i = 0; i < c->nc; ++i) dmax = PetscMax(dmax, PetscSqrtReal(PetscSqr(PetscRealPart(u1[2 * i] - u2[2 * i])) + PetscSqr(PetscRealPart(u1[2 * i + 1] - u2[2 * i + 1]))));
   reach = c->margin + PetscAbsReal(c->g - RollerObstacleHeight(ctx, c->t - ctx->dt)) + 2.0 * dmax;
+  RollerTheta(ctx, ctx->time, &theta1, NULL, NULL);
+  n1[0] = PetscSinReal(theta1);
+  n1[1] = PetscCosReal(theta1);
+  g1    = RollerObstacleHeight(ctx, ctx->time);
   for (PetscInt i = 0; i < c->nc; ++i) {
     const PetscReal p0 = PetscRealPart(2.0 * u1[2 * i] - u2[2 * i]), p1 = PetscRealPart(2.0 * u1[2 * i + 1] - u2[2 * i + 1]);
+    const PetscReal gap1 = (c->xc[2 * i] + PetscRealPart(u1[2 * i])) * n1[0] + (c->xc[2 * i + 1] + PetscRealPart(u1[2 * i + 1])) * n1[1] - g1;
 
-    c->is_cand[i] = (p0 * c->normal[0] + p1 * c->normal[1] - c->lower[i] <= reach) ? PETSC_TRUE : PETSC_FALSE;
+    c->is_cand[i]     = (p0 * c->normal[0] + p1 * c->normal[1] - c->lower[i] <= reach) ? PETSC_TRUE : PETSC_FALSE;
+    c->on_obstacle[i] = gap1 <= tol ? PETSC_TRUE : PETSC_FALSE;
   }
   PetscCall(VecRestoreArrayRead(c->red1, &u1));
   PetscCall(VecRestoreArrayRead(c->red2, &u2));
@@ -374,12 +407,13 @@ PetscErrorCode RollerContactSolve(Roller ctx, RollerContact c, PetscReal t, Vec 
   PetscFunctionReturn(0);
 }
 
-/* -contact_monitor: the contact set along the tangent t^k, s_n = (x_n + xi_n) . t^k: its extent and the
-   force-weighted centroid (0 for a contact symmetric about the line through the centre along n^k). */
+/* -contact_monitor: the contact set along the tangent t^k, s_n = (x_n + xi_n) . t^k: its extent, the
+   force-weighted centroid (0 for a contact symmetric about the line through the centre along n^k) and the
+   force-weighted RMS distance from it (a Hertz pressure p0 sqrt(1 - s^2/a^2) has s_rms = a/2). */
 static PetscErrorCode ContactMonitor(Roller ctx, RollerContact c, const RollerStepInfo *info)
 {
   const PetscScalar *u;
-  PetscReal          smin = 0.0, smax = 0.0, sbar = 0.0;
+  PetscReal          smin = 0.0, smax = 0.0, sbar = 0.0, s2 = 0.0;
   PetscBool          first = PETSC_TRUE;
 
   PetscFunctionBeginUser;
@@ -393,9 +427,15 @@ static PetscErrorCode ContactMonitor(Roller ctx, RollerContact c, const RollerSt
     sbar += c->result.lambda[i] * s;
     first = PETSC_FALSE;
   }
-  PetscCall(VecRestoreArrayRead(c->red, &u));
   if (info->contact_force > 0) sbar /= info->contact_force;
-  PetscCall(PetscPrintf(ctx->comm, "contact_monitor: step %" PetscInt_FMT " t %.6g nodes %" PetscInt_FMT " force %.10e s_min %+.10e s_max %+.10e s_centroid %+.10e candidates %" PetscInt_FMT " resolves %" PetscInt_FMT "\n", ctx->step, (double)c->t, info->contact_nodes, (double)info->contact_force, (double)smin, (double)smax, (double)sbar, c->ncand, c->resolves));
+  for (PetscInt i = 0; i < c->nc; ++i) {
+    const PetscReal s = (c->xc[2 * i] + PetscRealPart(u[2 * i])) * c->tangent[0] + (c->xc[2 * i + 1] + PetscRealPart(u[2 * i + 1])) * c->tangent[1];
+
+    if (c->result.lambda[i] > 0.0) s2 += c->result.lambda[i] * PetscSqr(s - sbar);
+  }
+  PetscCall(VecRestoreArrayRead(c->red, &u));
+  if (info->contact_force > 0) s2 /= info->contact_force;
+  PetscCall(PetscPrintf(ctx->comm, "contact_monitor: step %" PetscInt_FMT " t %.6g nodes %" PetscInt_FMT " force %.10e s_min %+.10e s_max %+.10e s_centroid %+.10e s_rms %.10e candidates %" PetscInt_FMT " resolves %" PetscInt_FMT "\n", ctx->step, (double)c->t, info->contact_nodes, (double)info->contact_force, (double)smin, (double)smax, (double)sbar, (double)PetscSqrtReal(s2), c->ncand, c->resolves));
   PetscFunctionReturn(0);
 }
 
@@ -426,6 +466,71 @@ PetscErrorCode RollerContactInfo(Roller ctx, RollerContact c, Vec xi, PetscReal 
   PetscFunctionReturn(0);
 }
 
+/* The contact pressure at the Gamma_C vertices (output field contact_pressure, docs/contact.md). The multipliers
+   are nodal forces, lambda_n = int_{Gamma_C} p phi_n ds for a normal traction p. With h_v the P1 hat function
+   of vertex v on the polygon of the Gamma_C vertices, the lumped L2 projection of the traction onto P1 is
+     p_v = sum_n lambda_n h_v(x_n) / int h_v ds,   int h_v ds = half the lengths of the two polygon edges at v:
+   for P1 the nodal force over its tributary length; for P2 an edge midpoint gives half its force to each end
+   of its edge. The trapezoidal integral of p over the polygon, sum_v p_v int h_v ds, is then exactly
+   sum_n lambda_n, the contact force. p is a global Vec of a P1 scalar space on (a clone of) the mesh; on return
+   it holds p_v at every Gamma_C vertex and 0 everywhere else. */
+PetscErrorCode RollerContactPressure(Roller ctx, RollerContact c, Vec p)
+{
+  const PetscReal *lambda = c->result.lambda;
+  PetscReal       *force, *trib;
+  PetscScalar     *pa;
+  PetscInt         first = -1, rstart;
+  DM               dm;
+  PetscSection     gsection;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetDM(p, &dm));
+  PetscCheck(dm, ctx->comm, PETSC_ERR_ARG_WRONG, "The contact pressure Vec needs a DM (a P1 scalar space on the mesh)");
+  PetscCall(DMGetGlobalSection(dm, &gsection));
+  PetscCall(VecGetOwnershipRange(p, &rstart, NULL));
+  PetscCall(PetscCalloc2(c->nc, &force, c->nc, &trib));
+  for (PetscInt i = 0; i < c->nc && first < 0; ++i)
+    if (c->is_vertex[i]) first = i;
+  PetscCheck(first >= 0, ctx->comm, PETSC_ERR_PLIB, "Gamma_C has no vertex");
+  /* walk the polygon edge by edge: from vertex v to the next vertex w (cyclic, angle order), the nodes between */
+  for (PetscInt v = first, walked = 0; walked < c->nc;) {
+    PetscInt  w = (v + 1) % c->nc, len;
+    PetscReal L;
+
+    while (!c->is_vertex[w]) w = (w + 1) % c->nc;
+    len = w > v ? w - v : w + c->nc - v;
+    L   = PetscSqrtReal(PetscSqr(c->xc[2 * w] - c->xc[2 * v]) + PetscSqr(c->xc[2 * w + 1] - c->xc[2 * v + 1]));
+    PetscCheck(L > 0.0, ctx->comm, PETSC_ERR_PLIB, "Gamma_C edge of zero length");
+    force[v] += lambda[v];
+    trib[v] += 0.5 * L;
+    trib[w] += 0.5 * L;
+    for (PetscInt j = 1; j < len; ++j) { /* P2: the edge midpoint */
+      const PetscInt  m  = (v + j) % c->nc;
+      const PetscReal hv = PetscSqrtReal(PetscSqr(c->xc[2 * w] - c->xc[2 * m]) + PetscSqr(c->xc[2 * w + 1] - c->xc[2 * m + 1])) / L;
+
+      force[v] += hv * lambda[m];
+      force[w] += (1.0 - hv) * lambda[m];
+    }
+    walked += len;
+    v = w;
+  }
+  PetscCall(VecZeroEntries(p));
+  PetscCall(VecGetArray(p, &pa));
+  for (PetscInt k = 0; k < c->nown; ++k) {
+    const PetscInt i = c->own_node[k];
+    PetscInt       dof, off;
+
+    if (!c->is_vertex[i]) continue;
+    PetscCall(PetscSectionGetDof(gsection, c->own_point[k], &dof));
+    PetscCall(PetscSectionGetOffset(gsection, c->own_point[k], &off));
+    PetscCheck(dof == 1 && off >= rstart, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "The contact pressure Vec is not a P1 scalar space with the mesh's partition (vertex %" PetscInt_FMT ": %" PetscInt_FMT " dofs at %" PetscInt_FMT ")", c->own_point[k], dof, off);
+    pa[off - rstart] = force[i] / trib[i];
+  }
+  PetscCall(VecRestoreArray(p, &pa));
+  PetscCall(PetscFree2(force, trib));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode RollerContactDestroy(RollerContact *contact)
 {
   RollerContact c = *contact;
@@ -445,9 +550,9 @@ PetscErrorCode RollerContactDestroy(RollerContact *contact)
   PetscCall(VecDestroy(&c->force));
   PetscCall(VecDestroy(&c->work));
   PetscCall(VecDestroy(&c->xi_check));
-  PetscCall(PetscFree2(c->gidx, c->xc));
-  PetscCall(PetscFree2(c->own_node, c->own_off));
-  PetscCall(PetscFree6(c->cand, c->is_cand, c->lower, c->gap, c->result.lambda, c->check_result.lambda));
+  PetscCall(PetscFree3(c->gidx, c->is_vertex, c->xc));
+  PetscCall(PetscFree3(c->own_node, c->own_off, c->own_point));
+  PetscCall(PetscFree7(c->cand, c->is_cand, c->on_obstacle, c->lower, c->gap, c->result.lambda, c->check_result.lambda));
   PetscCall(PetscFree(c));
   *contact = NULL;
   PetscFunctionReturn(0);

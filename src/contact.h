@@ -62,10 +62,12 @@ struct _n_RollerContact {
      (y at gidx[i] + 1) and position xc[2i], xc[2i+1]; the redundant vectors hold 2 nc entries in this order */
   PetscInt   nc;
   PetscInt  *gidx;
+  PetscBool *is_vertex; /* a mesh vertex (P2: the others are edge midpoints) */
   PetscReal *xc;
   PetscInt   nown;     /* nodes owned by this rank: */
   PetscInt  *own_node; /*   their indices in the sorted list */
   PetscInt  *own_off;  /*   the local offset of their x dof in a global Vec */
+  PetscInt  *own_point; /*  their mesh point (vertex, or edge for a P2 midpoint) */
   VecScatter scatter;  /* global Vec -> redundant Vec of the Gamma_C dofs */
   Vec        red, red1, red2;
 
@@ -76,6 +78,8 @@ struct _n_RollerContact {
   PetscBool *is_cand;  /* nc flags */
   PetscReal *lower;    /* nc lower bounds g^k - x_n . n^k of the normal displacement q_n */
   PetscReal *gap;      /* nc gaps of a solution (scratch) */
+  PetscBool *on_obstacle; /* nc: gap^{k-1}_n <= tol, the nodes on the obstacle at the previous level, from
+                             xi^{k-1} (checkpointed state, so a restart takes the same decisions) */
 
   /* the accepted solution of the step: multipliers, iterations, re-solves; the right-hand side it solved */
   RollerContactResult result;

@@ -11,7 +11,6 @@
 
 struct _n_RollerContactCondensed {
   PetscReal *S;          /* 2 nc x 2 nc, column-major, the same on every rank */
-  PetscBool *was_active; /* nc: the active set of the last step (warm start) */
   PetscReal *gf;         /* nc: gap of the free solution */
   PetscReal *G, *Gff, *d, *lam, *mu, *mu2, *w; /* the small QP, sized for nc */
   PetscInt  *F;
@@ -38,9 +37,8 @@ PetscErrorCode RollerContactCondensedCreate(Roller ctx, RollerContact c)
   c->condensed = cd;
   PetscCall(PetscTime(&t0));
   PetscCall(PetscMalloc1((size_t)n * n, &cd->S));
-  PetscCall(PetscMalloc6(c->nc, &cd->was_active, c->nc, &cd->gf, (size_t)c->nc * c->nc, &cd->G, (size_t)c->nc * c->nc, &cd->Gff, c->nc, &cd->d, c->nc, &cd->lam));
+  PetscCall(PetscMalloc5(c->nc, &cd->gf, (size_t)c->nc * c->nc, &cd->G, (size_t)c->nc * c->nc, &cd->Gff, c->nc, &cd->d, c->nc, &cd->lam));
   PetscCall(PetscMalloc5(c->nc, &cd->mu, c->nc, &cd->mu2, c->nc, &cd->w, c->nc, &cd->F, c->nc, &cd->act));
-  PetscCall(PetscArrayzero(cd->was_active, c->nc));
   PetscCall(VecDuplicate(ctx->xi1, &cd->xf));
   PetscCall(VecDuplicate(ctx->xi1, &cd->f));
   PetscCall(VecDuplicate(ctx->xi1, &cd->corr));
@@ -136,8 +134,8 @@ static void Slack(RollerContactCondensed cd, PetscInt m, const PetscReal lam[], 
 
 /* The LCP  lam >= 0, w = G lam + d >= 0, lam . w = 0 with G symmetric positive definite.
    First the primal-dual active set method (Hintermueller, Ito, Kunisch 2003: a semismooth Newton method on
-   min(lam, w) = 0), warm-started from the last step's active set: it finds the solution of a contact problem in
-   a few iterations, each a dense Cholesky of the active block. PDAS is only guaranteed to terminate for
+   min(lam, w) = 0), warm-started from the nodes on the obstacle at the previous level (c->on_obstacle): it
+   finds the solution of a contact problem in a few iterations, each a dense Cholesky of the active block. PDAS is only guaranteed to terminate for
    M-matrices, so if it has not settled in m + 10 iterations the primal active-set method (Nocedal & Wright,
    Algorithm 16.3, on the bounds lam >= 0) takes over from lam = 0: monotone, finite. On return act marks
    lam > 0. */
@@ -316,7 +314,7 @@ PetscErrorCode RollerContactCondensedSolve(Roller ctx, RollerContact c, Vec b, V
 
     for (PetscInt a = 0; a < m; ++a) {
       cd->d[a]   = cd->gf[c->cand[a]];
-      cd->act[a] = cd->was_active[c->cand[a]];
+      cd->act[a] = c->on_obstacle[c->cand[a]];
       dmax       = PetscMax(dmax, PetscAbsReal(cd->d[a]));
       for (PetscInt b2 = 0; b2 <= a; ++b2) cd->G[a + (size_t)b2 * m] = cd->G[b2 + (size_t)a * m] = NormalEntry(cd->S, n, c->normal, c->cand[a], c->cand[b2]);
     }
@@ -342,12 +340,10 @@ PetscErrorCode RollerContactCondensedSolve(Roller ctx, RollerContact c, Vec b, V
     c->resolves++;
   }
   PetscCall(PetscArrayzero(res->lambda, c->nc));
-  PetscCall(PetscArrayzero(cd->was_active, c->nc));
   for (PetscInt a = 0; a < c->ncand; ++a)
     if (cd->lam[a] > 0.0) {
-      res->lambda[c->cand[a]]     = cd->lam[a];
-      cd->was_active[c->cand[a]] = PETSC_TRUE;
-      any                        = PETSC_TRUE;
+      res->lambda[c->cand[a]] = cd->lam[a];
+      any                     = PETSC_TRUE;
     }
   if (!any) {
     PetscCall(VecCopy(cd->xf, xi));
@@ -368,7 +364,7 @@ PetscErrorCode RollerContactCondensedDestroy(RollerContact c)
   PetscFunctionBeginUser;
   if (!cd) PetscFunctionReturn(0);
   PetscCall(PetscFree(cd->S));
-  PetscCall(PetscFree6(cd->was_active, cd->gf, cd->G, cd->Gff, cd->d, cd->lam));
+  PetscCall(PetscFree5(cd->gf, cd->G, cd->Gff, cd->d, cd->lam));
   PetscCall(PetscFree5(cd->mu, cd->mu2, cd->w, cd->F, cd->act));
   PetscCall(VecDestroy(&cd->xf));
   PetscCall(VecDestroy(&cd->f));

@@ -35,9 +35,9 @@ typedef struct {
   Dataset data;
 } OutputField;
 
-/* The fields written every -output_every steps; an optional one (e.g. a contact pressure) goes at the end,
-   and out->nfields counts those in use: the index and the checks follow the table. */
-enum { FIELD_DISPLACEMENT, FIELD_LAB, FIELD_VELOCITY, FIELD_STRESS, MAX_FIELDS };
+/* The fields written every -output_every steps; an optional one (the contact pressure, with -obstacle) goes
+   at the end, and out->nfields counts those in use: the index and the checks follow the table. */
+enum { FIELD_DISPLACEMENT, FIELD_LAB, FIELD_VELOCITY, FIELD_STRESS, FIELD_CONTACT_PRESSURE, MAX_FIELDS };
 
 struct _n_RollerOutput {
   /* CSV: written to csv_part, renamed to csv_path at the end */
@@ -52,13 +52,14 @@ struct _n_RollerOutput {
   PetscReal  *times; /* t of every written step, the XDMF time values */
   Dataset     vertices, cells;
 
-  /* Output spaces on the same mesh: vdm P1 with 3 components, sdm P1 scalar */
-  DM          vdm, sdm;
+  /* Output spaces on the same mesh: vdm P1 with 3 components, sdm and pdm (contact pressure) P1 scalar */
+  DM          vdm, sdm, pdm;
   Vec         velocity; /* on ctx->dm */
   Vec         position; /* (x, y, 0) at every vertex (vdm) */
   Vec         count;    /* the number of cells around every vertex (sdm) */
   OutputField field[MAX_FIELDS];
   PetscInt    nfields;
+  RollerSeries series; /* R, alpha, energy, ... of every step, to /diagnostics at the end */
 };
 
 /* Projection kernels (DMProjectField evaluates them at the vertices). */
@@ -432,6 +433,11 @@ static PetscErrorCode FieldsCreate(Roller ctx, RollerOutput out)
   PetscCall(FieldCreate(out->vdm, "velocity", &out->field[FIELD_VELOCITY]));
   PetscCall(FieldCreate(out->sdm, "stress_norm", &out->field[FIELD_STRESS]));
   out->nfields = FIELD_STRESS + 1;
+  if (ctx->contact) {
+    PetscCall(OutputSpace(ctx, 1, "contact_pressure", &out->pdm));
+    PetscCall(FieldCreate(out->pdm, "contact_pressure", &out->field[FIELD_CONTACT_PRESSURE]));
+    out->nfields = FIELD_CONTACT_PRESSURE + 1;
+  }
   PetscCall(DMCreateGlobalVector(ctx->dm, &out->velocity));
   PetscCall(DMCreateGlobalVector(out->sdm, &out->count));
   PetscCall(DMCreateGlobalVector(out->vdm, &out->position));
@@ -513,9 +519,12 @@ static PetscErrorCode WriteFields(Roller ctx, RollerOutput out)
   /* |sigma| (SPEC section 4); DMProjectField hands the kernel the constants of the input DS, ctx->dm's */
   PetscCall(ProjectAtVertices(ctx, ctx->xi1, f_stress_norm, ADD_VALUES, out->field[FIELD_STRESS].vec));
   PetscCall(VecPointwiseDivide(out->field[FIELD_STRESS].vec, out->field[FIELD_STRESS].vec, out->count));
+  /* multiplier / tributary length at the Gamma_C vertices (docs/contact.md) */
+  if (out->nfields > FIELD_CONTACT_PRESSURE) PetscCall(RollerContactPressure(ctx, ctx->contact, out->field[FIELD_CONTACT_PRESSURE].vec));
 
   PetscCall(DMSetOutputSequenceNumber(out->vdm, out->written, ctx->time));
   PetscCall(DMSetOutputSequenceNumber(out->sdm, out->written, ctx->time));
+  if (out->pdm) PetscCall(DMSetOutputSequenceNumber(out->pdm, out->written, ctx->time));
   for (PetscInt f = 0; f < out->nfields; ++f) PetscCall(VecView(out->field[f].vec, out->h5));
   if (out->written == out->times_size) {
     out->times_size = PetscMax(64, 2 * out->times_size);
@@ -540,6 +549,7 @@ PetscErrorCode RollerOutputStep(Roller ctx, RollerOutput out)
     /* a killed run keeps every row it printed */
     if (out->csv) PetscCheck(fflush(out->csv) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s: %s", out->csv_part, strerror(errno));
   }
+  if (out->h5) PetscCall(RollerSeriesAppend(ctx, &out->series));
   if (out->h5 && ctx->step % out->every == 0) PetscCall(WriteFields(ctx, out));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
@@ -557,6 +567,7 @@ PetscErrorCode RollerOutputDestroy(Roller ctx, RollerOutput *output)
     PetscCall(RenameFile(ctx->comm, out->csv_part, out->csv_path));
   }
   if (out->h5) {
+    PetscCall(RollerSeriesWrite(ctx, out->series, out->h5));
     PetscCall(PetscViewerDestroy(&out->h5));
     PetscCall(RenameFile(ctx->comm, out->h5_part, out->h5_path));
     PetscCall(XdmfWrite(ctx->comm, out, out->h5_path, out->xmf_path));
@@ -569,7 +580,9 @@ PetscErrorCode RollerOutputDestroy(Roller ctx, RollerOutput *output)
   PetscCall(VecDestroy(&out->position));
   PetscCall(DMDestroy(&out->vdm));
   PetscCall(DMDestroy(&out->sdm));
+  PetscCall(DMDestroy(&out->pdm));
   PetscCall(PetscFree(out->times));
+  PetscCall(RollerSeriesDestroy(&out->series));
   PetscCall(PetscFree(out));
   *output = NULL;
   PetscFunctionReturn(0);

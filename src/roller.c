@@ -14,6 +14,12 @@ PetscErrorCode RollerSetUp(Roller ctx)
   PetscCall(RollerInitialState(ctx));
   if (ctx->restart[0]) PetscCall(RollerCheckpointRead(ctx, ctx->restart));
   if (ctx->obstacle) PetscCall(RollerContactCreate(ctx, &ctx->contact));
+  else {
+    PetscBool help;
+
+    PetscCall(PetscOptionsHasHelp(NULL, &help));
+    if (help) PetscCall(RollerContactHelp(ctx)); /* -help lists every option, the contact ones too */
+  }
   PetscCall(RollerOutputCreate(ctx, &ctx->output));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);

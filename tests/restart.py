@@ -10,6 +10,15 @@ import time
 
 from rollertest import EXE, Checker, run
 
+
+def wait_for(path, rows=0, limit=120.0):
+    """Wait until path exists (with more than `rows` lines): the run is stepping, whatever the load."""
+    start = time.time()
+    while time.time() - start < limit:
+        if os.path.exists(path) and (rows == 0 or sum(1 for _ in open(path)) > rows):
+            return
+        time.sleep(0.1)
+
 c = Checker("restart")
 for scene, extra in (("free", []), ("contact", ["-obstacle", "-obstacle_speed", "0.05", "-obstacle_depth", "0.01", "-damping", "1"])):
     base = ["-mesh_h", "0.05", "-ts_max_time", "4", "-quiet"] + extra
@@ -23,7 +32,7 @@ for scene, extra in (("free", []), ("contact", ["-obstacle", "-obstacle_speed", 
 base = ["-mesh_h", "0.0125", "-ts_max_time", "60", "-quiet"]
 run(base + ["-monitor_csv", "term_full.csv"])
 proc = subprocess.Popen([EXE] + base + ["-checkpoint", "term.h5", "-monitor_csv", "term_cut.csv"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-time.sleep(3.0)
+wait_for("term_cut.csv.part", rows=200)
 proc.send_signal(signal.SIGTERM)
 out, err = proc.communicate()
 c.check(proc.returncode == 0 and "-restart term.h5" in out and os.path.exists("term.h5"), f"SIGTERM: exit {proc.returncode}, message: {out.strip()[:160]}")
@@ -32,7 +41,8 @@ c.check(open("term_full.csv").read() == open("term_cut.csv").read(), "SIGTERM + 
 
 # SIGKILL while checkpointing every step: the latest checkpoint is always complete
 proc = subprocess.Popen([EXE] + base + ["-checkpoint", "kill.h5", "-checkpoint_every", "1"], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
-time.sleep(3.0)
+wait_for("kill.h5")
+time.sleep(0.5)
 proc.kill()
 proc.wait()
 code, out, err = run(base + ["-restart", "kill.h5", "-monitor_csv", "kill.csv"], check=False)

@@ -1,0 +1,84 @@
+"""Shared helpers of the benchmark scripts: run roller once and measure it.
+
+run() starts the executable (ROLLER_EXE, default build/roller), optionally under mpiexec (ROLLER_MPIEXEC),
+with -log_view written to a file, and returns the wall time, the CPU time (user + system of the process
+tree, from wait4), the peak resident memory of the largest process (ru_maxrss), the -log_view stages and
+events, the CSV series (if -monitor_csv was asked for) and stdout.
+
+The development machine has 2 cores and is shared with other jobs: wall time includes waiting for a core,
+CPU time does not (but still includes slowdowns from shared caches and memory bandwidth). Compare runs by
+ratios measured in one invocation of a bench script, and prefer the CPU time column when the load varies.
+"""
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+EXE = os.environ.get("ROLLER_EXE", os.path.join(ROOT, "build", "roller"))
+MPIEXEC = os.environ.get("ROLLER_MPIEXEC", "mpiexec")
+sys.path.insert(0, os.path.join(ROOT, "tests"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from logview import parse  # noqa: E402
+from rollertest import read_csv  # noqa: E402
+
+# Open MPI refuses to run as root without these (harmless otherwise)
+os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
+os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+
+
+def command(args, nproc=1):
+    cmd = [EXE] + [str(a) for a in args]
+    if nproc > 1:
+        cmd = [MPIEXEC, "-n", str(nproc)] + cmd
+    return cmd
+
+
+def run(args, nproc=1, csv=False, logview=True, cwd=ROOT):
+    """Run roller with the options `args`; return a dict (see the module docstring)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        extra = ["-quiet"]
+        lv = os.path.join(tmp, "log.txt")
+        if logview:
+            extra += ["-log_view", ":" + lv]
+        if csv:
+            extra += ["-monitor_csv", os.path.join(tmp, "run.csv")]
+        cmd = command(list(args) + extra, nproc)
+        out = open(os.path.join(tmp, "stdout"), "w+")
+        start = time.perf_counter()
+        proc = subprocess.Popen(cmd, stdout=out, stderr=subprocess.STDOUT, cwd=cwd)
+        _, status, ru = os.wait4(proc.pid, 0)
+        wall = time.perf_counter() - start
+        proc.returncode = os.waitstatus_to_exitcode(status)
+        out.seek(0)
+        text = out.read()
+        out.close()
+        if proc.returncode != 0:
+            sys.stderr.write(text[-4000:])
+            raise RuntimeError(f"{' '.join(cmd)} exited {proc.returncode}")
+        res = {"cmd": " ".join(cmd), "wall": wall,
+               "cpu": ru.ru_utime + ru.ru_stime, "maxrss_mb": ru.ru_maxrss / 1024.0, "stdout": text}
+        if logview:
+            with open(lv) as f:
+                res["logview_text"] = f.read()
+            res.update(parse(res["logview_text"]))
+        if csv:
+            res["series"] = read_csv(os.path.join(tmp, "run.csv"))
+        return res
+
+
+def shell(args, nproc=1):
+    """The command line as a user would type it (relative to the repository, for the docs)."""
+    exe = "build/roller"
+    s = " ".join([exe] + [str(a) for a in args])
+    return f"mpiexec -n {nproc} {s}" if nproc > 1 else s
+
+
+def stage(res, name):
+    return res.get("stages", {}).get(name, 0.0)
+
+
+def event(res, stage_name, ev):
+    """(count, time) of an event inside a stage, (0, 0.0) if absent."""
+    return res.get("events", {}).get((stage_name, ev), (0, 0.0))

@@ -1,0 +1,99 @@
+"""Static contact checks (issue 4; docs/validation.md section 5). Usage: contact_static.py [quick|long]
+
+1. The contact force converges as h shrinks. The compression scene (jobs/compression.yaml: omega = 0,
+   damping 1, the obstacle stops at depth 0.025 at t = 5) is run until the damping has brought it to rest;
+   the static force is the mean of contact_force over the last quarter of the run (the undamped
+   high-frequency ringing averages out; the means of its two halves must agree to 1e-4). On gmsh's meshes
+   for a sequence of h: the successive differences of the force shrink, and the mirror asymmetry (|alpha|
+   and the force centroid along the obstacle, from -contact_monitor) is smaller on the finest mesh than on
+   the coarsest.
+2. Hertz line contact. A small indentation (depth 0.002: half-width a ~ 0.027, a tenth of the wall
+   thickness 0.25) on a mirror-symmetric mesh graded to h_contact at the contact (tests/contact_meshes.py).
+   For a rigid flat pressed into a cylinder of radius R in plane strain, locally (a << R and a << the
+   wall), P = pi a^2 E* / (4 R), E* = E / (1 - nu^2), with the elliptic pressure p0 sqrt(1 - s^2/a^2), whose
+   force-weighted RMS distance from the centre is a/2. With P the measured force and a = 2 s_rms (from
+   -contact_monitor): P / (pi a^2 E* / (4 R)) = 1 within the tolerance on the finest mesh, and the Hertz
+   half-width a_H = sqrt(4 P R / (pi E*)) lies beyond the outermost node in contact by less than 1.5
+   h_contact. The tolerance allows for the finite wall: the deviation grows like (a/wall)^2, measured 0.33%,
+   0.67%, 1.39% at depths 0.001, 0.002, 0.004 (docs/validation.md). A coarser mesh (the second reference
+   is the finest) gives the same P and a to the mesh tolerance.
+quick: P1 on h = 0.05, 0.025, 0.0125 to t = 20; Hertz with P2, h_contact = 0.004 and 0.002, tolerance 2%.
+long:  P1 and P2 on h = 0.05 ... 0.00625 to t = 40; Hertz with P2, h_contact = 0.002 and 0.0005, tolerance
+       1.5%. About 11 minutes on one core."""
+import math
+import os
+import re
+import sys
+
+import numpy as np
+
+from contact_meshes import symmetric_mesh
+from rollertest import SOURCE, Checker, read_csv, run
+
+MODE = sys.argv[1] if len(sys.argv) > 1 else "quick"
+MONITOR = re.compile(r"^contact_monitor: step \d+ t (\S+) nodes (\d+) force (\S+) s_min (\S+) s_max (\S+) s_centroid (\S+) s_rms (\S+)", re.M)
+E, NU, R = 0.1, 0.49, 0.5
+E_STAR = E / (1 - NU**2)
+
+if MODE == "quick":
+    SERIES, T_END = [(1, (0.05, 0.025, 0.0125))], 20.0
+    HERTZ = dict(degree=2, h=0.05, h_contacts=(0.004, 0.002), t_end=10.0, tol=0.02, mesh_tol=0.01)
+else:
+    SERIES, T_END = [(1, (0.05, 0.025, 0.0125, 0.00625)), (2, (0.05, 0.025, 0.0125, 0.00625))], 40.0
+    HERTZ = dict(degree=2, h=0.025, h_contacts=(0.002, 0.0005), t_end=12.0, tol=0.015, mesh_tol=0.002)
+
+
+def static_run(args, t_end, csv):
+    """Run to t_end with -contact_monitor; the static state as means over the last quarter of the run."""
+    _, out, _ = run(args + ["-ts_max_time", t_end, "-quiet", "-contact_monitor", "-monitor_csv", csv])
+    mon = np.array(MONITOR.findall(out), dtype=float)
+    d = read_csv(csv)
+    t = mon[:, 0]
+    w = t > 0.75 * t_end
+    w1, w2 = w & (t <= 0.875 * t_end), t > 0.875 * t_end
+    force = mon[w, 2].mean()
+    return dict(force=force, drift=abs(mon[w1, 2].mean() - mon[w2, 2].mean()) / force,
+                nodes=(int(mon[w, 1].min()), int(mon[w, 1].max())), s_min=mon[-1, 3], s_max=mon[-1, 4],
+                centroid=abs(mon[w, 5].mean()), a=2 * math.sqrt(np.mean(mon[w, 6] ** 2)), alpha=abs(d["alpha"][w].mean()))
+
+
+c = Checker(f"contact_static ({MODE})")
+
+# 1. convergence of the static force of the compression scene
+scene = os.path.join(SOURCE, "jobs", "compression.yaml")
+for degree, hs in SERIES:
+    res = [static_run(["-options_file", scene, "-mesh_h", h, "-degree", degree], T_END, f"p{degree}_h{h}.csv") for h in hs]
+    for h, r in zip(hs, res):
+        print(f"P{degree} h = {h}: force {r['force']:.6e} (halves agree to {r['drift']:.1e}), nodes {r['nodes']}, "
+              f"extent [{r['s_min']:+.5f}, {r['s_max']:+.5f}], 2 s_rms {r['a']:.5f}, |centroid| {r['centroid']:.2e}, |alpha| {r['alpha']:.2e}")
+    c.check(max(r["drift"] for r in res) < 1e-4 and all(r["nodes"][0] == r["nodes"][1] for r in res),
+            f"P{degree}: at rest by t = {T_END:g}: the contact set is fixed and the mean force of the two halves of the last quarter agree to {max(r['drift'] for r in res):.1e} < 1e-4")
+    diffs = [abs(res[i + 1]["force"] - res[i]["force"]) for i in range(len(res) - 1)]
+    ratios = [diffs[i] / diffs[i + 1] for i in range(len(diffs) - 1)]
+    c.check(all(q > 1.5 for q in ratios), f"P{degree}: the force converges: successive differences {', '.join(f'{x:.2e}' for x in diffs)} shrink by {', '.join(f'{q:.2f}' for q in ratios)} (> 1.5)")
+    c.check(res[-1]["centroid"] < res[0]["centroid"] / 5 and res[-1]["alpha"] < res[0]["alpha"] / 2,
+            f"P{degree}: mirror asymmetry shrinks from the coarsest to the finest mesh: |centroid| {res[0]['centroid']:.2e} -> {res[-1]['centroid']:.2e} (by > 5), "
+            f"|alpha| {res[0]['alpha']:.2e} -> {res[-1]['alpha']:.2e} (by > 2)")
+
+# 2. Hertz line contact at a small indentation
+hz, found = HERTZ, []
+for h_contact in hz["h_contacts"]:
+    symmetric_mesh(f"hertz_{h_contact}.msh", hz["h"], h_contact, zone=0.05, grow=0.15)
+    r = static_run(["-dm_plex_filename", f"hertz_{h_contact}.msh", "-degree", hz["degree"], "-obstacle", "-omega", 0,
+                    "-damping", 1, "-obstacle_speed", 0.005, "-obstacle_depth", 0.002], hz["t_end"], f"hertz_{h_contact}.csv")
+    r["a_hertz"] = math.sqrt(4 * r["force"] * R / (math.pi * E_STAR))
+    r["ratio"] = r["force"] / (math.pi * r["a"] ** 2 * E_STAR / (4 * R))
+    found.append(r)
+    print(f"Hertz: P{hz['degree']} h_contact = {h_contact}: P = {r['force']:.6e}, a = 2 s_rms = {r['a']:.6f}, extent "
+          f"[{r['s_min']:+.6f}, {r['s_max']:+.6f}] ({r['nodes'][1]} nodes), a_H(P) = {r['a_hertz']:.6f}, "
+          f"P / P_H(a) = {r['ratio']:.4f}, a / a_H = {r['a'] / r['a_hertz']:.4f}")
+    c.check(r["drift"] < 2e-3, f"Hertz, h_contact = {h_contact}: at rest (the halves of the last quarter agree to {r['drift']:.1e} < 2e-3)")
+r, h_contact = found[-1], hz["h_contacts"][-1]
+c.check(abs(r["ratio"] - 1) < hz["tol"], f"Hertz: P / (pi a^2 E*/(4R)) = {r['ratio']:.4f} within {100 * hz['tol']:.1f}% of 1 (a/wall = {r['a'] / 0.25:.3f})")
+c.check(r["s_max"] <= r["a_hertz"] <= r["s_max"] + 1.5 * h_contact,
+        f"Hertz: a_H = {r['a_hertz']:.5f} lies beyond the outermost node in contact ({r['s_max']:.5f}) by less than 1.5 h_contact = {1.5 * h_contact:.5f}")
+for q, h_q in zip(found[:-1], hz["h_contacts"][:-1]):
+    dP, da = abs(q["force"] / r["force"] - 1), abs(q["a"] / r["a"] - 1)
+    c.check(dP < hz["mesh_tol"] and da < hz["mesh_tol"],
+            f"Hertz: h_contact = {h_q} agrees with the finest mesh ({h_contact}): P to {dP:.1e}, a to {da:.1e} (< {hz['mesh_tol']:.0e})")
+c.close()
