@@ -231,6 +231,19 @@ static PetscErrorCode TaoHessian(Tao tao, Vec x, Mat H, Mat P, void *ptr)
   PetscFunctionReturn(0); /* G is constant and already in H */
 }
 
+/* The TAO solver and its work objects, sized for one number of candidates. */
+static PetscErrorCode TaoWorkDestroy(RollerContactCondensed cd)
+{
+  PetscFunctionBeginUser;
+  PetscCall(TaoDestroy(&cd->tao));
+  PetscCall(MatDestroy(&cd->tG));
+  PetscCall(VecDestroy(&cd->tx));
+  PetscCall(VecDestroy(&cd->tlb));
+  PetscCall(VecDestroy(&cd->tub));
+  PetscCall(VecDestroy(&cd->td));
+  PetscFunctionReturn(0);
+}
+
 /* -contact_condensed_qp tao: the same small problem with a TAO bound-constrained solver (prefix
    contact_condensed_, default gpcg, the TAO method for bound-constrained QPs), from lam = 0. */
 static PetscErrorCode TaoCondensedSolve(Roller ctx, RollerContact c, RollerContactCondensed cd, PetscInt m, PetscReal dmax, PetscReal lam[], PetscInt *its)
@@ -242,12 +255,7 @@ static PetscErrorCode TaoCondensedSolve(Roller ctx, RollerContact c, RollerConta
 
   PetscFunctionBeginUser;
   if (cd->tao_m != m) {
-    PetscCall(TaoDestroy(&cd->tao));
-    PetscCall(MatDestroy(&cd->tG));
-    PetscCall(VecDestroy(&cd->tx));
-    PetscCall(VecDestroy(&cd->tlb));
-    PetscCall(VecDestroy(&cd->tub));
-    PetscCall(VecDestroy(&cd->td));
+    PetscCall(TaoWorkDestroy(cd));
     PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, m, m, NULL, &cd->tG));
     PetscCall(VecCreateSeq(PETSC_COMM_SELF, m, &cd->tx));
     PetscCall(VecDuplicate(cd->tx, &cd->tlb));
@@ -369,12 +377,7 @@ PetscErrorCode RollerContactCondensedDestroy(RollerContact c)
   PetscCall(VecDestroy(&cd->xf));
   PetscCall(VecDestroy(&cd->f));
   PetscCall(VecDestroy(&cd->corr));
-  PetscCall(TaoDestroy(&cd->tao));
-  PetscCall(MatDestroy(&cd->tG));
-  PetscCall(VecDestroy(&cd->tx));
-  PetscCall(VecDestroy(&cd->tlb));
-  PetscCall(VecDestroy(&cd->tub));
-  PetscCall(VecDestroy(&cd->td));
+  PetscCall(TaoWorkDestroy(cd));
   PetscCall(PetscFree(cd));
   c->condensed = NULL;
   PetscFunctionReturn(0);
