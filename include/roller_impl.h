@@ -2,6 +2,7 @@
      options.c        parameters, validation, -help                      (SPEC section 6)
      mesh.c           gmsh annulus (C API or file), labels, validation
      partition.c      METIS partition of the cell graph, distribution
+     geometry.c       curved (isoparametric P2) boundary
      discretization.c PetscFE spaces, Dirichlet boundary, M, K, A, loads   (SPEC sections 2-3)
      kernels.h        pointwise FE kernels
      forcing.c        theta(t), the explicit Euler/centrifugal/Coriolis load (SPEC section 1)
@@ -57,7 +58,9 @@ struct _n_Roller {
   char      mesh_file[PETSC_MAX_PATH_LEN];
   PetscBool partition_view;
   DM        dm;
-  PetscReal boundary_length; /* |Gamma_C| of the discrete (polygonal) outer circle */
+  DM        dm_view;         /* the straight-sided mesh written to HDF5/XDMF (ctx->dm itself unless curved) */
+  PetscBool curved;          /* P2 geometry with Gamma_D, Gamma_C on their circles (geometry.c) */
+  PetscReal boundary_length; /* |Gamma_C| of the discrete (polygonal or curved) outer circle */
 
   /* Discretization */
   PetscInt  degree;      /* Lagrange degree, 1 (the paper) or 2 */
@@ -122,6 +125,7 @@ PETSC_INTERN PetscErrorCode RollerLameFromYoung(PetscReal, PetscReal, PetscReal 
 PETSC_INTERN PetscErrorCode RollerMeshCreate(Roller);
 PETSC_INTERN PetscErrorCode RollerMeshDistribute(Roller);
 PETSC_INTERN PetscErrorCode RollerMeshMeasure(Roller);
+PETSC_INTERN PetscErrorCode RollerGeometrySetUp(Roller); /* geometry.c: curved boundary with -degree 2 */
 
 /* discretization.c */
 PETSC_INTERN PetscErrorCode RollerDiscretizationSetUp(Roller);

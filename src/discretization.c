@@ -192,8 +192,10 @@ PetscErrorCode RollerOperatorsSetUp(Roller ctx)
 }
 
 /* w_R . xi = int_{Gamma_C} xi . x/|x| ds and w_alpha . xi = int_{Gamma_C} xi . x_perp/|x| ds, exact for the
-   FE field on the discrete (polygonal) Gamma_C: 5-point Gauss on every outer edge, basis functions of the
-   edge's trace (P1: two vertices; P2: two vertices and the midpoint). |Gamma_C| comes from RollerMeshMeasure. */
+   FE field on the discrete Gamma_C, and its length |Gamma_C|: 5-point Gauss on every outer edge, parametrized
+   by the P2 map x(s) = x0 phi0 + x1 phi1 + xm phi2 (xm the geometry node of a curved edge, geometry.c, or the
+   midpoint of a straight one), ds = |x'(s)|; basis functions of the edge's trace (P1: two vertices; P2: two
+   vertices and the midpoint). */
 PetscErrorCode RollerComputeBoundaryFunctionals(Roller ctx)
 {
   static const PetscReal qx[5] = {0.046910077030668, 0.230765344947158, 0.5, 0.769234655052842, 0.953089922969332};
@@ -205,16 +207,18 @@ PetscErrorCode RollerComputeBoundaryFunctionals(Roller ctx)
   const PetscScalar *carr;
   PetscScalar       *r, *a;
   const PetscInt    *points;
-  PetscInt           n, eStart, eEnd, pStart, pEnd, nleaves;
+  PetscInt           n, eStart, eEnd, pStart, pEnd, csStart, csEnd, nleaves;
   const PetscInt    *leaves;
   PetscBool         *ghost;
   PetscSF            sf;
+  PetscReal          length = 0.0;
 
   PetscFunctionBeginUser;
   PetscCall(DMGetLabel(ctx->dm, "outer", &label));
   PetscCall(DMGetLocalSection(ctx->dm, &section));
   PetscCall(DMGetCoordinatesLocal(ctx->dm, &clocal));
   PetscCall(DMGetCoordinateSection(ctx->dm, &csection));
+  PetscCall(PetscSectionGetChart(csection, &csStart, &csEnd));
   PetscCall(DMPlexGetHeightStratum(ctx->dm, 1, &eStart, &eEnd));
   PetscCall(DMGetPointSF(ctx->dm, &sf));
   PetscCall(PetscSFGetGraph(sf, NULL, &nleaves, &leaves, NULL));
@@ -233,51 +237,63 @@ PetscErrorCode RollerComputeBoundaryFunctionals(Roller ctx)
   if (is) PetscCall(ISGetLocalSize(is, &n));
   if (is) PetscCall(ISGetIndices(is, &points));
   for (PetscInt i = 0; i < n; ++i) {
-    const PetscInt e = points[i];
+    const PetscInt  e = points[i];
     const PetscInt *cone;
-    PetscInt        off[3], ndof, coff0, coff1;
-    PetscReal       x0[2], x1[2], len;
+    PetscInt        off[3], ndof, coff[3], cdof;
+    PetscReal       X[3][2]; /* x0, x1, xm */
 
     if (e < eStart || e >= eEnd) continue;
     if (ghost[e - pStart]) continue; /* its owner counts it */
     PetscCall(DMPlexGetCone(ctx->dm, e, &cone));
-    PetscCall(PetscSectionGetOffset(csection, cone[0], &coff0));
-    PetscCall(PetscSectionGetOffset(csection, cone[1], &coff1));
+    PetscCall(PetscSectionGetOffset(csection, cone[0], &coff[0]));
+    PetscCall(PetscSectionGetOffset(csection, cone[1], &coff[1]));
+    cdof = 0; /* a P1 coordinate section has no chart beyond the vertices */
+    if (e >= csStart && e < csEnd) PetscCall(PetscSectionGetDof(csection, e, &cdof));
+    if (cdof) PetscCall(PetscSectionGetOffset(csection, e, &coff[2]));
     for (PetscInt d = 0; d < 2; ++d) {
-      x0[d] = PetscRealPart(carr[coff0 + d]);
-      x1[d] = PetscRealPart(carr[coff1 + d]);
+      X[0][d] = PetscRealPart(carr[coff[0] + d]);
+      X[1][d] = PetscRealPart(carr[coff[1] + d]);
+      X[2][d] = cdof ? PetscRealPart(carr[coff[2] + d]) : 0.5 * (X[0][d] + X[1][d]);
     }
-    len = PetscSqrtReal(PetscSqr(x1[0] - x0[0]) + PetscSqr(x1[1] - x0[1]));
     PetscCall(PetscSectionGetOffset(section, cone[0], &off[0]));
     PetscCall(PetscSectionGetOffset(section, cone[1], &off[1]));
     PetscCall(PetscSectionGetOffset(section, e, &off[2]));
     PetscCall(PetscSectionGetDof(section, e, &ndof));
     for (PetscInt q = 0; q < 5; ++q) {
-      const PetscReal s = qx[q], x[2] = {x0[0] + s * (x1[0] - x0[0]), x0[1] + s * (x1[1] - x0[1])};
-      const PetscReal rad = PetscSqrtReal(x[0] * x[0] + x[1] * x[1]);
-      const PetscReal er[2] = {x[0] / rad, x[1] / rad}, ep[2] = {-x[1] / rad, x[0] / rad};
-      PetscReal       phi[3];
+      const PetscReal s = qx[q], g[3] = {(1.0 - s) * (1.0 - 2.0 * s), s * (2.0 * s - 1.0), 4.0 * s * (1.0 - s)};
+      const PetscReal dg[3] = {4.0 * s - 3.0, 4.0 * s - 1.0, 4.0 - 8.0 * s};
+      PetscReal       x[2], dx[2], rad, ds, er[2], ep[2], phi[3];
       PetscInt        nb = 2;
 
+      for (PetscInt d = 0; d < 2; ++d) {
+        x[d]  = g[0] * X[0][d] + g[1] * X[1][d] + g[2] * X[2][d];
+        dx[d] = dg[0] * X[0][d] + dg[1] * X[1][d] + dg[2] * X[2][d];
+      }
+      rad   = PetscSqrtReal(x[0] * x[0] + x[1] * x[1]);
+      ds    = qw[q] * PetscSqrtReal(dx[0] * dx[0] + dx[1] * dx[1]);
+      er[0] = x[0] / rad;
+      er[1] = x[1] / rad;
+      ep[0] = -er[1];
+      ep[1] = er[0];
+      length += ds;
       if (ndof == 0) {
         phi[0] = 1.0 - s;
         phi[1] = s;
       } else {
-        phi[0] = (1.0 - s) * (1.0 - 2.0 * s);
-        phi[1] = s * (2.0 * s - 1.0);
-        phi[2] = 4.0 * s * (1.0 - s);
-        nb     = 3;
+        for (PetscInt b = 0; b < 3; ++b) phi[b] = g[b];
+        nb = 3;
       }
       for (PetscInt b = 0; b < nb; ++b)
         for (PetscInt c = 0; c < 2; ++c) {
-          r[off[b] + c] += qw[q] * len * phi[b] * er[c];
-          a[off[b] + c] += qw[q] * len * phi[b] * ep[c];
+          r[off[b] + c] += ds * phi[b] * er[c];
+          a[off[b] + c] += ds * phi[b] * ep[c];
         }
     }
   }
   if (is) PetscCall(ISRestoreIndices(is, &points));
   PetscCall(ISDestroy(&is));
   PetscCall(PetscFree(ghost));
+  PetscCall(MPIU_Allreduce(&length, &ctx->boundary_length, 1, MPIU_REAL, MPI_SUM, ctx->comm));
   PetscCall(VecRestoreArrayRead(clocal, &carr));
   PetscCall(VecRestoreArray(wR, &r));
   PetscCall(VecRestoreArray(wA, &a));

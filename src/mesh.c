@@ -296,8 +296,8 @@ static PetscErrorCode RollerMeshOwnedMask(DM dm, PetscBool **owned)
   PetscFunctionReturn(0);
 }
 
-/* Global counts and measures of the distributed mesh, each point counted once (by its owner). Sets
-   ctx->boundary_length = |Gamma_C| of the polygonal outer circle; -mesh_view_info prints everything. */
+/* Global counts and measures of the distributed (straight-sided) mesh, each point counted once (by its
+   owner); -mesh_view_info prints them. */
 PetscErrorCode RollerMeshMeasure(Roller ctx)
 {
   DM        dm = ctx->dm;
@@ -340,7 +340,6 @@ PetscErrorCode RollerMeshMeasure(Roller ctx)
   PetscCall(PetscFree(owned));
   PetscCall(MPIU_Allreduce(counts, counts_global, 4, MPIU_INT, MPI_SUM, ctx->comm));
   PetscCall(MPIU_Allreduce(sums, sums_global, 3, MPIU_REAL, MPI_SUM, ctx->comm));
-  ctx->boundary_length = sums_global[2];
   if (view)
     PetscCall(PetscPrintf(ctx->comm, "mesh: vertices %" PetscInt_FMT " cells %" PetscInt_FMT " inner_vertices %" PetscInt_FMT " outer_vertices %" PetscInt_FMT " area %.15g inner_length %.15g outer_length %.15g\n", counts_global[0], counts_global[1], counts_global[2], counts_global[3], (double)sums_global[0], (double)sums_global[1], (double)sums_global[2]));
   PetscFunctionReturn(0);

@@ -62,6 +62,8 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
 
   PetscOptionsBegin(ctx->comm, NULL, "Roller: discretization and material", NULL);
   PetscCall(PetscOptionsInt("-degree", "Lagrange degree of the displacement (1 = the paper, 2)", NULL, ctx->degree, &ctx->degree, NULL));
+  ctx->curved = (PetscBool)(ctx->degree == 2);
+  PetscCall(PetscOptionsBool("-mesh_curved", "Curved (isoparametric P2) boundary: mid-edge nodes of Gamma_D, Gamma_C on the circles (default: on with -degree 2)", NULL, ctx->curved, &ctx->curved, NULL));
   PetscCall(PetscOptionsEnum("-coriolis_velocity", "Coriolis velocity: backward (the paper, explicit, 1st order), extrapolated (explicit, 2nd order), centered (implicit, 2nd order, stable)", "RollerCoriolisVelocity", RollerCoriolisVelocities, (PetscEnum)ctx->coriolis, (PetscEnum *)&ctx->coriolis, NULL));
   PetscCall(PetscOptionsBool("-clamp_outer", "Also clamp Gamma_C (xi = 0 on the whole boundary, Theorem 1)", NULL, ctx->clamp_outer, &ctx->clamp_outer, NULL));
   PetscCall(PetscOptionsReal("-young", "Young's modulus E", NULL, ctx->young, &ctx->young, NULL));
@@ -101,6 +103,7 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCheck(ctx->r_inner > 0 && ctx->r_inner < ctx->r_outer, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-r_inner %g and -r_outer %g must satisfy 0 < r_inner < r_outer", (double)ctx->r_inner, (double)ctx->r_outer);
   PetscCheck(ctx->mesh_file[0] || ctx->mesh_h < ctx->r_outer - ctx->r_inner, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_h %g must be smaller than the annulus width r_outer - r_inner = %g", (double)ctx->mesh_h, (double)(ctx->r_outer - ctx->r_inner));
   PetscCheck(ctx->degree == 1 || ctx->degree == 2, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-degree %" PetscInt_FMT " must be 1 or 2", ctx->degree);
+  PetscCheck(!ctx->curved || ctx->degree == 2, ctx->comm, PETSC_ERR_ARG_INCOMP, "-mesh_curved needs -degree 2 (a P1 field cannot see a curved edge), got -degree %" PetscInt_FMT, ctx->degree);
   PetscCheck(ctx->young > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-young %g must be > 0", (double)ctx->young);
   PetscCheck(ctx->poisson > -1 && ctx->poisson < 0.5, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-poisson %g must lie in (-1, 0.5)", (double)ctx->poisson);
   PetscCheck(ctx->density > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-density %g must be > 0", (double)ctx->density);

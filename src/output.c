@@ -419,7 +419,7 @@ static PetscErrorCode FieldsCreate(Roller ctx, RollerOutput out)
   PetscCall(RemoveStale(ctx->comm, out->xmf_part)); /* would index the new file before it has a step */
   PetscCall(CheckWritable(ctx->comm, "-output", out->h5_part));
   PetscCall(PetscViewerHDF5Open(ctx->comm, out->h5_part, FILE_MODE_WRITE, &out->h5));
-  PetscCall(DMView(ctx->dm, out->h5));
+  PetscCall(DMView(ctx->dm_view, out->h5)); /* straight-sided: XDMF draws linear triangles */
   PetscCall(WriteParameters(ctx, out->h5));
   PetscCall(PetscViewerHDF5HasDataset(out->h5, "/viz/geometry/vertices", &has));
   PetscCall(DatasetQuery(out->h5, has ? "/viz/geometry/vertices" : "/geometry/vertices", &out->vertices));

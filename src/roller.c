@@ -7,6 +7,7 @@ PetscErrorCode RollerSetUp(Roller ctx)
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_SETUP]));
   PetscCall(RollerMeshCreate(ctx));
   PetscCall(RollerMeshDistribute(ctx));
+  PetscCall(RollerGeometrySetUp(ctx));
   PetscCall(RollerDiscretizationSetUp(ctx));
   PetscCall(RollerOperatorsSetUp(ctx));
   PetscCall(RollerComputeBoundaryFunctionals(ctx));
@@ -52,6 +53,7 @@ PetscErrorCode RollerDestroy(Roller *roller)
   PetscCall(VecDestroy(&ctx->work));
   PetscCall(VecDestroy(&ctx->w_R));
   PetscCall(VecDestroy(&ctx->w_alpha));
+  PetscCall(DMDestroy(&ctx->dm_view));
   PetscCall(DMDestroy(&ctx->dm));
   PetscCall(PetscFree(ctx));
   *roller = NULL;

@@ -6,3 +6,4 @@ roller_test(mesh_file_msh41 mesh.py LABELS quick ARGS file meshes/annulus-h0.05-
 roller_test(mesh_gmsh mesh.py LABELS quick ARGS gmsh TIMEOUT 60)
 roller_test(mesh_bad mesh.py LABELS quick ARGS bad TIMEOUT 120)
 roller_test(mesh_mpi mesh.py LABELS mpi ARGS mpi PROCESSORS 2 TIMEOUT 120)
+roller_test(geometry_curved geometry_curved.py LABELS quick)
