@@ -2,7 +2,7 @@
 
 run() starts the executable (ROLLER_EXE, default build/roller), optionally under mpiexec (ROLLER_MPIEXEC),
 with -log_view written to a file, and returns the wall time, the CPU time (user + system of the process
-tree, from wait4), the peak resident memory of the largest process (ru_maxrss), the -log_view stages and
+tree, from wait4), the peak resident memory of the largest process (/usr/bin/time %M), the -log_view stages and
 events, the CSV series (if -monitor_csv was asked for) and stdout.
 
 The development machine has 2 cores and is shared with other jobs: wall time includes waiting for a core,
@@ -46,8 +46,12 @@ def run(args, nproc=1, csv=False, logview=True, cwd=ROOT):
             extra += ["-monitor_csv", os.path.join(tmp, "run.csv")]
         cmd = command(list(args) + extra, nproc)
         out = open(os.path.join(tmp, "stdout"), "w+")
+        # Peak memory through /usr/bin/time: the rusage of a child forked from this (large) Python process
+        # counts the pages it shared with it before exec, so wait4's ru_maxrss would report Python's size.
+        rss = os.path.join(tmp, "maxrss")
+        timed = (["/usr/bin/time", "-f", "%M", "-o", rss] if os.access("/usr/bin/time", os.X_OK) else []) + cmd
         start = time.perf_counter()
-        proc = subprocess.Popen(cmd, stdout=out, stderr=subprocess.STDOUT, cwd=cwd)
+        proc = subprocess.Popen(timed, stdout=out, stderr=subprocess.STDOUT, cwd=cwd)
         _, status, ru = os.wait4(proc.pid, 0)
         wall = time.perf_counter() - start
         proc.returncode = os.waitstatus_to_exitcode(status)
@@ -57,8 +61,12 @@ def run(args, nproc=1, csv=False, logview=True, cwd=ROOT):
         if proc.returncode != 0:
             sys.stderr.write(text[-4000:])
             raise RuntimeError(f"{' '.join(cmd)} exited {proc.returncode}")
+        maxrss = float("nan")
+        if os.path.exists(rss):
+            with open(rss) as f:
+                maxrss = float(f.read().split()[-1]) / 1024.0
         res = {"cmd": " ".join(cmd), "wall": wall,
-               "cpu": ru.ru_utime + ru.ru_stime, "maxrss_mb": ru.ru_maxrss / 1024.0, "stdout": text}
+               "cpu": ru.ru_utime + ru.ru_stime, "maxrss_mb": maxrss, "stdout": text}
         if logview:
             with open(lv) as f:
                 res["logview_text"] = f.read()

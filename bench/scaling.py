@@ -75,7 +75,7 @@ def main():
     V, C, Vi = next(iter(best.values()))["mesh"]
     dofs = 2 * (V - Vi) if opt.degree == "1" else 2 * (2 * V + C - 2 * Vi)
     print(f"P{opt.degree}, h = {opt.mesh_h}: {V} vertices, {C} cells, {dofs} dofs; {opt.steps} steps; min over {opt.rounds} rounds; "
-          f"2-core machine shared with another job\n")
+          f"2-core machine: a 2-rank run uses both cores\n")
     print("| scene | ranks | partitioner | edge cut | cells min/max | step solver | set-up [s] | ms / step | speed-up per step (vs 1 rank, same solver family) | peak RSS / rank [MB] |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     for (scene, n, pname, sname), b in best.items():

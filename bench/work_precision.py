@@ -46,7 +46,22 @@ def cfg(degree, h, dt, coriolis="backward", extra=(), label=None):
     extra = list(extra)
     if label is None:
         label = f"P{degree} h={h:g} dt={dt:g} {coriolis}" + (" " + " ".join(extra) if extra else "")
+        if degree == 2:
+            label += ", straight boundary" if "-mesh_curved" in extra else ", curved boundary"
     return dict(label=label, degree=degree, h=h, dt=dt, coriolis=coriolis, extra=extra)
+
+
+def boundary(r):
+    """How a P2 run's mesh meets the circles: curved (the default), straight, area-preserving (straight edges
+    on enlarged circles); '' for P1."""
+    for kind in ("area-preserving", "straight", "curved"):
+        if kind in r["label"]:
+            return kind
+    return "curved" if str(r["degree"]) == "2" else ""
+
+
+LINESTYLE = {"straight": "-", "area-preserving": "--", "curved": "-."}
+MARKER = {"straight": "s", "area-preserving": "D", "curved": "^"}
 
 
 def configs(scene, name):
@@ -73,16 +88,17 @@ def configs(scene, name):
                     cfg(1, 0.00625, 0.003125, "extrapolated"), cfg(1, 0.00625, 0.0015625, "extrapolated")]
         elif name == "curved":
             # P2 with its default curved (isoparametric) boundary, small steps: the cheapest 1 % runs
-            for h, dts in ((0.05, (0.0025,)), (0.025, (0.003125, 0.0025, 0.00125)), (0.0125, (0.0025,))):
+            for h, dts in ((0.05, (0.0025,)), (0.04, (0.0025,)), (0.035, (0.0025,)), (0.03, (0.0025,)),
+                           (0.025, (0.003125, 0.0025, 0.00125)), (0.0125, (0.0025,))):
                 for dt in dts:
-                    out.append(cfg(2, h, dt, "extrapolated", label=f"P2 h={h:g} dt={dt:g} extrapolated, curved boundary"))
+                    out.append(cfg(2, h, dt, "extrapolated"))
         elif name == "geometry":
-            # The same P2 runs on a mesh whose boundary polygons enclose the right area (vertices on circles of
-            # radius r / sqrt(sin(t)/t), t = 2 pi / N): measures what the straight-sided boundary costs
-            # (docs/performance.md); a curved (isoparametric) boundary is the proper fix.
+            # P2 runs with straight edges on a mesh whose boundary polygons enclose the right area (vertices on
+            # circles of radius r / sqrt(sin(t)/t), t = 2 pi / N): what the straight-sided boundary costs, before
+            # the curved boundary (src/geometry.c) fixed it (docs/performance.md).
             for h, dts in ((0.025, (0.003125, 0.0025, 0.00125)), (0.0125, (0.0025, 0.00125)), (0.05, (0.0025,))):
                 for dt in dts:
-                    out.append(cfg(2, h, dt, "extrapolated", area_preserving(h), label=f"P2 h={h:g} dt={dt:g} extrapolated, area-preserving boundary"))
+                    out.append(cfg(2, h, dt, "extrapolated", area_preserving(h) + ["-mesh_curved", "0"], label=f"P2 h={h:g} dt={dt:g} extrapolated, area-preserving boundary"))
         else:
             raise SystemExit(f"unknown set {name} for scene free")
     else:
@@ -307,15 +323,15 @@ def plot(rows, scene, path, xkey="cpu_s"):
         for r in rows:
             if r["label"].startswith(("paper", "default", "reference")):
                 continue
-            groups.setdefault((r["degree"], num(r, "h"), r["coriolis"], "area-preserving" in r["label"]), []).append(r)
-        for (deg, h, cor, ap), rs in groups.items():
+            groups.setdefault((r["degree"], num(r, "h"), r["coriolis"], boundary(r)), []).append(r)
+        for (deg, h, cor, kind), rs in groups.items():
             rs = sorted(rs, key=lambda r: -num(r, "dt"))
             x = [num(r, xkey) for r in rs]
             y = [err(r) for r in rs]
-            ax.loglog(x, y, ls=("--" if ap else "-") if deg == "2" else ":", lw=0.8, color=hcolor[h], alpha=0.6)
+            ax.loglog(x, y, ls=LINESTYLE.get(kind, ":"), lw=0.8, color=hcolor[h], alpha=0.6)
             for r, xi, yi in zip(rs, x, y):
                 dth = num(r, "dt") / num(r, "h")
-                ax.loglog(xi, yi, marker=("D" if "area-preserving" in r["label"] else "s") if deg == "2" else "o", fillstyle=corfill.get(cor, "full"), color=hcolor[h],
+                ax.loglog(xi, yi, marker=MARKER.get(kind, "o"), fillstyle=corfill.get(cor, "full"), color=hcolor[h],
                           ms=8 if abs(dth - 1) < 1e-9 else 6, mec="k" if abs(dth - 1) < 1e-9 else hcolor[h], ls="")
         for r in rows:
             if r["label"].startswith("paper"):
@@ -325,24 +341,24 @@ def plot(rows, scene, path, xkey="cpu_s"):
                 ax.loglog(num(r, xkey), err(r), "P", color="orange", ms=11, mec="k")
         ax.axhline(0.01, color="gray", ls="--", lw=1)
         if q == "both" or (scene == "rolling" and q == "alpha"):
-            # the cheapest runs below 1 % in R and alpha (and the averaged force): standard and area-preserving meshes
+            # the cheapest run below 1 % in R and alpha (and the averaged force)
             def ok(r):
                 qq = ("R", "alpha") if scene == "free" else ("R", "alpha", "force_avg")
                 return all(num(r, "err_" + k) < 0.01 for k in qq)
-            for kind in (False, True):
-                cand = [r for r in rows if ok(r) and ("area-preserving" in r["label"]) == kind and not r["label"].startswith(("paper", "default", "reference"))]
-                if cand:
-                    r = min(cand, key=lambda r: num(r, xkey))
-                    ax.annotate(r["label"].replace(" extrapolated", "").replace(", area-preserving boundary", ",\narea-preserving"),
-                                (num(r, xkey), err(r)), xytext=(-40, -34 if kind else 26), textcoords="offset points", fontsize=7,
-                                ha="right", arrowprops=dict(arrowstyle="-", lw=0.6))
+            cand = [r for r in rows if ok(r) and not r["label"].startswith(("paper", "default", "reference"))]
+            if cand:
+                r = min(cand, key=lambda r: num(r, xkey))
+                ax.annotate(r["label"].replace(" extrapolated", "").replace(", ", ",\n"),
+                            (num(r, xkey), err(r)), xytext=(-40, 26), textcoords="offset points", fontsize=7,
+                            ha="right", arrowprops=dict(arrowstyle="-", lw=0.6))
         ax.set_xlabel("wall time of the run [s]" if xkey == "wall_s" else "CPU time of the run [s] (serial: = wall time on an idle core)")
         ax.set_title(f"max error in {qname}")
         ax.grid(True, which="both", alpha=0.3)
     axes[0].set_ylabel("max over t of |q - q_ref| / max |q_ref|")
-    handles = [Line2D([], [], marker="o", ls=":", color="gray", label="P1"), Line2D([], [], marker="s", ls="-", color="gray", label="P2")]
-    if any("area-preserving" in r["label"] for r in rows):
-        handles.append(Line2D([], [], marker="D", ls="--", color="gray", label="P2, area-preserving boundary"))
+    handles = [Line2D([], [], marker="o", ls=":", color="gray", label="P1")]
+    for kind in ("curved", "straight", "area-preserving"):
+        if any(boundary(r) == kind for r in rows):
+            handles.append(Line2D([], [], marker=MARKER[kind], ls=LINESTYLE[kind], color="gray", label=f"P2, {kind} boundary"))
     handles += [Line2D([], [], marker="o", ls="", color=hcolor[h], label=f"h = {h:g}") for h in hs]
     handles += [Line2D([], [], marker="o", ls="", color="gray", fillstyle=corfill[c], label=f"Coriolis {c}") for c in corfill if any(r["coriolis"] == c for r in rows)]
     handles += [Line2D([], [], marker="o", ls="", color="gray", mec="k", ms=8, label="dt = h (black edge)"),

@@ -47,3 +47,6 @@ for title, rows in sections:
         text = text.replace("|", "&#124;")
         print(f"| `{name}` | {text} | {default if default else '(none)'} |")
     print()
+print("Output files are written as `F.part` (`F.h5.part`, `F.part.xmf`, `F.csv.part`) and renamed at the successful")
+print("end; `-output F.h5` also writes the ParaView index `F.xmf` and the per-step diagnostics under `/diagnostics`")
+print("(docs/output.md).")
