@@ -125,6 +125,7 @@ PETSC_INTERN PetscErrorCode RollerLameFromYoung(PetscReal, PetscReal, PetscReal 
 PETSC_INTERN PetscErrorCode RollerMeshCreate(Roller);
 PETSC_INTERN PetscErrorCode RollerMeshDistribute(Roller);
 PETSC_INTERN PetscErrorCode RollerMeshMeasure(Roller);
+PETSC_INTERN PetscErrorCode RollerMeshOwnedMask(DM, PetscBool **); /* PETSC_TRUE at the points this rank owns */
 PETSC_INTERN PetscErrorCode RollerGeometrySetUp(Roller); /* geometry.c: curved boundary with -degree 2 */
 
 /* discretization.c */

@@ -207,10 +207,8 @@ PetscErrorCode RollerComputeBoundaryFunctionals(Roller ctx)
   const PetscScalar *carr;
   PetscScalar       *r, *a;
   const PetscInt    *points;
-  PetscInt           n, eStart, eEnd, pStart, pEnd, csStart, csEnd, nleaves;
-  const PetscInt    *leaves;
-  PetscBool         *ghost;
-  PetscSF            sf;
+  PetscInt           n, eStart, eEnd, pStart, pEnd, csStart, csEnd;
+  PetscBool         *owned;
   PetscReal          length = 0.0;
 
   PetscFunctionBeginUser;
@@ -220,11 +218,8 @@ PetscErrorCode RollerComputeBoundaryFunctionals(Roller ctx)
   PetscCall(DMGetCoordinateSection(ctx->dm, &csection));
   PetscCall(PetscSectionGetChart(csection, &csStart, &csEnd));
   PetscCall(DMPlexGetHeightStratum(ctx->dm, 1, &eStart, &eEnd));
-  PetscCall(DMGetPointSF(ctx->dm, &sf));
-  PetscCall(PetscSFGetGraph(sf, NULL, &nleaves, &leaves, NULL));
   PetscCall(DMPlexGetChart(ctx->dm, &pStart, &pEnd));
-  PetscCall(PetscCalloc1(pEnd - pStart, &ghost));
-  for (PetscInt l = 0; l < PetscMax(nleaves, 0); ++l) ghost[(leaves ? leaves[l] : l) - pStart] = PETSC_TRUE;
+  PetscCall(RollerMeshOwnedMask(ctx->dm, &owned));
   PetscCall(DMGetLocalVector(ctx->dm, &wR));
   PetscCall(DMGetLocalVector(ctx->dm, &wA));
   PetscCall(VecZeroEntries(wR));
@@ -243,7 +238,7 @@ PetscErrorCode RollerComputeBoundaryFunctionals(Roller ctx)
     PetscReal       X[3][2]; /* x0, x1, xm */
 
     if (e < eStart || e >= eEnd) continue;
-    if (ghost[e - pStart]) continue; /* its owner counts it */
+    if (!owned[e - pStart]) continue; /* its owner counts it */
     PetscCall(DMPlexGetCone(ctx->dm, e, &cone));
     PetscCall(PetscSectionGetOffset(csection, cone[0], &coff[0]));
     PetscCall(PetscSectionGetOffset(csection, cone[1], &coff[1]));
@@ -292,7 +287,7 @@ PetscErrorCode RollerComputeBoundaryFunctionals(Roller ctx)
   }
   if (is) PetscCall(ISRestoreIndices(is, &points));
   PetscCall(ISDestroy(&is));
-  PetscCall(PetscFree(ghost));
+  PetscCall(PetscFree(owned));
   PetscCall(MPIU_Allreduce(&length, &ctx->boundary_length, 1, MPIU_REAL, MPI_SUM, ctx->comm));
   PetscCall(VecRestoreArrayRead(clocal, &carr));
   PetscCall(VecRestoreArray(wR, &r));

@@ -54,10 +54,11 @@ PetscErrorCode RollerGeometrySetUp(Roller ctx)
   PetscSection section;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscObjectReference((PetscObject)ctx->dm));
-  ctx->dm_view = ctx->dm;
-  if (!ctx->curved) PetscFunctionReturn(0);
-  PetscCall(DMDestroy(&ctx->dm_view));
+  if (!ctx->curved) {
+    PetscCall(PetscObjectReference((PetscObject)ctx->dm));
+    ctx->dm_view = ctx->dm;
+    PetscFunctionReturn(0);
+  }
   PetscCall(DMClone(ctx->dm, &ctx->dm_view)); /* keeps the straight-sided coordinate DM */
   PetscCall(DMPlexCreateCoordinateSpace(ctx->dm, 2, NULL));
   PetscCall(DMGetCoordinateDM(ctx->dm, &cdm));

@@ -279,8 +279,9 @@ PetscErrorCode RollerMeshCreate(Roller ctx)
   PetscFunctionReturn(0);
 }
 
-/* Owned-point test through the point SF: a point that is a leaf belongs to another rank. */
-static PetscErrorCode RollerMeshOwnedMask(DM dm, PetscBool **owned)
+/* Owned-point test through the point SF: a point that is a leaf belongs to another rank. The mask is indexed
+   by p - pStart of the chart; free it with PetscFree. */
+PetscErrorCode RollerMeshOwnedMask(DM dm, PetscBool **owned)
 {
   PetscSF         sf;
   PetscInt        p_start, p_end, n_leaves;
