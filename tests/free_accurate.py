@@ -6,9 +6,7 @@ max error relative to the reference's max (docs/performance.md: 0.87 % and 0.71 
 import os
 import subprocess
 
-import numpy as np
-
-from rollertest import SOURCE, Checker, read_csv, run
+from rollertest import SOURCE, Checker, read_csv, rel_max_error, run
 
 c = Checker("free_accurate")
 T = 20.0
@@ -22,7 +20,7 @@ for curved in (1, 0):
     run(["-options_file", scene, "-mesh_curved", curved, "-quiet", "-monitor_csv", name])
     d = read_csv(name)
     c.check(abs(d["t"][-1] - T) < 1e-9, f"curved={curved}: the run reaches t = {d['t'][-1]:g}")
-    err[curved] = [np.abs(d[q] - np.interp(d["t"], ref["t"], ref[q])).max() / np.abs(ref[q]).max() for q in ("R", "alpha")]
+    err[curved] = [rel_max_error(d, ref, q) for q in ("R", "alpha")]
     print(f"-mesh_curved {curved}: max error R {err[curved][0]:.3%}, alpha {err[curved][1]:.3%}")
 c.check(max(err[1]) < 0.01, f"free_accurate.yaml: R {err[1][0]:.2%}, alpha {err[1][1]:.2%} < 1 % over 0 <= t <= {T:g}")
 c.check(err[0][0] > 0.01, f"the same run with straight edges misses 1 % in R ({err[0][0]:.2%})")

@@ -32,6 +32,11 @@ def read_csv(path):
     return {name: np.array([float(r[i]) for r in body]) for i, name in enumerate(head)}
 
 
+def rel_max_error(d, ref, q):
+    """max over d's times of |d[q] - ref[q]| (ref interpolated in t), relative to max |ref[q]|."""
+    return float(np.abs(d[q] - np.interp(d["t"], ref["t"], ref[q])).max() / np.abs(ref[q]).max())
+
+
 def slope(hs, errs):
     """Least-squares slope of log(err) against log(h)."""
     return float(np.polyfit(np.log(hs), np.log(errs), 1)[0])
