@@ -55,6 +55,7 @@ struct _n_Roller {
 
   /* Geometry and mesh */
   PetscReal r_inner, r_outer, mesh_h;
+  PetscBool mesh_h_set; /* -mesh_h given; otherwise chosen from -ts_phase_error (accuracy.c) */
   char      mesh_file[PETSC_MAX_PATH_LEN];
   PetscBool partition_view;
   DM        dm;
@@ -79,6 +80,9 @@ struct _n_Roller {
 
   /* Time */
   PetscReal dt, max_time;
+  PetscBool dt_set;              /* -ts_dt given; otherwise chosen from -ts_phase_error (accuracy.c) */
+  PetscReal phase_error;         /* -ts_phase_error: the accuracy target that sets the default dt and h */
+  PetscBool discretization_view; /* print the chosen discretization and why */
   PetscInt  max_steps;
   PetscBool quiet;
 
@@ -153,6 +157,11 @@ PETSC_INTERN PetscErrorCode RollerContactSolve(Roller, RollerContact, PetscReal,
 PETSC_INTERN PetscErrorCode RollerContactInfo(Roller, RollerContact, Vec, PetscReal, RollerStepInfo *);
 PETSC_INTERN PetscErrorCode RollerContactPressure(Roller, RollerContact, Vec); /* into a P1 scalar Vec on the mesh */
 PETSC_INTERN PetscErrorCode RollerContactDestroy(RollerContact *);
+
+/* accuracy.c: the default -mesh_h and -ts_dt from the accuracy target -ts_phase_error */
+PETSC_INTERN PetscErrorCode RollerModeFrequencies(Roller, PetscReal *, PetscReal *);
+PETSC_INTERN PetscErrorCode RollerChooseMeshSize(Roller);
+PETSC_INTERN PetscErrorCode RollerChooseTimeStep(Roller);
 
 /* stability.c */
 PETSC_INTERN PetscErrorCode RollerCheckRotation(Roller);

@@ -7,6 +7,7 @@ PetscErrorCode RollerSetUp(Roller ctx)
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_SETUP]));
   PetscCall(RollerMeshCreate(ctx));
   PetscCall(RollerMeshDistribute(ctx));
+  PetscCall(RollerChooseTimeStep(ctx));
   PetscCall(RollerGeometrySetUp(ctx));
   PetscCall(RollerDiscretizationSetUp(ctx));
   PetscCall(RollerOperatorsSetUp(ctx));
