@@ -1,13 +1,13 @@
 #!/usr/bin/python3
-"""Reference solution for the rotating annulus WITHOUT obstacle (SPEC sections 1, 2, 4, 5).
+"""Reference solution for the rotating annulus WITHOUT obstacle (docs/model.md sections 1, 2, 4, 5).
 
-For an axisymmetric displacement xi = u(r,t) e_r + v(r,t) e_phi the model (P) of SPEC section 1 is exactly
+For an axisymmetric displacement xi = u(r,t) e_r + v(r,t) e_phi the model (P) of docs/model.md section 1 is exactly
 (R(-pi/2) maps e_r -> -e_phi, e_phi -> e_r; theta(t) = omega t + a cos(b t)):
 
   rho u_tt = (lam+2mu)(u_rr + u_r/r - u/r^2) + rho( theta'' v + theta'^2 (r+u) + 2 theta' v_t )
   rho v_tt =       mu (v_rr + v_r/r - v/r^2) + rho(-theta'' (r+u) + theta'^2 v - 2 theta' u_t )
   u = v = 0 at r = r_i;  sigma_rr = (lam+2mu) u_r + lam u/r = 0, sigma_rphi = mu (v_r - v/r) = 0 at r = r_o;
-  u = v = u_t = v_t = 0 at t = 0;   R(t) = u(r_o, t), alpha(t) = v(r_o, t)   (SPEC section 4).
+  u = v = u_t = v_t = 0 at t = 0;   R(t) = u(r_o, t), alpha(t) = v(r_o, t)   (docs/model.md section 4).
 
 Space: Galerkin with ONE spectral element of degree n (Lagrange basis on Chebyshev-Lobatto points, Dirichlet
 node at r_i removed), weak form weighted by r dr, i.e. the 2D energy restricted to axisymmetric fields:
@@ -25,12 +25,12 @@ With x = (U, V), P(U, V) = (V, -U) (= R(-pi/2)) and x_r = (r, 0) (the position, 
   --verify prints the change between n and 2n, the static state against its closed form
   u = -r + A J1(kr) + B Y1(kr), k^2 = rho omega^2/(lam+2mu) (and the classical Lame disk, which drops the
   rho omega^2 u term), and the modes carrying R and alpha (periods vs the paper's 4d/c).
---scheme dmf: the same semi-discretization advanced by the paper's DMF exactly as SPEC section 2 writes it:
+--scheme dmf: the same semi-discretization advanced by the paper's DMF exactly as docs/model.md section 2 writes it:
   rho M (x^k - 2x^{k-1} + x^{k-2})/dt^2 = -K (x^k + x^{k-2})/2 + rho M f^{k-1},  x^{-1} = x^0 = 0,
   f^{k-1} with theta', theta'' at t_{k-1} (analytic, as src/forcing.c), rigid part loaded exactly, Coriolis
   velocity --coriolis backward (x^{k-1}-x^{k-2})/dt [paper], extrapolated (3x^{k-1}-4x^{k-2}+x^{k-3})/(2dt)
   or centered (x^k-x^{k-2})/(2dt) (implicit), as -coriolis_velocity of the 2D code. --start symmetric
-  replaces SPEC's x^{-1} = x^0 (a dt/2 time shift of the suddenly loaded response: first order) by
+  replaces the paper's x^{-1} = x^0 (a dt/2 time shift of the suddenly loaded response: first order) by
   x^{-1} = x^1, i.e. (2 rho M/dt^2 + K) x^1 = rho M f^0 (zero centred initial velocity).
 Output: CSV `t,R,alpha` (%.17g) at t = k dt_out.  Python: reference(params, times) -> (R, alpha).
 """
@@ -188,8 +188,8 @@ def exact_ivp(m, times):
     return sol.y[m.iR], sol.y[m.iA]
 
 
-def dmf(m, times, dt, coriolis="backward", start="spec"):
-    """SPEC section 2 on the radial semi-discretization; returns R, alpha at the steps nearest to times."""
+def dmf(m, times, dt, coriolis="backward", start="paper"):
+    """docs/model.md section 2 on the radial semi-discretization; returns R, alpha at the steps nearest to times."""
     p, M, K = m.p, m.M, m.K
     ks = np.rint(np.asarray(times) / dt).astype(int)
     if not np.allclose(ks * dt, times, atol=1e-9 * dt + 1e-12):
@@ -202,7 +202,7 @@ def dmf(m, times, dt, coriolis="backward", start="spec"):
     if start == "symmetric":                                        # x^{-1} = x^1: zero centred velocity
         x2 = np.linalg.solve(2 * M / dt**2 + K, m.load(*rates(p, 0.0)))
     else:
-        x2 = np.zeros(2 * m.n)                                      # x^{-1} = x^0 = 0 (SPEC)
+        x2 = np.zeros(2 * m.n)                                      # x^{-1} = x^0 = 0 (the paper's start)
     x3 = 4 * x2                                                     # x^{-2} (extrapolated): x^{-2} = x^2
     R, al = np.empty(len(ks)), np.empty(len(ks))
     want = {k: i for i, k in enumerate(ks)}
@@ -227,8 +227,8 @@ def dmf(m, times, dt, coriolis="backward", start="spec"):
     return R, al
 
 
-def reference(params=None, times=None, scheme="exact", dt=None, coriolis="backward", start="spec"):
-    """(R, alpha) at `times` for params (keys of DEFAULTS; missing ones take the SPEC Table 1 values)."""
+def reference(params=None, times=None, scheme="exact", dt=None, coriolis="backward", start="paper"):
+    """(R, alpha) at `times` for params (keys of DEFAULTS; missing ones take the paper's Table 1 values)."""
     p = dict(DEFAULTS, **(params or {}))
     times = np.arange(0, 20 + 1e-9, 0.0125) if times is None else np.asarray(times, dtype=float)
     m = Radial(p)
@@ -289,7 +289,7 @@ def main(argv=None):
     ap.add_argument("--scheme", choices=["exact", "dmf"], default="exact")
     ap.add_argument("--dt", type=float, default=0.0125, help="DMF time step")
     ap.add_argument("--coriolis", choices=["backward", "extrapolated", "centered"], default="backward")
-    ap.add_argument("--start", choices=["spec", "symmetric"], default="spec")
+    ap.add_argument("--start", choices=["paper", "symmetric"], default="paper")
     for k, v in DEFAULTS.items():
         ap.add_argument("--" + k.replace("_", "-"), type=int if k == "n" else float, default=v)
     ap.add_argument("--t-end", type=float, default=20.0)

@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
-# The paper's figures 3-9 from the scenes in jobs/, into docs/figures/ (docs/validation.md shows them).
+# The paper's figures 3-9 from its own set-ups, jobs/paper/fig3.yaml ... fig9.yaml (P1, h = dt = 0.0125,
+# backward Coriolis velocity, projected CG for the contact figures), into docs/figures/
+# (docs/validation.md section 6 lists them with their commands).
 # Usage: bash scripts/figures.sh [free|contact|all]   (runs build/roller; build first with scripts/build.sh)
+# Time on the 2-core development machine: about 3 minutes for all.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 source "$root/scripts/env.sh"
@@ -14,10 +17,10 @@ what="${1:-all}"
 if [ "$what" = free ] || [ "$what" = all ]; then
   # exact axisymmetric reference (Table 1 values) for figures 3-4
   $py "$root/scripts/axisym_reference.py" --scheme exact --t-end 20 --dt-out 0.0125 --out "$work/reference.csv"
-  # figures 3, 4: dx = dt = 0.0125 * 2^(i-1), i = 1..4
+  # figures 3, 4 (jobs/paper/fig3.yaml = fig4.yaml): dx = dt = 0.0125 * 2^(i-1), i = 1..4
   labels=()
   for h in 0.0125 0.025 0.05 0.1; do
-    "$roller" -options_file "$root/jobs/free.yaml" -mesh_h $h -ts_dt $h -quiet -monitor_csv "$work/mesh_h$h.csv"
+    "$roller" -options_file "$root/jobs/paper/fig3.yaml" -mesh_h $h -ts_dt $h -quiet -monitor_csv "$work/mesh_h$h.csv"
     labels+=(--label "dx = dt = $h" "$work/mesh_h$h.csv")
   done
   for q in R alpha; do
@@ -25,25 +28,27 @@ if [ "$what" = free ] || [ "$what" = all ]; then
       --title "no obstacle, mesh study (paper figure $([ $q = R ] && echo 3 || echo 4))" "${labels[@]}" \
       --reference "$work/reference.csv" --reference-label "exact axisymmetric"
   done
-  # figures 5, 6: E = 0.05, 0.1, 0.2
+  # figures 5, 6 (jobs/paper/fig5.yaml = fig6.yaml): E = 0.05, 0.1, 0.2
   labels=()
   for E in 0.05 0.1 0.2; do
-    "$roller" -options_file "$root/jobs/free.yaml" -young $E -quiet -monitor_csv "$work/young$E.csv"
+    "$roller" -options_file "$root/jobs/paper/fig5.yaml" -young $E -quiet -monitor_csv "$work/young$E.csv"
     labels+=(--label "E = $E" "$work/young$E.csv")
   done
   $py "$root/scripts/plot_series.py" --quantity R --out "$fig/fig5_R.png" --title "stiffness study (paper figure 5)" "${labels[@]}"
   $py "$root/scripts/plot_series.py" --quantity alpha --out "$fig/fig6_alpha.png" --title "stiffness study (paper figure 6)" "${labels[@]}"
-  # figure 7: resonance
-  "$roller" -options_file "$root/jobs/resonance.yaml" -quiet -monitor_csv "$work/resonance.csv"
-  "$roller" -options_file "$root/jobs/resonance.yaml" -theta_a 0 -quiet -monitor_csv "$work/steady.csv"
+  # figure 7 (jobs/paper/fig7.yaml): resonance, and the unperturbed rotation (the paper repeats figure 4)
+  "$roller" -options_file "$root/jobs/paper/fig7.yaml" -quiet -monitor_csv "$work/resonance.csv"
+  "$roller" -options_file "$root/jobs/paper/fig7.yaml" -theta_a 0 -quiet -monitor_csv "$work/steady.csv"
   $py "$root/scripts/plot_series.py" --quantity alpha --out "$fig/fig7_alpha.png" --title "perturbed rotation (paper figure 7)" \
     --label "theta = omega t + 0.001 cos(2 pi t / 9.75)" "$work/resonance.csv" --label "theta = omega t" "$work/steady.csv"
 fi
 
 if [ "$what" = contact ] || [ "$what" = all ]; then
-  # figures 8, 9: |sigma| on the deformed roller, lab frame
+  # figures 8 (jobs/paper/fig8.yaml, compression) and 9 (fig9.yaml, rolling): |sigma| on the deformed
+  # roller, lab frame
   for scene in compression rolling; do
-    "$roller" -options_file "$root/jobs/$scene.yaml" -quiet -monitor_csv "$work/$scene.csv" -output "$work/$scene.h5" -output_every 80
+    yaml=$([ $scene = compression ] && echo fig8 || echo fig9)
+    "$roller" -options_file "$root/jobs/paper/$yaml.yaml" -quiet -monitor_csv "$work/$scene.csv" -output "$work/$scene.h5" -output_every 80
     $py "$root/scripts/plot_fields.py" "$work/$scene.h5" --times 2 5 10 20 --out "$fig/${scene}_sigma.png"
   done
   $py "$root/scripts/plot_series.py" --quantity contact_force --out "$fig/contact_force.png" --title "total contact force" \

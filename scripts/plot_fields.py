@@ -4,7 +4,7 @@
 stress mode (default): |sigma| (stress_norm) on the deformed roller in the lab frame, x + displacement_lab,
 one panel per chosen time (the nearest stored step), a common colour scale, the deformation optionally
 magnified (--scale; the rigid rotation is not), and the obstacle line
-y = g(t) = min(v t, depth) - r_outer (SPEC section 1):
+y = g(t) = min(v t, depth) - r_outer (docs/model.md section 1):
 
     plot_fields.py F.h5 --times 5 10 20 --out sigma.png
 
@@ -15,7 +15,7 @@ field, says so and writes nothing:
     plot_fields.py F.h5 --mode contact --times 5 10 20 --out pressure.png
 
 The obstacle (on/off, v, depth) and r_outer default to the run's own values stored in /parameters, else
-to the SPEC defaults 0.005, 0.025, 0.5; the options override both.
+to Roller's defaults 0.005, 0.025, 0.5; the options override both.
 """
 import argparse
 import math
@@ -30,7 +30,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.tri import Triangulation  # noqa: E402
 
-SPEC_DEFAULTS = {"obstacle_speed": 0.005, "obstacle_depth": 0.025, "r_outer": 0.5}
+ROLLER_DEFAULTS = {"obstacle_speed": 0.005, "obstacle_depth": 0.025, "r_outer": 0.5}
 
 
 def vertex_field(f, name):
@@ -62,9 +62,9 @@ def pick_steps(times, wanted):
 
 
 def obstacle_settings(f, args):
-    """(draw?, v, depth, r_outer): command line, else the run's /parameters, else SPEC defaults."""
+    """(draw?, v, depth, r_outer): command line, else the run's /parameters, else Roller's defaults."""
     par = dict(f["parameters"].attrs) if "parameters" in f else {}
-    value = {k: float(par.get(k, d)) for k, d in SPEC_DEFAULTS.items()}
+    value = {k: float(par.get(k, d)) for k, d in ROLLER_DEFAULTS.items()}
     for k in value:
         if getattr(args, k) is not None:
             value[k] = getattr(args, k)

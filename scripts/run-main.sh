@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The main job: the rolling-contact scene (SPEC section 5, last row; paper figure 9) at a modest
+# The main job: the rolling-contact scene (docs/model.md section 5, last row; paper figure 9) at a modest
 # resolution. Installs what is missing, builds, runs, and leaves in results/main/:
 #   roller.csv (one row per step), roller.h5 + roller.xmf (fields, open the .xmf in ParaView),
 #   sigma.png (|sigma| on the deformed roller in the lab frame), R.png and alpha.png (time series).
