@@ -1,6 +1,6 @@
 /* Roller: a rubber roller as an elastic annulus in the co-rotating frame, pressed by a moving flat
-   obstacle, advanced by the energy-conserving discrete Morse flow (DMF). See docs/model.md and
-   ../shared/SPEC.md. This is the public face: create, configure from options, set up, solve, destroy. */
+   obstacle, advanced by the energy-conserving discrete Morse flow (DMF). See docs/model.md.
+   This is the public face: create, configure from options, set up, solve, destroy. */
 #ifndef ROLLER_H
 #define ROLLER_H
 

@@ -1,14 +1,14 @@
 /* The Roller context and the functions the source files share. One concern per file:
-     options.c        parameters, validation, -help                      (SPEC section 6)
+     options.c        parameters, validation, -help                      (docs/model.md section 6)
      mesh.c           gmsh annulus (C API or file), labels, validation
      partition.c      METIS partition of the cell graph, distribution
      geometry.c       curved (isoparametric P2) boundary
-     discretization.c PetscFE spaces, Dirichlet boundary, M, K, A, loads   (SPEC sections 2-3)
+     discretization.c PetscFE spaces, Dirichlet boundary, M, K, A, loads   (docs/model.md sections 2-3)
      kernels.h        pointwise FE kernels
-     forcing.c        theta(t), the explicit Euler/centrifugal/Coriolis load (SPEC section 1)
-     step.c           one DMF step                                        (SPEC section 2)
-     contact*.c       the obstacle QP in rotated contact coordinates       (SPEC section 2)
-     diagnostics.c    R, alpha, energy                                    (SPEC section 4)
+     forcing.c        theta(t), the explicit Euler/centrifugal/Coriolis load (docs/model.md section 1)
+     step.c           one DMF step                                        (docs/model.md section 2)
+     contact*.c       the obstacle QP in rotated contact coordinates       (docs/model.md section 2)
+     diagnostics.c    R, alpha, energy                                    (docs/model.md section 4)
      driver.c         the time loop, monitors, progress line
      output.c         CSV, HDF5 fields, XDMF
      checkpoint.c     checkpoint and restart, signals */
@@ -41,7 +41,7 @@ typedef struct _n_RollerOutput  *RollerOutput;
 /* Indices into ctx->stage for -log_view. */
 enum { ROLLER_STAGE_SETUP, ROLLER_STAGE_STEP, ROLLER_STAGE_CONTACT, ROLLER_STAGE_DIAGNOSTICS, ROLLER_STAGE_OUTPUT, ROLLER_NUM_STAGES };
 
-/* What the diagnostics of one step give (SPEC section 6, CSV columns and extras). */
+/* What the diagnostics of one step give (docs/model.md section 6, CSV columns and extras). */
 typedef struct {
   PetscReal R, alpha, energy;
   PetscInt  contact_nodes;
@@ -97,7 +97,7 @@ struct _n_Roller {
 
   /* Operators: mass M, stiffness K, step matrix A = rho/dt^2 M + K/2 (+ eta/(2 dt) M), all on the
      free (non-Dirichlet) dofs; loads of the rigid-body parts of f: L_euler = M-load of R(-pi/2) x,
-     L_centrifugal = M-load of x (exact integrals, SPEC section 2). */
+     L_centrifugal = M-load of x (exact integrals, docs/model.md section 2). */
   Mat M, K, A;
   Mat G, A0; /* centred Coriolis only: the gyroscopic matrix and the symmetric part of A */
   Vec L_euler, L_centrifugal;
@@ -139,7 +139,7 @@ PETSC_INTERN PetscErrorCode RollerUpdateGyroscopic(Roller, PetscReal);
 PETSC_INTERN PetscErrorCode RollerOperatorsSetUp(Roller);
 PETSC_INTERN PetscErrorCode RollerComputeBoundaryFunctionals(Roller);
 
-/* forcing.c: theta and its derivatives; the load rho (f^{k-1}, v) of SPEC section 2 */
+/* forcing.c: theta and its derivatives; the load rho (f^{k-1}, v) of docs/model.md section 2 */
 PETSC_INTERN void           RollerTheta(Roller, PetscReal, PetscReal *, PetscReal *, PetscReal *);
 PETSC_INTERN PetscReal      RollerObstacleHeight(Roller, PetscReal);
 PETSC_INTERN PetscErrorCode RollerApplyRotate90(Vec, Vec);

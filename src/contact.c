@@ -1,6 +1,6 @@
-/* The obstacle QP of one DMF step (SPEC section 2): the Gamma_C nodes, the candidate set, the dispatch to
+/* The obstacle QP of one DMF step (docs/model.md section 2): the Gamma_C nodes, the candidate set, the dispatch to
    the solver chosen by -contact_solver with the penetration check, the KKT residual and the per-step contact
-   diagnostics (SPEC section 6). The solvers live in contact_condensed.c, contact_primal.c, contact_pcg.c. */
+   diagnostics (docs/model.md section 6). The solvers live in contact_condensed.c, contact_primal.c, contact_pcg.c. */
 #include "contact.h"
 
 const char *const RollerContactSolverTypes[] = {"condensed", "vi", "tao", "pcg", "RollerContactSolverType", "CONTACT_", NULL};
@@ -218,7 +218,7 @@ PetscErrorCode RollerContactForce(RollerContact c, const PetscReal lambda[], Vec
 }
 
 /* theta^k, n^k = (sin theta, cos theta), t^k = (cos theta, -sin theta), g^k and the bounds
-   q_n >= g^k - x_n . n^k of every node (SPEC sections 1-2). */
+   q_n >= g^k - x_n . n^k of every node (docs/model.md sections 1-2). */
 static PetscErrorCode ContactSetTime(Roller ctx, RollerContact c, PetscReal t)
 {
   PetscFunctionBeginUser;
@@ -393,7 +393,7 @@ static PetscErrorCode ContactCheck(Roller ctx, RollerContact c, Vec b, Vec xi)
   PetscFunctionReturn(0);
 }
 
-/* xi = argmin 1/2 xi^T A xi - b^T xi over the admissible set at t = t_k (SPEC section 2). */
+/* xi = argmin 1/2 xi^T A xi - b^T xi over the admissible set at t = t_k (docs/model.md section 2). */
 PetscErrorCode RollerContactSolve(Roller ctx, RollerContact c, PetscReal t, Vec b, Vec xi)
 {
   PetscFunctionBeginUser;
@@ -439,7 +439,7 @@ static PetscErrorCode ContactMonitor(Roller ctx, RollerContact c, const RollerSt
   PetscFunctionReturn(0);
 }
 
-/* The contact columns of the CSV (SPEC section 6) for the solution xi at t. */
+/* The contact columns of the CSV (docs/model.md section 6) for the solution xi at t. */
 PetscErrorCode RollerContactInfo(Roller ctx, RollerContact c, Vec xi, PetscReal t, RollerStepInfo *info)
 {
   PetscReal gap_min, kkt;

@@ -1,4 +1,4 @@
-/* Private to the contact*.c files: the obstacle QP of SPEC section 2 and its solvers.
+/* Private to the contact*.c files: the obstacle QP of docs/model.md section 2 and its solvers.
 
      min 1/2 xi^T A xi - b^T xi   s.t.  (x_n + xi_n) . n^k >= g^k  at every Lagrange node x_n of Gamma_C
 

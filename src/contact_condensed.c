@@ -1,7 +1,7 @@
 /* The default contact solver: the QP condensed onto the multipliers of the candidate nodes.
 
    With E the injection of the Gamma_C dofs and N = diag(n^k) at the candidates, the KKT conditions of the
-   step QP (SPEC section 2) are  A xi = b + E N lambda,  lambda >= 0,  gap >= 0,  lambda . gap = 0, so
+   step QP (docs/model.md section 2) are  A xi = b + E N lambda,  lambda >= 0,  gap >= 0,  lambda . gap = 0, so
    xi = xi_f + A^{-1} E N lambda with the free solution xi_f = A^{-1} b, and gap(lambda) = d + G lambda with
    d = gap of xi_f and G = N^T S N, S = E^T A^{-1} E. Since A never changes, S (2 N_C x 2 N_C) is computed
    once with the step factorization; each step is one solve for xi_f, a small dense LCP in lambda (equivalently

@@ -11,7 +11,7 @@
    bound and T_z zeroes the negative normal component of a direction at nodes on the obstacle
    (z_q <= bound): the paper's formulas with n^k = R^T(theta^k) e_2. Correction: the paper prints Proj with
    min{0, g - (x + xi) . n}, which would pull feasible nodes onto the obstacle; the orthogonal projection it
-   describes adds max{0, g - (x + xi) . n} n (SPEC.md: "where this page and the paper differ").
+   describes adds max{0, g - (x + xi) . n} n (docs/model.md sections 2 and 9).
    Q is orthogonal, so the Euclidean gradient, the norms and the line search are those of the paper's
    unknowns. eps = -contact_pcg_rtol times the force scale max(||b||_2, ||A||_inf ||z_0||_2). */
 #include "contact.h"

@@ -1,4 +1,4 @@
-/* The step QP on the primal unknowns in rotated contact coordinates (SPEC section 2), for SNES VI and TAO
+/* The step QP on the primal unknowns in rotated contact coordinates (docs/model.md section 2), for SNES VI and TAO
    (and the projected CG of contact_pcg.c): xi = Q z, where Q is the identity except for a 2x2 block
    [t^k n^k] at every candidate node, so z = (s, q) there and the obstacle is the lower bound
    q_n >= g^k - x_n . n^k; every other unknown is unbounded. A_hat = Q^T A Q is refreshed each step with

@@ -1,8 +1,8 @@
-/* What every step reports (SPEC sections 4 and 6): the mean radial and tangential displacements of
+/* What every step reports (docs/model.md sections 4 and 6): the mean radial and tangential displacements of
    Gamma_C, the discrete energy of Theorem 1, and the contact quantities. */
 #include <roller_impl.h>
 
-/* E^k = rho/2 |xi^k - xi^{k-1}|^2_M / dt^2 + (a(xi^k, xi^k) + a(xi^{k-1}, xi^{k-1}))/4 (SPEC section 2). */
+/* E^k = rho/2 |xi^k - xi^{k-1}|^2_M / dt^2 + (a(xi^k, xi^k) + a(xi^{k-1}, xi^{k-1}))/4 (docs/model.md section 2). */
 static PetscErrorCode Energy(Roller ctx, PetscReal *energy)
 {
   PetscScalar kin, pot1, pot2;

@@ -1,6 +1,6 @@
-/* PetscFE discretization (SPEC section 3) and the constant operators of the DMF step (SPEC section 2):
+/* PetscFE discretization (docs/model.md section 3) and the constant operators of the DMF step (docs/model.md section 2):
    mass M, stiffness K, A = rho/dt^2 M + K/2 (+ eta/(2 dt) M), factored once; the loads of the rigid part
-   of f; the nodal positions; the boundary functionals behind R and alpha (SPEC section 4). */
+   of f; the nodal positions; the boundary functionals behind R and alpha (docs/model.md section 4). */
 #include <roller_impl.h>
 #include "kernels.h"
 

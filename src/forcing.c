@@ -1,4 +1,4 @@
-/* The prescribed motions: the driving rotation theta(t) and the obstacle height g(t) (SPEC sections 1, 5),
+/* The prescribed motions: the driving rotation theta(t) and the obstacle height g(t) (docs/model.md sections 1, 5),
    and the pointwise R(-pi/2) that the Euler and Coriolis terms of f apply. */
 #include <roller_impl.h>
 
@@ -12,7 +12,7 @@ void RollerTheta(Roller ctx, PetscReal t, PetscReal *theta, PetscReal *theta_dot
   if (theta_ddot) *theta_ddot = -a * b * b * PetscCosReal(b * t);
 }
 
-/* g(t) = min(speed t, depth) - r_outer (SPEC section 6). */
+/* g(t) = min(speed t, depth) - r_outer (docs/model.md section 6). */
 PetscReal RollerObstacleHeight(Roller ctx, PetscReal t)
 {
   return PetscMin(ctx->obstacle_speed * t, ctx->obstacle_depth) - ctx->r_outer;

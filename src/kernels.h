@@ -1,4 +1,4 @@
-/* Pointwise kernels for PetscFE (plane-strain linear elasticity, mass, loads), SPEC sections 1-3.
+/* Pointwise kernels for PetscFE (plane-strain linear elasticity, mass, loads), docs/model.md sections 1-3.
    Constants (PetscDSSetConstants), see RollerConstant. */
 #ifndef ROLLER_KERNELS_H
 #define ROLLER_KERNELS_H
@@ -36,7 +36,7 @@ static inline void RollerStress(PetscReal lambda, PetscReal mu, const PetscScala
   sigma[3] = 2.0 * mu * u_x[3] + lambda * div;
 }
 
-/* K: a(u, v) = int sigma[u] : eps[v] (SPEC section 2). */
+/* K: a(u, v) = int sigma[u] : eps[v] (docs/model.md section 2). */
 static inline void g3_elastic(ROLLER_KERNEL_ARGS, PetscReal u_tShift, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar g3[])
 {
   const PetscReal w = PetscRealPart(constants[ROLLER_C_STIFFNESS_WEIGHT]);
@@ -76,7 +76,7 @@ static inline void f0_euler(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt nu
   f0[1] = -x[0];
 }
 
-/* |sigma| = sqrt(sum_ij sigma_ij^2) (SPEC section 4), projected to a scalar field. */
+/* |sigma| = sqrt(sum_ij sigma_ij^2) (docs/model.md section 4), projected to a scalar field. */
 static inline void f_stress_norm(PetscInt dim, PetscInt Nf, PetscInt NfAux, const PetscInt uOff[], const PetscInt uOff_x[], const PetscScalar u[], const PetscScalar u_t[], const PetscScalar u_x[], const PetscInt aOff[], const PetscInt aOff_x[], const PetscScalar a[], const PetscScalar a_t[], const PetscScalar a_x[], PetscReal t, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f[])
 {
   PetscScalar sigma[4];

@@ -1,4 +1,4 @@
-/* The annulus mesh (SPEC section 3): gmsh, either in-process through its C API or a user's .msh file, read
+/* The annulus mesh (docs/model.md section 3): gmsh, either in-process through its C API or a user's .msh file, read
    into DMPlex; the labels "inner" (Gamma_D) and "outer" (Gamma_C); the checks that the mesh really is a
    triangulated annulus about the origin; the measures of the distributed mesh. */
 #include <roller_impl.h>

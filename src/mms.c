@@ -3,7 +3,7 @@
    u vanishes to second order on both circles, so the polygonal boundary of the mesh (chords at
    distance O(h^2) from the circle) costs only O(h^4) and does not spoil the P2 rates. With -clamp_outer
    it satisfies the boundary conditions; the body force F = rho u_tt - div sigma[u] - rho f(t, x, u, u_t)
-   (f of SPEC section 1, all of it) makes it a solution of (P) without obstacle.
+   (f of docs/model.md section 1, all of it) makes it a solution of (P) without obstacle.
    T(t) = 1 + t ("linear": the DMF scheme is exact in time, so the error is spatial only) or
    T(t) = sin(2 pi t) ("sine": the time error shows). */
 #include <roller_impl.h>
@@ -63,7 +63,7 @@ static void f0_mms(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstant
     /* div sigma[B c] = mu Lap(B) c + (lambda + mu) Hess(B) c */
     divsig[c] = T[0] * amp * (mu * (H[0] + H[3]) * mms_c[c] + (lambda + mu) * (H[c * 2 + 0] * mms_c[0] + H[c * 2 + 1] * mms_c[1]));
   }
-  /* f = theta'' R(-pi/2)(x + u) + theta'^2 (x + u) + 2 theta' R(-pi/2) u_t (SPEC section 1) */
+  /* f = theta'' R(-pi/2)(x + u) + theta'^2 (x + u) + 2 theta' R(-pi/2) u_t (docs/model.md section 1) */
   f[0] = tdd * (x[1] + ue[1]) + td * td * (x[0] + ue[0]) + 2.0 * td * ut[1];
   f[1] = -tdd * (x[0] + ue[0]) + td * td * (x[1] + ue[1]) - 2.0 * td * ut[0];
   for (PetscInt c = 0; c < 2; ++c) f0[c] = rho * utt[c] - divsig[c] - rho * f[c];

@@ -1,11 +1,11 @@
-/* The command-line contract of SPEC section 6: every option read in one place, validated, listed by -help. */
+/* The command-line contract of docs/model.md section 6: every option read in one place, validated, listed by -help. */
 #include <roller_impl.h>
 
 const char *const RollerInitialConditions[] = {"rest", "bump", "mms", "RollerInitialCondition", "ROLLER_IC_", NULL};
 const char *const RollerMMSTypes[]          = {"none", "linear", "sine", "RollerMMSType", "ROLLER_MMS_", NULL};
 const char *const RollerCoriolisVelocities[] = {"backward", "extrapolated", "centered", "RollerCoriolisVelocity", "ROLLER_CORIOLIS_", NULL};
 
-/* Plane-strain Lame constants (SPEC section 1). */
+/* Plane-strain Lame constants (docs/model.md section 1). */
 PetscErrorCode RollerLameFromYoung(PetscReal young, PetscReal poisson, PetscReal *lambda, PetscReal *mu)
 {
   PetscFunctionBeginUser;

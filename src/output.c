@@ -1,4 +1,4 @@
-/* What a run leaves behind (SPEC section 6, docs/output.md): the monitor CSV, one row per step, and the
+/* What a run leaves behind (docs/model.md section 6, docs/output.md): the monitor CSV, one row per step, and the
    fields every N steps to HDF5 with an XDMF index so ParaView opens it directly. Output is what was
    asked: without -monitor_csv no CSV, without -output no field is computed.
 
@@ -479,7 +479,7 @@ PetscErrorCode RollerOutputCreate(Roller ctx, RollerOutput *output)
 /* ---------------------------------------------------------------------------------------------------
    Every step */
 
-/* Lab-frame displacement phi(x) - x = R(theta)(x + xi) - x (SPEC section 1) at every vertex. */
+/* Lab-frame displacement phi(x) - x = R(theta)(x + xi) - x (docs/model.md section 1) at every vertex. */
 static PetscErrorCode LabDisplacement(RollerOutput out, PetscReal theta, Vec xi, Vec lab)
 {
   const PetscScalar *x, *u;
@@ -516,7 +516,7 @@ static PetscErrorCode WriteFields(Roller ctx, RollerOutput out)
   PetscCall(VecWAXPY(out->velocity, -1.0, ctx->xi2, ctx->xi1));
   PetscCall(VecScale(out->velocity, 1.0 / ctx->dt));
   PetscCall(ProjectAtVertices(ctx, out->velocity, f_pad_vector, INSERT_VALUES, out->field[FIELD_VELOCITY].vec));
-  /* |sigma| (SPEC section 4); DMProjectField hands the kernel the constants of the input DS, ctx->dm's */
+  /* |sigma| (docs/model.md section 4); DMProjectField hands the kernel the constants of the input DS, ctx->dm's */
   PetscCall(ProjectAtVertices(ctx, ctx->xi1, f_stress_norm, ADD_VALUES, out->field[FIELD_STRESS].vec));
   PetscCall(VecPointwiseDivide(out->field[FIELD_STRESS].vec, out->field[FIELD_STRESS].vec, out->count));
   /* multiplier / tributary length at the Gamma_C vertices (docs/contact.md) */

@@ -1,4 +1,4 @@
-/* The per-step diagnostics (SPEC section 6 columns) kept in memory while fields go to HDF5, and written at
+/* The per-step diagnostics (docs/model.md section 6 columns) kept in memory while fields go to HDF5, and written at
    the successful end as /diagnostics/<column>, one dataset per column of length steps: the HDF5 file
    then carries the same time series as the CSV. Rank 0 holds the rows. */
 #include <roller_impl.h>

@@ -1,4 +1,4 @@
-/* One step of the "Crank-Nicolson" discrete Morse flow (SPEC section 2, paper (3.1)-(3.2)):
+/* One step of the "Crank-Nicolson" discrete Morse flow (docs/model.md section 2, paper (3.1)-(3.2)):
      A xi^k = b^k,  A = rho/dt^2 M + K/2 (+ eta/(2 dt) M),
      b^k = M w - K xi^{k-2}/2 + rho (theta'' L_euler + theta'^2 L_centrifugal),
      w   = rho/dt^2 (2 xi^{k-1} - xi^{k-2}) (+ eta/(2 dt) xi^{k-2})
@@ -9,7 +9,7 @@
    obstacle, the same A and b define the bound-constrained QP that contact.c solves. */
 #include <roller_impl.h>
 
-/* xi^0 and xi^{-1} = xi^0 - dt eta^0 (SPEC section 2). */
+/* xi^0 and xi^{-1} = xi^0 - dt eta^0 (docs/model.md section 2). */
 PetscErrorCode RollerInitialState(Roller ctx)
 {
   PetscFunctionBeginUser;
