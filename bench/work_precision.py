@@ -43,12 +43,24 @@ FIELDS = ["label", "scene", "degree", "h", "dt", "coriolis", "extra", "t_end", "
 
 
 def cfg(degree, h, dt, coriolis="backward", extra=(), label=None):
+    """One run. degree, h, dt, coriolis = None: not given, Roller's accurate default chooses it (-ts_view)."""
     extra = list(extra)
     if label is None:
         label = f"P{degree} h={h:g} dt={dt:g} {coriolis}" + (" " + " ".join(extra) if extra else "")
         if degree == 2:
             label += ", straight boundary" if "-mesh_curved" in extra else ", curved boundary"
     return dict(label=label, degree=degree, h=h, dt=dt, coriolis=coriolis, extra=extra)
+
+
+DEFAULT = cfg(None, None, None, None, label="default: no discretization option (P2 curved, extrapolated, dt and h from -ts_phase_error 0.01)")
+
+
+def chosen(base, t_end):
+    """What the accurate default picks for this scene: (degree, h, dt, coriolis) from -ts_view."""
+    import re
+    res = benchlib.run(base + ["-ts_max_time", t_end, "-ts_max_steps", 0, "-ts_view"], logview=False)
+    m = re.search(r"roller: P(\d)\S*.*?-mesh_h (\S+), -ts_dt (\S+) .*-coriolis_velocity (\w+)", res["stdout"])
+    return int(m.group(1)), float(m.group(2)), float(m.group(3)), m.group(4)
 
 
 def boundary(r):
@@ -70,7 +82,9 @@ def configs(scene, name):
         if name == "paper":
             out.append(cfg(1, 0.0125, 0.0125, "backward", PAPER_CG, label="paper: P1 h=dt=0.0125 backward, CG"))
         elif name == "default":
-            out.append(cfg(1, 0.0125, 0.0125, "backward", label="default: P1 h=dt=0.0125 backward, Cholesky"))
+            out.append(DEFAULT)
+        elif name == "paper-cholesky":
+            out.append(cfg(1, 0.0125, 0.0125, "backward", label="P1 h=dt=0.0125 backward, Cholesky (the paper's discretization, Roller's solver)"))
         elif name == "grid":
             for degree in (1, 2):
                 for h in (0.05, 0.025, 0.0125):
@@ -105,7 +119,9 @@ def configs(scene, name):
         if name == "paper":
             out.append(cfg(1, 0.0125, 0.0125, "backward", ["-contact_solver", "pcg"], label="paper: P1 h=dt=0.0125 backward, projected CG"))
         elif name == "default":
-            out.append(cfg(1, 0.0125, 0.0125, "backward", label="default: P1 h=dt=0.0125 backward, condensed"))
+            out.append(DEFAULT)
+        elif name == "paper-condensed":
+            out.append(cfg(1, 0.0125, 0.0125, "backward", label="P1 h=dt=0.0125 backward, condensed (the paper's discretization, Roller's solver)"))
         elif name == "grid":
             for degree, hs in ((1, (0.05, 0.025, 0.0125, 0.00625)), (2, (0.05, 0.025, 0.0125))):
                 for h in hs:
@@ -180,8 +196,13 @@ def common(t, tref):
 # ---------------------------------------------------------------- one run
 def measure(scene, c, t_end, ref):
     base = ["-options_file", os.path.join(ROOT, "jobs", "rolling.yaml")] if scene == "rolling" else []
-    args = base + ["-degree", c["degree"], "-mesh_h", c["h"], "-ts_dt", c["dt"], "-coriolis_velocity", c["coriolis"],
-                   "-ts_max_time", t_end] + c["extra"]
+    if c["degree"] is None:
+        c = dict(c)
+        c["degree"], c["h"], c["dt"], c["coriolis"] = chosen(base, t_end)
+        args = base + ["-ts_max_time", t_end] + c["extra"]
+    else:
+        args = base + ["-degree", c["degree"], "-mesh_h", c["h"], "-ts_dt", c["dt"], "-coriolis_velocity", c["coriolis"],
+                       "-ts_max_time", t_end] + c["extra"]
     load = os.getloadavg()[0]
     res = benchlib.run(args, csv=True)
     d = res["series"]
