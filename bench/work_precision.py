@@ -223,22 +223,7 @@ def measure(scene, c, t_end, ref):
                    err_R_space=rel_max(d["R"], Rd, sR), err_alpha_space=rel_max(d["alpha"], ad, sa))
     else:
         if ref is not None:
-            i, j = common(d["t"], ref["t"])
-            errs = {}
-            for q, key in (("R", "R"), ("alpha", "alpha"), ("contact_force", "force")):
-                s = np.abs(ref[q]).max()
-                errs["err_" + key] = rel_max(d[q][i], ref[q][j], s)
-                errs["rms_" + key] = rel_rms(d[q][i], ref[q][j], s)
-            # the force oscillates after every change of the contact set; its level: moving averages over 0.5
-            # time units of the common 0.0125 grid, compared as above
-            tr = ref["t"][j]
-            on = np.abs(tr / 0.0125 - np.round(tr / 0.0125)) < 1e-6
-            w = 40
-            if on.sum() > w:
-                F, Fr = d["contact_force"][i][on], ref["contact_force"][j][on]
-                avg = lambda q: np.convolve(q, np.ones(w) / w, "valid")  # noqa: E731
-                errs["err_force_avg"] = rel_max(avg(F), avg(Fr), np.abs(avg(Fr)).max())
-            row.update(errs)
+            row.update(rolling_errors(d, ref))
     if SERIES_DIR:
         os.makedirs(SERIES_DIR, exist_ok=True)
         with open(series_path(scene, c["label"]), "w") as f:
@@ -262,17 +247,33 @@ def rescore(rows, ref):
             print(f"rescore: no series for {r['label']}", file=sys.stderr)
             continue
         d = benchlib.read_csv(path)
-        i, j = common(d["t"], ref["t"])
-        for q, key in (("R", "R"), ("alpha", "alpha"), ("contact_force", "force")):
-            sc = np.abs(ref[q]).max()
-            r["err_" + key] = fmt(rel_max(d[q][i], ref[q][j], sc))
-            r["rms_" + key] = fmt(rel_rms(d[q][i], ref[q][j], sc))
-        tr = ref["t"][j]
-        on = np.abs(tr / 0.0125 - np.round(tr / 0.0125)) < 1e-6
-        avg = lambda q: np.convolve(q, np.ones(40) / 40, "valid")  # noqa: E731
-        F, Fr = d["contact_force"][i][on], ref["contact_force"][j][on]
-        r["err_force_avg"] = fmt(rel_max(avg(F), avg(Fr), np.abs(avg(Fr)).max()))
+        r.update({k: fmt(v) for k, v in rolling_errors(d, ref).items()})
     return rows
+
+
+def rolling_errors(d, ref):
+    """Errors of R, alpha, contact_force against the reference run: at the common output times, or, where the
+    run's dt is no multiple of the reference's (the default's dt follows the scene), at the run's times with the
+    reference interpolated linearly (its dt is the finest of the study). The force oscillates after every change
+    of the contact set; its level: moving averages over 0.5 time units on the 0.0125 grid."""
+    i, j = common(d["t"], ref["t"])
+    if len(i) > len(d["t"]) // 2:
+        t, run, rf = d["t"][i], {q: d[q][i] for q in ref}, {q: ref[q][j] for q in ref}
+    else:
+        t = d["t"][d["t"] <= ref["t"][-1] + 1e-9]
+        run, rf = {q: d[q][:len(t)] for q in ref}, {q: np.interp(t, ref["t"], ref[q]) for q in ref}
+    errs = {}
+    for q, key in (("R", "R"), ("alpha", "alpha"), ("contact_force", "force")):
+        sc = np.abs(rf[q]).max()
+        errs["err_" + key] = rel_max(run[q], rf[q], sc)
+        errs["rms_" + key] = rel_rms(run[q], rf[q], sc)
+    grid = 0.0125 * np.arange(int(t[-1] / 0.0125 + 1e-9) + 1)
+    w = 40
+    if len(grid) > w:
+        F, Fr = np.interp(grid, t, run["contact_force"]), np.interp(grid, t, rf["contact_force"])
+        avg = lambda q: np.convolve(q, np.ones(w) / w, "valid")  # noqa: E731
+        errs["err_force_avg"] = rel_max(avg(F), avg(Fr), np.abs(avg(Fr)).max())
+    return errs
 
 
 # ---------------------------------------------------------------- CSV, table, plot
