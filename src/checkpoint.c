@@ -94,7 +94,7 @@ PetscErrorCode RollerCheckpointRead(Roller ctx, const char *path)
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "dt", PETSC_REAL, NULL, &dt));
   PetscCall(VecGetSize(ctx->xi1, &N));
   PetscCheck(dofs == N && degree == ctx->degree, ctx->comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written for %" PetscInt_FMT " dofs of P%" PetscInt_FMT ", this run has %" PetscInt_FMT " of P%" PetscInt_FMT " (use the same mesh and -degree)", path, dofs, degree, N, ctx->degree);
-  PetscCheck(dt == ctx->dt, ctx->comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written with -ts_dt %g, this run has %g", path, (double)dt, (double)ctx->dt);
+  PetscCheck(dt == ctx->dt, ctx->comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written with -ts_dt %.17g, this run has %.17g (a default dt follows -ts_max_time and -ts_phase_error: to run on past the original end time, give the original -ts_dt and -mesh_h, which -ts_view prints)", path, (double)dt, (double)ctx->dt);
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "step", PETSC_INT, NULL, &ctx->step));
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "time", PETSC_REAL, NULL, &ctx->time));
   History(ctx, v);

@@ -53,7 +53,7 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(ctx->comm, NULL, "Roller: geometry and mesh", NULL);
-  PetscCall(PetscOptionsReal("-mesh_h", "Edge length of the gmsh annulus mesh (default: from -ts_phase_error)", NULL, ctx->mesh_h, &ctx->mesh_h, &ctx->mesh_h_set));
+  PetscCall(PetscOptionsReal("-mesh_h", "Edge length of the gmsh annulus mesh (0: chosen from -ts_phase_error)", NULL, ctx->mesh_h, &ctx->mesh_h, &ctx->mesh_h_set));
   PetscCall(PetscOptionsString("-dm_plex_filename", "gmsh mesh file (physical groups inner, outer, body) instead of -mesh_h", NULL, ctx->mesh_file, ctx->mesh_file, sizeof(ctx->mesh_file), NULL));
   PetscCall(PetscOptionsReal("-r_inner", "Inner radius r_D (Gamma_D, driven)", NULL, ctx->r_inner, &ctx->r_inner, NULL));
   PetscCall(PetscOptionsReal("-r_outer", "Outer radius r_C (Gamma_C, contact)", NULL, ctx->r_outer, &ctx->r_outer, NULL));
@@ -82,7 +82,7 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscOptionsEnd();
 
   PetscOptionsBegin(ctx->comm, NULL, "Roller: time stepping", NULL);
-  PetscCall(PetscOptionsReal("-ts_dt", "Time step dt (default: from -ts_phase_error)", NULL, ctx->dt, &ctx->dt, &ctx->dt_set));
+  PetscCall(PetscOptionsReal("-ts_dt", "Time step dt (0: chosen from -ts_phase_error)", NULL, ctx->dt, &ctx->dt, &ctx->dt_set));
   PetscCall(PetscOptionsReal("-ts_max_time", "End time", NULL, ctx->max_time, &ctx->max_time, NULL));
   PetscCall(PetscOptionsReal("-ts_phase_error", "Accuracy target that sets the default -ts_dt and -mesh_h: phase error of the fastest excited mode at the end time", NULL, ctx->phase_error, &ctx->phase_error, NULL));
   PetscCall(PetscOptionsBool("-ts_view", "Print the discretization (degree, h, dt, Coriolis velocity) and the rule that chose it (also with -ts_monitor)", NULL, ctx->discretization_view, &ctx->discretization_view, NULL));
@@ -103,7 +103,8 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCheck(ctx->checkpoint_every >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-checkpoint_every %" PetscInt_FMT " must be >= 0", ctx->checkpoint_every);
   PetscCheck(ctx->checkpoint[0], ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-checkpoint needs a file name");
   PetscCheck(ctx->phase_error > 0 && ctx->phase_error < 1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_phase_error %g must lie in (0, 1)", (double)ctx->phase_error);
-  PetscCheck(ctx->mesh_h > 0 || !ctx->mesh_h_set, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_h %g must be > 0", (double)ctx->mesh_h);
+  PetscCheck(ctx->mesh_h >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_h %g must be > 0 (or 0: chosen from -ts_phase_error)", (double)ctx->mesh_h);
+  ctx->mesh_h_set = (PetscBool)(ctx->mesh_h > 0);
   PetscCheck(ctx->r_inner > 0 && ctx->r_inner < ctx->r_outer, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-r_inner %g and -r_outer %g must satisfy 0 < r_inner < r_outer", (double)ctx->r_inner, (double)ctx->r_outer);
   PetscCheck(ctx->mesh_file[0] || !ctx->mesh_h_set || ctx->mesh_h < ctx->r_outer - ctx->r_inner, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_h %g must be smaller than the annulus width r_outer - r_inner = %g", (double)ctx->mesh_h, (double)(ctx->r_outer - ctx->r_inner));
   PetscCheck(ctx->degree == 1 || ctx->degree == 2, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-degree %" PetscInt_FMT " must be 1 or 2", ctx->degree);
@@ -111,7 +112,8 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCheck(ctx->young > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-young %g must be > 0", (double)ctx->young);
   PetscCheck(ctx->poisson > -1 && ctx->poisson < 0.5, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-poisson %g must lie in (-1, 0.5)", (double)ctx->poisson);
   PetscCheck(ctx->density > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-density %g must be > 0", (double)ctx->density);
-  PetscCheck(ctx->dt > 0 || !ctx->dt_set, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_dt %g must be > 0", (double)ctx->dt);
+  PetscCheck(ctx->dt >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_dt %g must be > 0 (or 0: chosen from -ts_phase_error)", (double)ctx->dt);
+  ctx->dt_set = (PetscBool)(ctx->dt > 0);
   PetscCheck(ctx->max_time >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_max_time %g must be >= 0", (double)ctx->max_time);
   PetscCheck(ctx->max_steps >= -1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_max_steps %" PetscInt_FMT " must be >= 0 (or -1 for no cap)", ctx->max_steps);
   PetscCheck(ctx->damping >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-damping %g must be >= 0", (double)ctx->damping);
