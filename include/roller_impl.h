@@ -169,6 +169,7 @@ PETSC_INTERN PetscErrorCode RollerCheckRotation(Roller);
 /* checkpoint.c */
 PETSC_INTERN PetscErrorCode RollerCheckpointWrite(Roller, const char *);
 PETSC_INTERN PetscErrorCode RollerCheckpointRead(Roller, const char *);
+PETSC_INTERN PetscErrorCode RollerCheckpointDiscretization(Roller, const char *);
 PETSC_INTERN PetscErrorCode RollerSignalsInstall(void);
 PETSC_INTERN PetscErrorCode RollerSignalCaught(Roller, PetscInt *);
 

@@ -67,10 +67,37 @@ PetscErrorCode RollerCheckpointWrite(Roller ctx, const char *path)
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "dt", PETSC_REAL, &ctx->dt));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "dofs", PETSC_INT, &N));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "degree", PETSC_INT, &ctx->degree));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "mesh_h", PETSC_REAL, &ctx->mesh_h));
   PetscCall(PetscViewerDestroy(&viewer));
   PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
   if (rank == 0) PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-checkpoint %s: cannot rename %s to it", path, tmp);
   PetscCallMPI(MPI_Barrier(ctx->comm));
+  PetscFunctionReturn(0);
+}
+
+/* The discretization a restart continues with where the options do not give it: the checkpoint's -ts_dt and
+   -mesh_h (the accurate defaults would follow the new -ts_max_time). Called before the mesh is built. */
+PetscErrorCode RollerCheckpointDiscretization(Roller ctx, const char *path)
+{
+  PetscViewer viewer;
+  PetscBool   exists;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscTestFile(path, 'r', &exists));
+  PetscCheck(exists, ctx->comm, PETSC_ERR_FILE_OPEN, "-restart %s: no such readable file", path);
+  PetscCall(PetscViewerHDF5Open(ctx->comm, path, FILE_MODE_READ, &viewer));
+  PetscCall(PetscViewerHDF5HasAttribute(viewer, "/", "dt", &exists));
+  PetscCheck(exists, ctx->comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: not a Roller checkpoint (no dt attribute)", path);
+  if (!ctx->dt_set) {
+    PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "dt", PETSC_REAL, NULL, &ctx->dt));
+    ctx->dt_set = PETSC_TRUE;
+  }
+  PetscCall(PetscViewerHDF5HasAttribute(viewer, "/", "mesh_h", &exists));
+  if (!ctx->mesh_h_set && !ctx->mesh_file[0] && exists) {
+    PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "mesh_h", PETSC_REAL, NULL, &ctx->mesh_h));
+    ctx->mesh_h_set = PETSC_TRUE;
+  }
+  PetscCall(PetscViewerDestroy(&viewer));
   PetscFunctionReturn(0);
 }
 
@@ -94,7 +121,7 @@ PetscErrorCode RollerCheckpointRead(Roller ctx, const char *path)
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "dt", PETSC_REAL, NULL, &dt));
   PetscCall(VecGetSize(ctx->xi1, &N));
   PetscCheck(dofs == N && degree == ctx->degree, ctx->comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written for %" PetscInt_FMT " dofs of P%" PetscInt_FMT ", this run has %" PetscInt_FMT " of P%" PetscInt_FMT " (use the same mesh and -degree)", path, dofs, degree, N, ctx->degree);
-  PetscCheck(dt == ctx->dt, ctx->comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written with -ts_dt %.17g, this run has %.17g (a default dt follows -ts_max_time and -ts_phase_error: to run on past the original end time, give the original -ts_dt and -mesh_h, which -ts_view prints)", path, (double)dt, (double)ctx->dt);
+  PetscCheck(dt == ctx->dt, ctx->comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written with -ts_dt %.17g, this run has %.17g", path, (double)dt, (double)ctx->dt);
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "step", PETSC_INT, NULL, &ctx->step));
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "time", PETSC_REAL, NULL, &ctx->time));
   History(ctx, v);

@@ -128,6 +128,7 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   if (ctx->mms != ROLLER_MMS_NONE) ctx->ic = ROLLER_IC_MMS;
   PetscCheck(ctx->ic != ROLLER_IC_MMS || ctx->mms != ROLLER_MMS_NONE, ctx->comm, PETSC_ERR_ARG_INCOMP, "-initial_condition mms needs -mms linear or sine");
   PetscCall(RollerLameFromYoung(ctx->young, ctx->poisson, &ctx->lambda, &ctx->mu));
+  if (ctx->restart[0]) PetscCall(RollerCheckpointDiscretization(ctx, ctx->restart));
   PetscCall(RollerChooseMeshSize(ctx));
   PetscFunctionReturn(0);
 }
