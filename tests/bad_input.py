@@ -1,6 +1,10 @@
 """Bad input: every option out of range, a bad restart, an unwritable output path, fail at once with one
 message that names the option (or file), the value and what is allowed, a non-zero exit, and no output
-file left behind that looks complete."""
+file left behind that looks complete.
+
+-ts_dt 0 and -mesh_h 0 are no longer bad input: they mean "chosen from -ts_phase_error" (the default), so the
+-ts_dt case is a negative step. The runs use the default discretization (P2 curved, extrapolated Coriolis
+velocity, default dt) on the coarse mesh -mesh_h 0.05 for at most 2 steps: what is checked is the refusal."""
 import os
 
 from rollertest import Checker, run
@@ -16,7 +20,8 @@ cases = [
     (["-poisson", "-1.5"], "-poisson", "-1.5"),
     (["-density", "-1"], "-density", "-1"),
     (["-degree", "3"], "-degree", "3"),
-    (["-ts_dt", "0"], "-ts_dt", "0"),
+    (["-ts_dt", "-0.01"], "-ts_dt", "-0.01"),
+    (["-ts_phase_error", "1"], "-ts_phase_error", "1"),
     (["-ts_max_time", "-1"], "-ts_max_time", "-1"),
     (["-ts_max_steps", "-5"], "-ts_max_steps", "-5"),
     (["-damping", "-1"], "-damping", "-1"),

@@ -4,13 +4,17 @@
   the Coriolis coupling 2 omega is not small against its frequency, so the scaling is only roughly
   1/sqrt(E): the bound is loose on purpose, docs/validation.md has the numbers);
 - the perturbed rotation theta = omega t + a cos(b t), b = 2 pi / 9.75 (figure 7) makes alpha grow
-  steadily, while the unperturbed amplitude stays constant (energy conservation)."""
+  steadily, while the unperturbed amplitude stays constant (energy conservation).
+
+Discretization: these are the paper's observations with the paper's scheme, so it is pinned: P1 (-degree 1),
+the backward Coriolis velocity, h = 0.025, dt = 0.025 (the defaults are P2 curved, extrapolated, and dt, h
+from -ts_phase_error)."""
 import numpy as np
 
 from rollertest import Checker, read_csv, run
 
 c = Checker("dmf_paper")
-base = ["-mesh_h", 0.025, "-ts_dt", 0.025, "-quiet"]
+base = ["-mesh_h", 0.025, "-ts_dt", 0.025, "-degree", 1, "-coriolis_velocity", "backward", "-quiet"]
 
 
 def period(t, x):

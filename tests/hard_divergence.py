@@ -1,6 +1,9 @@
 """Divergence: a run that blows up (rotation far beyond the centrifugal-softening limit, with the check
 switched off) stops with a message naming the step and the time, exits non-zero, and leaves the last good
-state in the checkpoint, from which a restart can continue."""
+state in the checkpoint, from which a restart can continue.
+
+Discretization: Roller's default degree and Coriolis velocity (P2 curved, extrapolated): the divergence
+handling must work for what users run; h and dt are given (coarse, so that the blow-up comes quickly)."""
 import re
 
 import h5py

@@ -2,7 +2,12 @@
 whatever dt) loses stability when theta' reaches omega_1, the lowest natural frequency of the annulus
 clamped on Gamma_D. Roller computes omega_1 and refuses faster rotations with a message; below the limit
 (centred Coriolis) the solution stays bounded, above it (check disabled) it grows exponentially: the
-limit is the physical one."""
+limit is the physical one.
+
+Discretization: Roller's default degree (P2 curved; omega_1 is then that of the P2 model, 0.723 for E = 0.1);
+the Coriolis velocity is the centred one (given: the explicit variants have their own dt limits), h and dt
+are given (coarse: omega_1 is computed for the discrete model on this mesh, and the limit does not depend
+on dt)."""
 import re
 
 import numpy as np

@@ -1,7 +1,10 @@
 """Large steps: dt 10x and 100x the wave-speed step h/c_p. The scheme is implicit: in the Theorem 1
 setting the energy stays exactly conserved, and with the rotation on and the implicit centred Coriolis
 term the solution stays bounded over a long run. (The explicit Coriolis variants are only conditionally
-stable: docs/stability.md has the measured limits.)"""
+stable: docs/stability.md has the measured limits.)
+
+Discretization: Roller's default degree (P2 curved; its node spacing is h/2, so the steps are about 20x and
+200x its wave-speed step); h and dt are given, and the Coriolis velocity of the rotating runs is the centred one."""
 import math
 
 import numpy as np

@@ -7,6 +7,11 @@ indexed up to its last written step; a complete run leaves no .part file.
 
     output_xdmf.py        serial (P1 and P2, killed run)
     output_xdmf.py mpi    the same checks on 2 ranks (P1)
+
+Discretization: the output format does not depend on it; the degree is given where a check depends on it (P1
+for the recomputed R, alpha and |sigma|), the killed run uses the default (P2 curved). -ts_dt 0.0125 is given
+so that the 20 steps of a run span t = 0.25 and the fields are well away from rest (the default dt from
+-ts_phase_error, 0.00172, would end them at t = 0.034).
 """
 import os
 import signal
@@ -20,7 +25,7 @@ import numpy as np
 
 from rollertest import EXE, MPIEXEC, Checker, read_csv, run
 
-MESH = ["-mesh_h", "0.05"]
+MESH = ["-mesh_h", "0.05", "-ts_dt", "0.0125"]
 chk = Checker("output_xdmf")
 
 

@@ -2,7 +2,13 @@
 functions of t): an interrupted-then-restarted run gives the same CSV rows as an uninterrupted one, to the
 last digit. SIGTERM (what a batch scheduler sends first) finishes the step, writes the checkpoint and exits
 cleanly with a message saying how to restart. Checkpoints are written to a temporary name and renamed,
-so even a SIGKILL in the middle of the run leaves a readable latest checkpoint."""
+so even a SIGKILL in the middle of the run leaves a readable latest checkpoint.
+
+Discretization: the free and contact restarts run Roller's default (P2 curved, the extrapolated Coriolis
+velocity, which reads xi^{k-3} and so needs the full history from the checkpoint, dt from -ts_phase_error:
+0.00384 for t <= 4) on -mesh_h 0.05. The SIGTERM/SIGKILL runs (to t = 60 on -mesh_h 0.0125) pin what they
+were written with, P1, -ts_dt 0.0125, backward Coriolis velocity: 4800 steps, where the defaults would take
+about 60,000 P2 steps."""
 import os
 import signal
 import subprocess
@@ -29,7 +35,7 @@ for scene, extra in (("free", []), ("contact", ["-obstacle", "-obstacle_speed", 
     c.check(same, f"{scene}: stopped at step 150, restarted from the step-150 checkpoint: CSV identical to the uninterrupted run")
 
 # SIGTERM: clean stop with a checkpoint, then a restart that ends where the uninterrupted run ends
-base = ["-mesh_h", "0.0125", "-ts_max_time", "60", "-quiet"]
+base = ["-mesh_h", "0.0125", "-degree", "1", "-ts_dt", "0.0125", "-coriolis_velocity", "backward", "-ts_max_time", "60", "-quiet"]
 run(base + ["-monitor_csv", "term_full.csv"])
 proc = subprocess.Popen([EXE] + base + ["-checkpoint", "term.h5", "-monitor_csv", "term_cut.csv"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
 wait_for("term_cut.csv.part", rows=200)
