@@ -1,4 +1,4 @@
-"""Compression (issue 4; SPEC section 5 scene jobs/compression.yaml on a coarse mesh with a faster, shallower
+"""Compression (issue 4; docs/model.md section 5 scene jobs/compression.yaml on a coarse mesh with a faster, shallower
 obstacle): at every step no node penetrates (gap_min >= -1e-10), the obstacle only pushes (contact force
 >= 0, and every multiplier >= 0 through the KKT residual), the obstacle is in contact at every step once it
 has started pressing, the contact force grows while the obstacle advances, and the KKT residual is at

@@ -1,4 +1,4 @@
-"""Theorem 1 (SPEC section 2): theta = 0, xi = 0 on the whole boundary, no damping, a non-zero initial
+"""Theorem 1 (docs/model.md section 2): theta = 0, xi = 0 on the whole boundary, no damping, a non-zero initial
 state: the discrete energy E^k is the same for every k, to solver tolerance (1e-9 relative over 500
 steps), for P1 and P2. With damping eta > 0 the energy must decrease at every step instead.
 

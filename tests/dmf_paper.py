@@ -1,4 +1,4 @@
-"""The paper's observations without obstacle (SPEC section 5), as assertions:
+"""The paper's observations without obstacle (docs/model.md section 5), as assertions:
 - doubling E halves the amplitude of R and shortens its period by sqrt(2) (the radial P mode);
 - alpha's amplitude falls as E grows, and its period shortens too (the slow, Coriolis-driven S mode;
   the Coriolis coupling 2 omega is not small against its frequency, so the scaling is only roughly

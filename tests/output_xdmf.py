@@ -121,7 +121,7 @@ def boundary_edges(x, cells, r_mid):
 
 
 def boundary_means(x, xi, edges):
-    """R and alpha of SPEC section 4 for the P1 field xi: 5-point Gauss on every straight outer edge,
+    """R and alpha of docs/model.md section 4 for the P1 field xi: 5-point Gauss on every straight outer edge,
     as diagnostics.c does."""
     s, w = np.polynomial.legendre.leggauss(5)
     s, w = 0.5 * (s + 1), 0.5 * w
