@@ -77,6 +77,7 @@ struct _n_Roller {
   /* Obstacle g(t) = min(speed t, depth) - r_outer, damping eta */
   PetscBool obstacle;
   PetscReal obstacle_speed, obstacle_depth, damping;
+  PetscBool static_solve; /* -static: the rest state at the obstacle of t = max_time in one step, A = K */
 
   /* Time */
   PetscReal dt, max_time;

@@ -171,8 +171,10 @@ PetscErrorCode RollerOperatorsSetUp(Roller ctx)
   PetscCall(AssembleMatrix(ctx, "M", 1.0, 0.0, 0.0, &ctx->M));
   PetscCall(AssembleMatrix(ctx, "K", 0.0, 1.0, 0.0, &ctx->K));
   PetscCall(MatDuplicate(ctx->K, MAT_COPY_VALUES, &ctx->A));
-  PetscCall(MatScale(ctx->A, 0.5));
-  PetscCall(MatAXPY(ctx->A, shift, ctx->M, SAME_NONZERO_PATTERN));
+  if (!ctx->static_solve) { /* -static: A = K, the step from rest is min 1/2 xi^T K xi over the admissible set */
+    PetscCall(MatScale(ctx->A, 0.5));
+    PetscCall(MatAXPY(ctx->A, shift, ctx->M, SAME_NONZERO_PATTERN));
+  }
   if (ctx->coriolis == ROLLER_CORIOLIS_CENTERED) {
     /* A - rho theta'/dt G: no longer symmetric (G is skew), still positive definite */
     PetscCall(AssembleMatrix(ctx, "G", 0.0, 0.0, 1.0, &ctx->G));

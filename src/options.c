@@ -79,6 +79,7 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsReal("-obstacle_speed", "Obstacle speed v", NULL, ctx->obstacle_speed, &ctx->obstacle_speed, NULL));
   PetscCall(PetscOptionsReal("-obstacle_depth", "Final indentation depth", NULL, ctx->obstacle_depth, &ctx->obstacle_depth, NULL));
   PetscCall(PetscOptionsReal("-damping", "Damping eta of the DMF functional", NULL, ctx->damping, &ctx->damping, NULL));
+  PetscCall(PetscOptionsBool("-static", "Solve the static contact (Signorini) problem K xi = E N lambda at the obstacle of t = -ts_max_time in one step, the state a damped run with -omega 0 comes to rest in (docs/validation.md section 5)", NULL, ctx->static_solve, &ctx->static_solve, NULL));
   PetscOptionsEnd();
 
   PetscOptionsBegin(ctx->comm, NULL, "Roller: time stepping", NULL);
@@ -125,6 +126,11 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCheck(ctx->mms == ROLLER_MMS_NONE || (ctx->clamp_outer && !ctx->obstacle), ctx->comm, PETSC_ERR_ARG_INCOMP, "-mms %s needs -clamp_outer and no -obstacle", RollerMMSTypes[ctx->mms]);
   PetscCheck(!(ctx->obstacle && ctx->coriolis == ROLLER_CORIOLIS_CENTERED), ctx->comm, PETSC_ERR_ARG_INCOMP, "-coriolis_velocity centered makes the step matrix non-symmetric: the step is then no longer a minimization, and -obstacle needs one (use backward or extrapolated)");
   PetscCheck(!(ctx->obstacle && ctx->clamp_outer), ctx->comm, PETSC_ERR_ARG_INCOMP, "-obstacle cannot be combined with -clamp_outer (Gamma_C would be fixed)");
+  PetscCheck(!ctx->static_solve || (ctx->omega == 0 && ctx->theta_a == 0 && ctx->ic == ROLLER_IC_REST && ctx->mms == ROLLER_MMS_NONE && !ctx->restart[0] && ctx->max_time > 0), ctx->comm, PETSC_ERR_ARG_INCOMP, "-static needs -omega 0, -theta_a 0, the rest initial condition, no -mms or -restart, and -ts_max_time > 0");
+  if (ctx->static_solve) { /* one step from rest to t = max_time with A = K: the right-hand side is 0 */
+    ctx->dt        = ctx->max_time;
+    ctx->max_steps = 1;
+  }
   if (ctx->mms != ROLLER_MMS_NONE) ctx->ic = ROLLER_IC_MMS;
   PetscCheck(ctx->ic != ROLLER_IC_MMS || ctx->mms != ROLLER_MMS_NONE, ctx->comm, PETSC_ERR_ARG_INCOMP, "-initial_condition mms needs -mms linear or sine");
   PetscCall(RollerLameFromYoung(ctx->young, ctx->poisson, &ctx->lambda, &ctx->mu));
