@@ -4,8 +4,10 @@
 
    A run that fails must not leave output that looks complete: the files are written as F.part (CSV and
    HDF5) and <base>.part.xmf (the index) and renamed to F and <base>.xmf by RollerOutputDestroy, which only
-   a successful run reaches. The index is rewritten, atomically, after every field write and the HDF5
-   file flushed first, so a killed run still has a readable F.part indexed up to its last written step.
+   a successful run reaches. After every field write the HDF5 file is flushed and the new step appended to
+   the index in place (XdmfAppend: written once, not rewritten, so N steps cost O(N)), so a killed run
+   still has a readable F.part indexed up to its last written step; the final <base>.xmf is written whole
+   once, at the end.
 
    The fields are written at the mesh vertices (P1), vectors with a zero third component: ParaView's
    vector filters (Warp By Vector, Glyph) need 3-component vectors, and the XDMF Function "JOIN" that
@@ -14,7 +16,11 @@
 #include <roller_impl.h>
 #include <petscviewerhdf5.h>
 #include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "kernels.h"
 
 typedef void (*PointwiseFunc)(PetscInt, PetscInt, PetscInt, const PetscInt[], const PetscInt[], const PetscScalar[], const PetscScalar[], const PetscScalar[], const PetscInt[], const PetscInt[], const PetscScalar[], const PetscScalar[], const PetscScalar[], PetscReal, const PetscReal[], PetscInt, const PetscScalar[], PetscScalar[]);
@@ -48,6 +54,8 @@ struct _n_RollerOutput {
   char        h5_path[PETSC_MAX_PATH_LEN], h5_part[PETSC_MAX_PATH_LEN];
   char        xmf_path[PETSC_MAX_PATH_LEN], xmf_part[PETSC_MAX_PATH_LEN];
   PetscViewer h5;
+  int         xmf_fd;   /* rank 0: the open xmf_part, grown in place by XdmfAppend (-1: not yet created) */
+  off_t       xmf_tail; /* where its closing tags start */
   PetscInt    every, written, times_size;
   PetscReal  *times; /* t of every written step, the XDMF time values */
   Dataset     vertices, cells;
@@ -276,46 +284,140 @@ static PetscErrorCode XmlAttribute(FILE *fp, const char h5_name[], const char na
   PetscFunctionReturn(0);
 }
 
-/* The index of h5_file (referenced by its base name: the index sits beside it) written to xmf. */
+/* The index is written in three parts: the head (the mesh), one Grid per written step, and a fixed tail
+   that closes the document. */
+static const char xdmf_tail[] = "    </Grid>\n  </Domain>\n</Xdmf>\n";
+
+/* The name by which the index refers to h5_file: its base name (the index sits beside it). */
+static PetscErrorCode XdmfH5Name(const char h5_file[], const char **h5_name)
+{
+  PetscFunctionBeginUser;
+  *h5_name = strrchr(h5_file, '/') ? strrchr(h5_file, '/') + 1 : h5_file;
+  PetscCheck(!strpbrk(*h5_name, "&<>\":"), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "-output %s: the XDMF index cannot refer to a file name with any of &<>\": in it", h5_file);
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode XdmfHead(FILE *fp, RollerOutput out, const char h5_name[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"2.0\">\n  <Domain Name=\"roller\">\n    "));
+  PetscCall(XmlDataItem(fp, h5_name, &out->cells, " Name=\"cells\""));
+  PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "    "));
+  PetscCall(XmlDataItem(fp, h5_name, &out->vertices, " Name=\"vertices\""));
+  PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "    <Grid Name=\"roller\" GridType=\"Collection\" CollectionType=\"Temporal\">\n"));
+  PetscFunctionReturn(0);
+}
+
+/* The Grid of written step k; the datasets' shapes are those of out->field[] now (LayoutUpdate). */
+static PetscErrorCode XdmfGrid(FILE *fp, RollerOutput out, const char h5_name[], PetscInt k)
+{
+  const char *corners;
+
+  PetscFunctionBeginUser;
+  switch (out->cells.dims[1]) {
+  case 3: corners = "Triangle"; break;
+  case 4: corners = "Quadrilateral"; break;
+  default: SETERRQ(PETSC_COMM_SELF, PETSC_ERR_SUP, "Cells with %d corners in %s", (int)out->cells.dims[1], out->cells.path);
+  }
+  PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "      <Grid Name=\"step %" PetscInt_FMT "\" GridType=\"Uniform\">\n        <Time Value=\"%.17g\"/>\n", k, (double)out->times[k]));
+  PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "        <Topology TopologyType=\"%s\" NumberOfElements=\"%llu\"><DataItem Reference=\"XML\">/Xdmf/Domain/DataItem[@Name=\"cells\"]</DataItem></Topology>\n", corners, (unsigned long long)out->cells.dims[0]));
+  PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "        <Geometry GeometryType=\"%s\"><DataItem Reference=\"XML\">/Xdmf/Domain/DataItem[@Name=\"vertices\"]</DataItem></Geometry>\n", out->vertices.dims[1] == 3 ? "XYZ" : "XY"));
+  for (PetscInt f = 0; f < out->nfields; ++f) {
+    const char *name;
+
+    PetscCall(PetscObjectGetName((PetscObject)out->field[f].vec, &name));
+    PetscCall(XmlAttribute(fp, h5_name, name, &out->field[f].data, k));
+  }
+  PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "      </Grid>\n"));
+  PetscFunctionReturn(0);
+}
+
+/* The complete index of h5_file, every written step, to xmf (through a temporary name, renamed). Once, at
+   the end of a successful run: the steps dimension stated is then the final one in every Grid. */
 static PetscErrorCode XdmfWrite(MPI_Comm comm, RollerOutput out, const char h5_file[], const char xmf[])
 {
   char        tmp[PETSC_MAX_PATH_LEN];
-  const char *h5_name = strrchr(h5_file, '/') ? strrchr(h5_file, '/') + 1 : h5_file;
-  const char *corners;
+  const char *h5_name;
   PetscMPIInt rank;
   FILE       *fp;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank) PetscFunctionReturn(0);
-  PetscCheck(!strpbrk(h5_name, "&<>\":"), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "-output %s: the XDMF index cannot refer to a file name with any of &<>\": in it", h5_file);
-  switch (out->cells.dims[1]) {
-  case 3: corners = "Triangle"; break;
-  case 4: corners = "Quadrilateral"; break;
-  default: SETERRQ(PETSC_COMM_SELF, PETSC_ERR_SUP, "Cells with %d corners in %s", (int)out->cells.dims[1], out->cells.path);
-  }
+  PetscCall(XdmfH5Name(h5_file, &h5_name));
   PetscCall(JoinPath(tmp, sizeof(tmp), xmf, ".tmp", "-output"));
   PetscCall(PetscFOpen(PETSC_COMM_SELF, tmp, "w", &fp));
-  PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"2.0\">\n  <Domain Name=\"roller\">\n    "));
-  PetscCall(XmlDataItem(fp, h5_name, &out->cells, " Name=\"cells\""));
-  PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "    "));
-  PetscCall(XmlDataItem(fp, h5_name, &out->vertices, " Name=\"vertices\""));
-  PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "    <Grid Name=\"roller\" GridType=\"Collection\" CollectionType=\"Temporal\">\n"));
-  for (PetscInt k = 0; k < out->written; ++k) {
-    PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "      <Grid Name=\"step %" PetscInt_FMT "\" GridType=\"Uniform\">\n        <Time Value=\"%.17g\"/>\n", k, (double)out->times[k]));
-    PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "        <Topology TopologyType=\"%s\" NumberOfElements=\"%llu\"><DataItem Reference=\"XML\">/Xdmf/Domain/DataItem[@Name=\"cells\"]</DataItem></Topology>\n", corners, (unsigned long long)out->cells.dims[0]));
-    PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "        <Geometry GeometryType=\"%s\"><DataItem Reference=\"XML\">/Xdmf/Domain/DataItem[@Name=\"vertices\"]</DataItem></Geometry>\n", out->vertices.dims[1] == 3 ? "XYZ" : "XY"));
-    for (PetscInt f = 0; f < out->nfields; ++f) {
-      const char *name;
-
-      PetscCall(PetscObjectGetName((PetscObject)out->field[f].vec, &name));
-      PetscCall(XmlAttribute(fp, h5_name, name, &out->field[f].data, k));
-    }
-    PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "      </Grid>\n"));
-  }
-  PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "    </Grid>\n  </Domain>\n</Xdmf>\n"));
+  PetscCall(XdmfHead(fp, out, h5_name));
+  for (PetscInt k = 0; k < out->written; ++k) PetscCall(XdmfGrid(fp, out, h5_name, k));
+  PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%s", xdmf_tail));
   PetscCall(PetscFClose(PETSC_COMM_SELF, fp));
   PetscCheck(rename(tmp, xmf) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot rename %s to %s: %s", tmp, xmf, strerror(errno));
+  PetscFunctionReturn(0);
+}
+
+/* All of buf[0, len) to fd at offset off, in one pwrite unless the system writes less. */
+static PetscErrorCode WriteAt(int fd, const char path[], const char *buf, size_t len, off_t off)
+{
+  PetscFunctionBeginUser;
+  while (len > 0) {
+    ssize_t n = pwrite(fd, buf, len, off);
+
+    if (n < 0 && errno == EINTR) continue;
+    PetscCheck(n > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write the XDMF index %s: %s", path, n < 0 ? strerror(errno) : "nothing written");
+    buf += n;
+    len -= (size_t)n;
+    off += n;
+  }
+  PetscFunctionReturn(0);
+}
+
+/* After every field write, the running index of the .part HDF5 file grows by the new step in place, so
+   writing N steps costs O(N), not O(N^2) as rewriting it would. The first step creates it whole under a
+   temporary name and renames it (no reader sees it empty); it stays open on rank 0, and every later step
+   overwrites the fixed tail (the closing tags, at out->xmf_tail) with its Grid followed by the tail, in
+   one write, so the file is a complete index after every step. Each Grid states the datasets' shapes as
+   they were when it was written (the steps dimension grows; readers take its HyperSlab, inside them). */
+static PetscErrorCode XdmfAppend(MPI_Comm comm, RollerOutput out)
+{
+  const char *h5_name;
+  char       *buf = NULL;
+  size_t      len = 0;
+  PetscMPIInt rank;
+  FILE       *ms;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank) PetscFunctionReturn(0);
+  PetscCall(XdmfH5Name(out->h5_part, &h5_name));
+  ms = open_memstream(&buf, &len);
+  PetscCheck(ms, PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot build the XDMF index %s in memory: %s", out->xmf_part, strerror(errno));
+  if (out->xmf_fd < 0) {
+    PetscCall(XdmfHead(ms, out, h5_name));
+    for (PetscInt k = 0; k < out->written; ++k) PetscCall(XdmfGrid(ms, out, h5_name, k));
+  } else PetscCall(XdmfGrid(ms, out, h5_name, out->written - 1));
+  PetscCall(PetscFPrintf(PETSC_COMM_SELF, ms, "%s", xdmf_tail));
+  PetscCheck(fclose(ms) == 0 && buf, PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot build the XDMF index %s in memory", out->xmf_part);
+  if (out->xmf_fd < 0) {
+    char tmp[PETSC_MAX_PATH_LEN];
+
+    PetscCall(JoinPath(tmp, sizeof(tmp), out->xmf_part, ".tmp", "-output"));
+    out->xmf_fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0666);
+    PetscCheck(out->xmf_fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot create the XDMF index %s: %s", tmp, strerror(errno));
+    PetscCall(WriteAt(out->xmf_fd, tmp, buf, len, 0));
+    PetscCheck(rename(tmp, out->xmf_part) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot rename %s to %s: %s", tmp, out->xmf_part, strerror(errno));
+    out->xmf_tail = 0;
+  } else PetscCall(WriteAt(out->xmf_fd, out->xmf_part, buf, len, out->xmf_tail));
+  out->xmf_tail += (off_t)(len - strlen(xdmf_tail));
+  free(buf); /* open_memstream's, from malloc */
+  PetscFunctionReturn(0);
+}
+
+/* Rank 0 closes the running index (it stays on disk). */
+static PetscErrorCode XdmfClose(RollerOutput out)
+{
+  PetscFunctionBeginUser;
+  if (out->xmf_fd >= 0) PetscCheck(close(out->xmf_fd) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot close the XDMF index %s: %s", out->xmf_part, strerror(errno));
+  out->xmf_fd = -1;
   PetscFunctionReturn(0);
 }
 
@@ -453,7 +555,8 @@ PetscErrorCode RollerOutputCreate(Roller ctx, RollerOutput *output)
 
   PetscFunctionBeginUser;
   PetscCall(PetscNew(&out));
-  out->every = 10;
+  out->every  = 10;
+  out->xmf_fd = -1;
   PetscOptionsBegin(ctx->comm, NULL, "Roller: output", NULL);
   PetscCall(PetscOptionsString("-monitor_csv", "One CSV row per step: step,t,R,alpha,energy,contact_nodes,contact_force,gap_min,qp_iterations,kkt_residual,theta", NULL, out->csv_path, out->csv_path, sizeof(out->csv_path), &has_csv));
   PetscCall(PetscOptionsString("-output", "Fields to this HDF5 file, with an XDMF index beside it (F.h5 -> F.xmf)", NULL, out->h5_path, out->h5_path, sizeof(out->h5_path), &has_h5));
@@ -532,7 +635,7 @@ static PetscErrorCode WriteFields(Roller ctx, RollerOutput out)
   }
   out->times[out->written++] = ctx->time;
   PetscCall(LayoutUpdate(out));
-  PetscCall(XdmfWrite(ctx->comm, out, out->h5_part, out->xmf_part));
+  PetscCall(XdmfAppend(ctx->comm, out));
   PetscFunctionReturn(0);
 }
 
@@ -569,6 +672,7 @@ PetscErrorCode RollerOutputDestroy(Roller ctx, RollerOutput *output)
   if (out->h5) {
     PetscCall(RollerSeriesWrite(ctx, out->series, out->h5));
     PetscCall(PetscViewerDestroy(&out->h5));
+    PetscCall(XdmfClose(out));
     PetscCall(RenameFile(ctx->comm, out->h5_part, out->h5_path));
     PetscCall(XdmfWrite(ctx->comm, out, out->h5_path, out->xmf_path));
     PetscCall(RemoveStale(ctx->comm, out->xmf_part));

@@ -3,7 +3,9 @@ with the stated shape and type, its times are the CSV's; the fields are right: d
 R(theta)(x + xi) - x recomputed from /geometry/vertices, displacement and the CSV theta, the boundary
 integrals of the written displacement give the CSV's R and alpha, |sigma| is the mean over the cells
 around each vertex of |sigma| recomputed from the P1 displacement; a killed run leaves only .part files,
-indexed up to its last written step; a complete run leaves no .part file.
+indexed up to its last written step (exactly the steps in the HDF5 file, but for one being written), the
+index grown in place while the run went (each version a prefix of the next, without its closing tags); a
+complete run leaves no .part file.
 
     output_xdmf.py        serial (P1 and P2, killed run)
     output_xdmf.py mpi    the same checks on 2 ranks (P1)
@@ -240,11 +242,15 @@ def check_killed(tag):
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.time() + 120
     steps = 0
+    seen = []  # (steps, text) of every complete index read while the run goes
     while time.time() < deadline and proc.poll() is None:
         try:
-            steps = len(ET.parse(part).getroot().findall("./Domain/Grid/Grid"))
+            with open(part) as f:
+                text = f.read()
+            steps = len(ET.fromstring(text).findall("./Domain/Grid/Grid"))
+            seen.append((steps, text))
         except (OSError, ET.ParseError):
-            steps = 0
+            steps = 0  # not created yet, or caught in the middle of a write
         if steps >= 3:
             break
         time.sleep(0.05)
@@ -261,6 +267,22 @@ def check_killed(tag):
     except (AssertionError, KeyError, OSError, ET.ParseError) as e:
         ok, why = False, str(e)
     chk.check(ok, f"{tag}: the index of the killed run is valid {why}")
+    if ok:
+        with h5py.File(h5 + ".part", "r") as f:
+            t5 = f["/time"][:].ravel()
+        names = [g.get("Name") for g in ET.parse(part).getroot().findall("./Domain/Grid/Grid")]
+        chk.check(names == [f"step {k}" for k in range(len(times))] and len(times) <= len(t5) <= len(times) + 1
+                  and np.array_equal(times, t5[:len(times)]),
+                  f"{tag}: the killed run's index names exactly the steps written, in order: {len(times)} indexed, "
+                  f"{len(t5)} in {h5}.part (at most one written and not yet indexed)")
+    # appended in place, never rewritten: every index seen, without its closing tags, starts the next one
+    with open(part) as f:
+        final = f.read()
+    seen.append((len(times) if ok else -1, final))
+    tail = "    </Grid>\n  </Domain>\n</Xdmf>\n"
+    grows = all(a.endswith(tail) and b.startswith(a[:-len(tail)]) and nb >= na
+                for (na, a), (nb, b) in zip(seen, seen[1:]))
+    chk.check(len(seen) >= 2 and grows, f"{tag}: the index grew in place over {len(seen)} readings ({[n for n, _ in seen]} steps)")
     with open(csvf + ".part") as f:
         rows = f.read().splitlines()
     chk.check(len(rows) > 4 * (len(times) - 1) if ok else False, f"{tag}: the CSV of the killed run has {len(rows) - 1} rows")
