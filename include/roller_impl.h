@@ -64,8 +64,8 @@ struct _n_Roller {
   PetscReal boundary_length; /* |Gamma_C| of the discrete (polygonal or curved) outer circle */
 
   /* Discretization */
-  PetscInt  degree;      /* Lagrange degree, 1 (the paper) or 2 */
-  PetscBool clamp_outer; /* xi = 0 on Gamma_C too (Theorem 1 setting) */
+  PetscInt               degree;      /* Lagrange degree, 1 (the paper) or 2 */
+  PetscBool              clamp_outer; /* xi = 0 on Gamma_C too (Theorem 1 setting) */
   RollerCoriolisVelocity coriolis;
 
   /* Material */
@@ -114,8 +114,8 @@ struct _n_Roller {
   /* Boundary functionals: R = w_R . xi, alpha = w_alpha . xi (exact integrals over discrete Gamma_C) */
   Vec w_R, w_alpha;
 
-  RollerContact contact;
-  RollerOutput  output;
+  RollerContact  contact;
+  RollerOutput   output;
   RollerStepInfo info;
 
   PetscLogStage stage[ROLLER_NUM_STAGES];
@@ -131,7 +131,7 @@ PETSC_INTERN PetscErrorCode RollerMeshCreate(Roller);
 PETSC_INTERN PetscErrorCode RollerMeshDistribute(Roller);
 PETSC_INTERN PetscErrorCode RollerMeshMeasure(Roller);
 PETSC_INTERN PetscErrorCode RollerMeshOwnedMask(DM, PetscBool **); /* PETSC_TRUE at the points this rank owns */
-PETSC_INTERN PetscErrorCode RollerGeometrySetUp(Roller); /* geometry.c: curved boundary with -degree 2 */
+PETSC_INTERN PetscErrorCode RollerGeometrySetUp(Roller);           /* geometry.c: curved boundary with -degree 2 */
 
 /* discretization.c */
 PETSC_INTERN PetscErrorCode RollerDiscretizationSetUp(Roller);
@@ -180,9 +180,9 @@ PETSC_INTERN PetscErrorCode RollerComputeErrors(Roller, PetscReal, PetscReal *, 
 
 /* series.c: the diagnostics time series written into the HDF5 output */
 typedef struct _n_RollerSeries *RollerSeries;
-PETSC_INTERN PetscErrorCode RollerSeriesAppend(Roller, RollerSeries *);
-PETSC_INTERN PetscErrorCode RollerSeriesWrite(Roller, RollerSeries, PetscViewer);
-PETSC_INTERN PetscErrorCode RollerSeriesDestroy(RollerSeries *);
+PETSC_INTERN PetscErrorCode     RollerSeriesAppend(Roller, RollerSeries *);
+PETSC_INTERN PetscErrorCode     RollerSeriesWrite(Roller, RollerSeries, PetscViewer);
+PETSC_INTERN PetscErrorCode     RollerSeriesDestroy(RollerSeries *);
 
 /* output.c */
 PETSC_INTERN PetscErrorCode RollerOutputCreate(Roller, RollerOutput *);

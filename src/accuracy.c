@@ -45,7 +45,7 @@ typedef PetscReal (*Determinant)(PetscReal, PetscReal, PetscReal, PetscReal, Pet
 static PetscErrorCode LowestRoot(Roller ctx, Determinant det, const char *what, PetscReal *k)
 {
   const PetscReal ri = ctx->r_inner, ro = ctx->r_outer, L = ro - ri;
-  const PetscInt  n  = 4000;
+  const PetscInt  n = 4000;
   PetscReal       a = 1e-3 / L, fa = det(a, ri, ro, ctx->lambda, ctx->mu), b = a, fb = fa;
   PetscInt        i;
 
@@ -127,12 +127,15 @@ PetscErrorCode RollerChooseTimeStep(Roller ctx)
   w = PetscMax(w_b, ctx->theta_b);
   T = EndTime(ctx, w);
   if (!ctx->dt_set) ctx->dt = PetscSqrtReal(24.0 * ctx->phase_error / (5.0 * w * w * w * T));
-  PetscCall(PetscInfo(NULL, "-ts_dt %g (%s): fastest excited mode w = %g (period %g, %s), T = %g, phase error target %g\n", (double)ctx->dt, ctx->dt_set ? "given" : "from -ts_phase_error", (double)w, (double)(2 * PETSC_PI / w), w_b >= ctx->theta_b ? "radial breathing" : "forcing b", (double)T, (double)ctx->phase_error));
+  PetscCall(PetscInfo(NULL, "-ts_dt %g (%s): fastest excited mode w = %g (period %g, %s), T = %g, phase error target %g\n", (double)ctx->dt, ctx->dt_set ? "given" : "from -ts_phase_error", (double)w, (double)(2 * PETSC_PI / w), w_b >= ctx->theta_b ? "radial breathing" : "forcing b", (double)T,
+                      (double)ctx->phase_error));
   if (ctx->discretization_view) {
     const PetscReal phase = 5.0 * w * T * PetscSqr(w * ctx->dt) / 24.0;
 
-    PetscCall(PetscPrintf(ctx->comm, "roller: P%" PetscInt_FMT "%s, %s -mesh_h %g, -ts_dt %g (%s), -coriolis_velocity %s\n", ctx->degree, ctx->curved ? " curved" : "", ctx->mesh_file[0] ? "mesh file, not" : (ctx->mesh_h_set ? "given" : "from -ts_phase_error:"), (double)ctx->mesh_h, (double)ctx->dt, ctx->dt_set ? "given" : "from -ts_phase_error", RollerCoriolisVelocities[ctx->coriolis]));
-    PetscCall(PetscPrintf(ctx->comm, "roller: fastest excited mode: %s, w = %g (period %g); torsional mode w_t = %g (period %g); end time %g; its phase error (5/24) w T (w dt)^2 = %.3g (target %g)\n", w_b >= ctx->theta_b ? "radial breathing" : "the forcing b", (double)w, (double)(2 * PETSC_PI / w), (double)w_t, (double)(2 * PETSC_PI / w_t), (double)T, (double)phase, (double)ctx->phase_error));
+    PetscCall(PetscPrintf(ctx->comm, "roller: P%" PetscInt_FMT "%s, %s -mesh_h %g, -ts_dt %g (%s), -coriolis_velocity %s\n", ctx->degree, ctx->curved ? " curved" : "", ctx->mesh_file[0] ? "mesh file, not" : (ctx->mesh_h_set ? "given" : "from -ts_phase_error:"),
+                          (double)ctx->mesh_h, (double)ctx->dt, ctx->dt_set ? "given" : "from -ts_phase_error", RollerCoriolisVelocities[ctx->coriolis]));
+    PetscCall(PetscPrintf(ctx->comm, "roller: fastest excited mode: %s, w = %g (period %g); torsional mode w_t = %g (period %g); end time %g; its phase error (5/24) w T (w dt)^2 = %.3g (target %g)\n", w_b >= ctx->theta_b ? "radial breathing" : "the forcing b", (double)w, (double)(2 * PETSC_PI / w), (double)w_t, (double)(2 * PETSC_PI / w_t), (double)T, (double)phase,
+                          (double)ctx->phase_error));
   }
   PetscFunctionReturn(0);
 }

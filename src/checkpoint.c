@@ -75,6 +75,20 @@ PetscErrorCode RollerCheckpointWrite(Roller ctx, const char *path)
   PetscFunctionReturn(0);
 }
 
+/* Open the checkpoint for reading: a readable file that a Roller run wrote (it has the step attribute). */
+static PetscErrorCode CheckpointOpen(Roller ctx, const char *path, PetscViewer *viewer)
+{
+  PetscBool exists;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscTestFile(path, 'r', &exists));
+  PetscCheck(exists, ctx->comm, PETSC_ERR_FILE_OPEN, "-restart %s: no such readable file", path);
+  PetscCall(PetscViewerHDF5Open(ctx->comm, path, FILE_MODE_READ, viewer));
+  PetscCall(PetscViewerHDF5HasAttribute(*viewer, "/", "step", &exists));
+  PetscCheck(exists, ctx->comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: not a Roller checkpoint (no step attribute)", path);
+  PetscFunctionReturn(0);
+}
+
 /* The discretization a restart continues with where the options do not give it: the checkpoint's -ts_dt and
    -mesh_h (the accurate defaults would follow the new -ts_max_time). Called before the mesh is built. */
 PetscErrorCode RollerCheckpointDiscretization(Roller ctx, const char *path)
@@ -83,11 +97,7 @@ PetscErrorCode RollerCheckpointDiscretization(Roller ctx, const char *path)
   PetscBool   exists;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscTestFile(path, 'r', &exists));
-  PetscCheck(exists, ctx->comm, PETSC_ERR_FILE_OPEN, "-restart %s: no such readable file", path);
-  PetscCall(PetscViewerHDF5Open(ctx->comm, path, FILE_MODE_READ, &viewer));
-  PetscCall(PetscViewerHDF5HasAttribute(viewer, "/", "dt", &exists));
-  PetscCheck(exists, ctx->comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: not a Roller checkpoint (no dt attribute)", path);
+  PetscCall(CheckpointOpen(ctx, path, &viewer));
   if (!ctx->dt_set) {
     PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "dt", PETSC_REAL, NULL, &ctx->dt));
     ctx->dt_set = PETSC_TRUE;
@@ -108,19 +118,15 @@ PetscErrorCode RollerCheckpointRead(Roller ctx, const char *path)
   Vec         v[3];
   PetscInt    N, dofs, degree;
   PetscReal   dt;
-  PetscBool   exists;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscTestFile(path, 'r', &exists));
-  PetscCheck(exists, ctx->comm, PETSC_ERR_FILE_OPEN, "-restart %s: no such readable file", path);
-  PetscCall(PetscViewerHDF5Open(ctx->comm, path, FILE_MODE_READ, &viewer));
-  PetscCall(PetscViewerHDF5HasAttribute(viewer, "/", "step", &exists));
-  PetscCheck(exists, ctx->comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: not a Roller checkpoint (no step attribute)", path);
+  PetscCall(CheckpointOpen(ctx, path, &viewer));
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "dofs", PETSC_INT, NULL, &dofs));
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "degree", PETSC_INT, NULL, &degree));
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "dt", PETSC_REAL, NULL, &dt));
   PetscCall(VecGetSize(ctx->xi1, &N));
-  PetscCheck(dofs == N && degree == ctx->degree, ctx->comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written for %" PetscInt_FMT " dofs of P%" PetscInt_FMT ", this run has %" PetscInt_FMT " of P%" PetscInt_FMT " (use the same mesh and -degree)", path, dofs, degree, N, ctx->degree);
+  PetscCheck(dofs == N && degree == ctx->degree, ctx->comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written for %" PetscInt_FMT " dofs of P%" PetscInt_FMT ", this run has %" PetscInt_FMT " of P%" PetscInt_FMT " (use the same mesh and -degree)", path, dofs, degree, N,
+             ctx->degree);
   PetscCheck(dt == ctx->dt, ctx->comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written with -ts_dt %.17g, this run has %.17g", path, (double)dt, (double)ctx->dt);
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "step", PETSC_INT, NULL, &ctx->step));
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "time", PETSC_REAL, NULL, &ctx->time));

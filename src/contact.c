@@ -79,10 +79,10 @@ static PetscErrorCode ContactGatherNodes(Roller ctx, RollerContact c)
     PetscCheck(gcdof == 0 && gdof % 2 == 0, ctx->comm, PETSC_ERR_PLIB, "Gamma_C point %" PetscInt_FMT " has %" PetscInt_FMT " dofs, %" PetscInt_FMT " constrained", points[p], gdof, gcdof);
     PetscCall(DMPlexGetPointDepth(ctx->dm, points[p], &depth));
     for (PetscInt j = 0; j < gdof; j += 2) {
-      mine_idx[nown]      = goff + j;
-      mine_vert[nown]     = depth == 0 ? 1 : 0;
-      mine_point[nown]    = points[p];
-      mine_x[2 * nown]    = PetscRealPart(x[goff + j - rstart]);
+      mine_idx[nown]       = goff + j;
+      mine_vert[nown]      = depth == 0 ? 1 : 0;
+      mine_point[nown]     = points[p];
+      mine_x[2 * nown]     = PetscRealPart(x[goff + j - rstart]);
       mine_x[2 * nown + 1] = PetscRealPart(x[goff + j + 1 - rstart]);
       nown++;
     }
@@ -119,10 +119,10 @@ static PetscErrorCode ContactGatherNodes(Roller ctx, RollerContact c)
   PetscCall(PetscMalloc3(nown, &c->own_node, nown, &c->own_off, nown, &c->own_point));
   c->nown = 0;
   for (PetscInt i = 0; i < c->nc; ++i) {
-    c->gidx[i]          = idx[perm[i]];
-    c->is_vertex[i]     = vert[perm[i]] ? PETSC_TRUE : PETSC_FALSE;
-    c->xc[2 * i]        = xc[2 * perm[i]];
-    c->xc[2 * i + 1]    = xc[2 * perm[i] + 1];
+    c->gidx[i]       = idx[perm[i]];
+    c->is_vertex[i]  = vert[perm[i]] ? PETSC_TRUE : PETSC_FALSE;
+    c->xc[2 * i]     = xc[2 * perm[i]];
+    c->xc[2 * i + 1] = xc[2 * perm[i] + 1];
     if (c->gidx[i] >= rstart && c->gidx[i] < rend) {
       PetscInt loc;
 
@@ -267,7 +267,7 @@ static void ContactCandidateList(RollerContact c)
 static PetscErrorCode ContactCandidates(Roller ctx, RollerContact c)
 {
   const PetscScalar *u1, *u2;
-  const PetscReal    tol = RollerContactGapTolerance(ctx);
+  const PetscReal    tol  = RollerContactGapTolerance(ctx);
   PetscReal          dmax = 0.0, reach, theta1, n1[2], g1;
 
   PetscFunctionBeginUser;
@@ -435,7 +435,8 @@ static PetscErrorCode ContactMonitor(Roller ctx, RollerContact c, const RollerSt
   }
   PetscCall(VecRestoreArrayRead(c->red, &u));
   if (info->contact_force > 0) s2 /= info->contact_force;
-  PetscCall(PetscPrintf(ctx->comm, "contact_monitor: step %" PetscInt_FMT " t %.6g nodes %" PetscInt_FMT " force %.10e s_min %+.10e s_max %+.10e s_centroid %+.10e s_rms %.10e candidates %" PetscInt_FMT " resolves %" PetscInt_FMT "\n", ctx->step, (double)c->t, info->contact_nodes, (double)info->contact_force, (double)smin, (double)smax, (double)sbar, (double)PetscSqrtReal(s2), c->ncand, c->resolves));
+  PetscCall(PetscPrintf(ctx->comm, "contact_monitor: step %" PetscInt_FMT " t %.6g nodes %" PetscInt_FMT " force %.10e s_min %+.10e s_max %+.10e s_centroid %+.10e s_rms %.10e candidates %" PetscInt_FMT " resolves %" PetscInt_FMT "\n", ctx->step,
+                        (double)c->t, info->contact_nodes, (double)info->contact_force, (double)smin, (double)smax, (double)sbar, (double)PetscSqrtReal(s2), c->ncand, c->resolves));
   PetscFunctionReturn(0);
 }
 
@@ -538,7 +539,8 @@ PetscErrorCode RollerContactDestroy(RollerContact *contact)
   PetscFunctionBeginUser;
   if (!c) PetscFunctionReturn(0);
   if (c->check && c->check_steps) {
-    for (PetscInt s = 0; s < CONTACT_NUM_SOLVERS; ++s) PetscCall(PetscPrintf(c->comm, "contact_check: summary over %" PetscInt_FMT " steps: solver %s max diff %.3e max kkt %.3e\n", c->check_steps, RollerContactSolverTypes[s], (double)c->check_max_diff[s], (double)c->check_max_kkt[s]));
+    for (PetscInt s = 0; s < CONTACT_NUM_SOLVERS; ++s)
+      PetscCall(PetscPrintf(c->comm, "contact_check: summary over %" PetscInt_FMT " steps: solver %s max diff %.3e max kkt %.3e\n", c->check_steps, RollerContactSolverTypes[s], (double)c->check_max_diff[s], (double)c->check_max_kkt[s]));
   }
   PetscCall(RollerContactCondensedDestroy(c));
   PetscCall(RollerContactPrimalDestroy(c));

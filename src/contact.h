@@ -40,10 +40,10 @@ typedef struct {
   Vec       z, bhat, lower, upper, r;
   PetscReal fscale; /* force scale of the tolerances: max(||b||_2, ||A||_inf ||z_0||_2) */
   PetscReal Anorm;  /* ||A||_inf */
-  Vec      *work; /* 4 work vectors (projected CG, J0) */
+  Vec      *work;   /* 4 work vectors (projected CG, J0) */
   SNES      snes;
   Tao       tao;
-  KSP       ksp;       /* the step factorization: A_hat^{-1} = Q^T A^{-1} Q, TAO's quasi-Newton J0 */
+  KSP       ksp; /* the step factorization: A_hat^{-1} = Q^T A^{-1} Q, TAO's quasi-Newton J0 */
 } RollerContactPrimal;
 
 struct _n_RollerContact {
@@ -64,20 +64,20 @@ struct _n_RollerContact {
   PetscInt  *gidx;
   PetscBool *is_vertex; /* a mesh vertex (P2: the others are edge midpoints) */
   PetscReal *xc;
-  PetscInt   nown;     /* nodes owned by this rank: */
-  PetscInt  *own_node; /*   their indices in the sorted list */
-  PetscInt  *own_off;  /*   the local offset of their x dof in a global Vec */
+  PetscInt   nown;      /* nodes owned by this rank: */
+  PetscInt  *own_node;  /*   their indices in the sorted list */
+  PetscInt  *own_off;   /*   the local offset of their x dof in a global Vec */
   PetscInt  *own_point; /*  their mesh point (vertex, or edge for a P2 midpoint) */
-  VecScatter scatter;  /* global Vec -> redundant Vec of the Gamma_C dofs */
+  VecScatter scatter;   /* global Vec -> redundant Vec of the Gamma_C dofs */
   Vec        red, red1, red2;
 
   /* the step: time, rotation, obstacle height, contact basis (t^k, n^k), candidate set, bounds */
   PetscReal  t, theta, g, normal[2], tangent[2];
   PetscInt   ncand;
-  PetscInt  *cand;     /* candidate node indices, ascending */
-  PetscBool *is_cand;  /* nc flags */
-  PetscReal *lower;    /* nc lower bounds g^k - x_n . n^k of the normal displacement q_n */
-  PetscReal *gap;      /* nc gaps of a solution (scratch) */
+  PetscInt  *cand;        /* candidate node indices, ascending */
+  PetscBool *is_cand;     /* nc flags */
+  PetscReal *lower;       /* nc lower bounds g^k - x_n . n^k of the normal displacement q_n */
+  PetscReal *gap;         /* nc gaps of a solution (scratch) */
   PetscBool *on_obstacle; /* nc: gap^{k-1}_n <= tol, the nodes on the obstacle at the previous level, from
                              xi^{k-1} (checkpointed state, so a restart takes the same decisions) */
 

@@ -10,17 +10,17 @@
 #include "contact.h"
 
 struct _n_RollerContactCondensed {
-  PetscReal *S;          /* 2 nc x 2 nc, column-major, the same on every rank */
-  PetscReal *gf;         /* nc: gap of the free solution */
+  PetscReal *S;                                /* 2 nc x 2 nc, column-major, the same on every rank */
+  PetscReal *gf;                               /* nc: gap of the free solution */
   PetscReal *G, *Gff, *d, *lam, *mu, *mu2, *w; /* the small QP, sized for nc */
   PetscInt  *F;
   PetscBool *act;
   Vec        xf, f, corr;
   /* -contact_condensed_qp tao: a sequential TAO on the same small problem, rebuilt when its size changes */
-  Tao        tao;
-  Mat        tG;
-  Vec        tx, tlb, tub, td;
-  PetscInt   tao_m;
+  Tao      tao;
+  Mat      tG;
+  Vec      tx, tlb, tub, td;
+  PetscInt tao_m;
 };
 
 /* S = E^T A^{-1} E: A^{-1} applied to the unit vectors of the Gamma_C dofs, in blocks of columns with
@@ -298,8 +298,8 @@ static PetscErrorCode TaoCondensedSolve(Roller ctx, RollerContact c, RollerConta
 
 PetscErrorCode RollerContactCondensedSolve(Roller ctx, RollerContact c, Vec b, Vec xi, RollerContactResult *res)
 {
-  RollerContactCondensed cd = c->condensed;
-  const PetscInt         n  = 2 * c->nc;
+  RollerContactCondensed cd  = c->condensed;
+  const PetscInt         n   = 2 * c->nc;
   const PetscReal        tol = RollerContactGapTolerance(ctx);
   const PetscScalar     *u;
   KSPConvergedReason     reason;
@@ -316,7 +316,7 @@ PetscErrorCode RollerContactCondensedSolve(Roller ctx, RollerContact c, Vec b, V
   PetscCall(VecRestoreArrayRead(c->red, &u));
   res->its = 0;
   for (;;) {
-    const PetscInt m = c->ncand;
+    const PetscInt m    = c->ncand;
     PetscReal      dmax = 0.0;
     PetscInt       its = 0, added = 0;
 

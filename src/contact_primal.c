@@ -147,7 +147,7 @@ PetscErrorCode RollerContactVISolve(Roller ctx, RollerContact c, Vec b, Vec xi, 
     PC             pc;
     Vec            f;
     SNESLineSearch ls;
-    PetscMPIInt size;
+    PetscMPIInt    size;
 
     PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
     PetscCall(SNESCreate(ctx->comm, &pr->snes));
@@ -220,7 +220,7 @@ static PetscErrorCode ApplyInverse(PC pc, Vec x, Vec y)
 PetscErrorCode RollerContactTaoSolve(Roller ctx, RollerContact c, Vec b, Vec xi, RollerContactResult *res)
 {
   RollerContactPrimal *pr = &c->primal;
-  TaoType            ttype;
+  TaoType              ttype;
   TaoConvergedReason   reason;
 
   PetscFunctionBeginUser;

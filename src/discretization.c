@@ -118,9 +118,9 @@ static PetscErrorCode AssembleLoad(Roller ctx, void (*f0)(ROLLER_KERNEL_ARGS, co
    rigid-body near-null space is attached) or hypre for large meshes. */
 static PetscErrorCode StepSolverSetUp(Roller ctx)
 {
-  PC          pc;
+  PC           pc;
   MatNullSpace nsp;
-  PetscMPIInt size;
+  PetscMPIInt  size;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
@@ -165,7 +165,7 @@ PetscErrorCode RollerUpdateGyroscopic(Roller ctx, PetscReal t1)
 PetscErrorCode RollerOperatorsSetUp(Roller ctx)
 {
   PetscErrorCode (*position[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {Position};
-  const PetscReal shift = ctx->density / (ctx->dt * ctx->dt) + ctx->damping / (2.0 * ctx->dt);
+  const PetscReal shift                                                                                  = ctx->density / (ctx->dt * ctx->dt) + ctx->damping / (2.0 * ctx->dt);
 
   PetscFunctionBeginUser;
   PetscCall(AssembleMatrix(ctx, "M", 1.0, 0.0, 0.0, &ctx->M));
@@ -202,16 +202,16 @@ PetscErrorCode RollerComputeBoundaryFunctionals(Roller ctx)
 {
   static const PetscReal qx[5] = {0.046910077030668, 0.230765344947158, 0.5, 0.769234655052842, 0.953089922969332};
   static const PetscReal qw[5] = {0.118463442528095, 0.239314335249683, 0.284444444444444, 0.239314335249683, 0.118463442528095};
-  DMLabel            label;
-  IS                 is;
-  PetscSection       section, csection;
-  Vec                wR, wA, clocal;
-  const PetscScalar *carr;
-  PetscScalar       *r, *a;
-  const PetscInt    *points;
-  PetscInt           n, eStart, eEnd, pStart, pEnd, csStart, csEnd;
-  PetscBool         *owned;
-  PetscReal          length = 0.0;
+  DMLabel                label;
+  IS                     is;
+  PetscSection           section, csection;
+  Vec                    wR, wA, clocal;
+  const PetscScalar     *carr;
+  PetscScalar           *r, *a;
+  const PetscInt        *points;
+  PetscInt               n, eStart, eEnd, pStart, pEnd, csStart, csEnd;
+  PetscBool             *owned;
+  PetscReal              length = 0.0;
 
   PetscFunctionBeginUser;
   PetscCall(DMGetLabel(ctx->dm, "outer", &label));

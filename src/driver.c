@@ -15,7 +15,8 @@ static PetscErrorCode Monitor(Roller ctx, Progress *p, PetscInt nsteps)
   PetscFunctionBeginUser;
   if (p->monitor) {
     PetscCall(PetscPrintf(ctx->comm, "%5" PetscInt_FMT " t %-10.6g R %+.6e alpha %+.6e energy %.10e", ctx->step, (double)ctx->time, (double)info->R, (double)info->alpha, (double)info->energy));
-    if (ctx->contact) PetscCall(PetscPrintf(ctx->comm, " contact %" PetscInt_FMT " force %.6e gap %+.3e its %" PetscInt_FMT " kkt %.2e", info->contact_nodes, (double)info->contact_force, (double)info->gap_min, info->qp_iterations, (double)info->kkt_residual));
+    if (ctx->contact)
+      PetscCall(PetscPrintf(ctx->comm, " contact %" PetscInt_FMT " force %.6e gap %+.3e its %" PetscInt_FMT " kkt %.2e", info->contact_nodes, (double)info->contact_force, (double)info->gap_min, info->qp_iterations, (double)info->kkt_residual));
     PetscCall(PetscPrintf(ctx->comm, "\n"));
   }
   if (p->quiet || ctx->step == 0) PetscFunctionReturn(0);
@@ -39,7 +40,7 @@ static PetscInt StepCount(Roller ctx)
 
 PetscErrorCode RollerSolve(Roller ctx)
 {
-  Progress p      = {PETSC_FALSE, ctx->quiet, 0, 0};
+  Progress  p      = {PETSC_FALSE, ctx->quiet, 0, 0};
   PetscInt  nsteps = StepCount(ctx);
   PetscBool help;
 

@@ -9,10 +9,10 @@ typedef enum {
   ROLLER_C_LAMBDA,
   ROLLER_C_MU,
   ROLLER_C_RHO,
-  ROLLER_C_TIME,        /* time at which a load kernel is evaluated */
-  ROLLER_C_THETA_DOT,   /* theta'(t)  */
-  ROLLER_C_THETA_DDOT,  /* theta''(t) */
-  ROLLER_C_MMS,         /* RollerMMSType */
+  ROLLER_C_TIME,       /* time at which a load kernel is evaluated */
+  ROLLER_C_THETA_DOT,  /* theta'(t)  */
+  ROLLER_C_THETA_DDOT, /* theta''(t) */
+  ROLLER_C_MMS,        /* RollerMMSType */
   ROLLER_C_R_INNER,
   ROLLER_C_R_OUTER,
   ROLLER_C_MASS_WEIGHT,      /* the Jacobian kernels assemble c_M M + c_K K: a DS keeps every kernel */
@@ -39,7 +39,7 @@ static inline void RollerStress(PetscReal lambda, PetscReal mu, const PetscScala
 /* K: a(u, v) = int sigma[u] : eps[v] (docs/model.md section 2). */
 static inline void g3_elastic(ROLLER_KERNEL_ARGS, PetscReal u_tShift, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar g3[])
 {
-  const PetscReal w = PetscRealPart(constants[ROLLER_C_STIFFNESS_WEIGHT]);
+  const PetscReal w      = PetscRealPart(constants[ROLLER_C_STIFFNESS_WEIGHT]);
   const PetscReal lambda = w * PetscRealPart(constants[ROLLER_C_LAMBDA]), mu = w * PetscRealPart(constants[ROLLER_C_MU]);
 
   for (PetscInt c = 0; c < dim; ++c) {

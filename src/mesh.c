@@ -25,7 +25,7 @@ static PetscErrorCode RollerMeshReadPhysicalNames(Roller ctx, const char *file, 
 {
   PetscMPIInt rank;
   PetscInt    status[2 + ROLLER_NUM_GROUPS] = {0, 0, -1, -1, -1}; /* opened, format major version, tags */
-  char       *found = groups->found;
+  char       *found                         = groups->found;
 
   PetscFunctionBeginUser;
   found[0] = 0;
@@ -70,7 +70,8 @@ static PetscErrorCode RollerMeshCheckGroups(Roller ctx, const char *what, const 
 {
   PetscFunctionBeginUser;
   for (int g = 0; g < ROLLER_NUM_GROUPS; ++g)
-    PetscCheck(groups->tags[g] >= 0, ctx->comm, PETSC_ERR_FILE_UNEXPECTED, "%s: no %s physical group named \"%s\" (physical groups found: %s); Roller needs curves \"inner\" and \"outer\" and surface \"body\"", what, roller_group_dims[g] == 1 ? "curve" : "surface", roller_group_names[g], groups->found[0] ? groups->found : "none");
+    PetscCheck(groups->tags[g] >= 0, ctx->comm, PETSC_ERR_FILE_UNEXPECTED, "%s: no %s physical group named \"%s\" (physical groups found: %s); Roller needs curves \"inner\" and \"outer\" and surface \"body\"", what, roller_group_dims[g] == 1 ? "curve" : "surface", roller_group_names[g],
+               groups->found[0] ? groups->found : "none");
   PetscFunctionReturn(0);
 }
 
@@ -192,7 +193,7 @@ static PetscErrorCode RollerMeshRadii(Roller ctx, const char *name, PetscReal *r
   PetscSection       section;
   const PetscScalar *x;
   PetscInt           v_start, v_end;
-  DMLabel            label = NULL;
+  DMLabel            label    = NULL;
   PetscReal          range[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, range_global[2]; /* min r, -max r */
 
   PetscFunctionBeginUser;
@@ -303,9 +304,9 @@ PetscErrorCode RollerMeshMeasure(Roller ctx)
 {
   DM        dm = ctx->dm;
   DMLabel   labels[2];
-  PetscBool view = PETSC_FALSE, *owned;
+  PetscBool view      = PETSC_FALSE, *owned;
   PetscInt  counts[4] = {0, 0, 0, 0}, counts_global[4]; /* vertices, cells, inner vertices, outer vertices */
-  PetscReal sums[3] = {0, 0, 0}, sums_global[3];        /* area, inner length, outer length */
+  PetscReal sums[3]   = {0, 0, 0}, sums_global[3];      /* area, inner length, outer length */
   PetscInt  p_start, p_end, v_start, v_end, f_start, f_end, c_start, c_end;
 
   PetscFunctionBeginUser;

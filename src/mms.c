@@ -19,9 +19,9 @@ static void MMSTime(PetscInt type, PetscReal t, PetscReal T[3])
     T[2] = 0.0;
   } else {
     const PetscReal w = 2.0 * PETSC_PI;
-    T[0] = PetscSinReal(w * t);
-    T[1] = w * PetscCosReal(w * t);
-    T[2] = -w * w * PetscSinReal(w * t);
+    T[0]              = PetscSinReal(w * t);
+    T[1]              = w * PetscCosReal(w * t);
+    T[2]              = -w * w * PetscSinReal(w * t);
   }
 }
 
@@ -95,7 +95,7 @@ static PetscErrorCode BumpShape(PetscInt dim, PetscReal time, const PetscReal x[
 PetscErrorCode RollerMMSExact(Roller ctx, PetscReal t, Vec xi)
 {
   PetscErrorCode (*funcs[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {ctx->mms == ROLLER_MMS_NONE ? BumpShape : MMSExact};
-  void *ctxs[1] = {ctx};
+  void *ctxs[1]                                                                                       = {ctx};
 
   PetscFunctionBeginUser;
   PetscCall(DMProjectFunction(ctx->dm, t, funcs, ctxs, INSERT_VALUES, xi));

@@ -1,8 +1,8 @@
 /* The command-line contract of docs/model.md section 6: every option read in one place, validated, listed by -help. */
 #include <roller_impl.h>
 
-const char *const RollerInitialConditions[] = {"rest", "bump", "mms", "RollerInitialCondition", "ROLLER_IC_", NULL};
-const char *const RollerMMSTypes[]          = {"none", "linear", "sine", "RollerMMSType", "ROLLER_MMS_", NULL};
+const char *const RollerInitialConditions[]  = {"rest", "bump", "mms", "RollerInitialCondition", "ROLLER_IC_", NULL};
+const char *const RollerMMSTypes[]           = {"none", "linear", "sine", "RollerMMSType", "ROLLER_MMS_", NULL};
 const char *const RollerCoriolisVelocities[] = {"backward", "extrapolated", "centered", "RollerCoriolisVelocity", "ROLLER_CORIOLIS_", NULL};
 
 /* Plane-strain Lame constants (docs/model.md section 1). */
@@ -50,7 +50,6 @@ PetscErrorCode RollerCreate(MPI_Comm comm, Roller *roller)
 
 PetscErrorCode RollerSetFromOptions(Roller ctx)
 {
-
   PetscFunctionBeginUser;
   PetscOptionsBegin(ctx->comm, NULL, "Roller: geometry and mesh", NULL);
   PetscCall(PetscOptionsReal("-mesh_h", "Edge length of the gmsh annulus mesh (0: chosen from -ts_phase_error)", NULL, ctx->mesh_h, &ctx->mesh_h, &ctx->mesh_h_set));
@@ -64,7 +63,8 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsInt("-degree", "Lagrange degree of the displacement (1 = the paper, 2)", NULL, ctx->degree, &ctx->degree, NULL));
   ctx->curved = (PetscBool)(ctx->degree == 2);
   PetscCall(PetscOptionsBool("-mesh_curved", "Curved (isoparametric P2) boundary: mid-edge nodes of Gamma_D, Gamma_C on the circles (default: on with -degree 2)", NULL, ctx->curved, &ctx->curved, NULL));
-  PetscCall(PetscOptionsEnum("-coriolis_velocity", "Coriolis velocity: backward (the paper, explicit, 1st order), extrapolated (explicit, 2nd order), centered (implicit, 2nd order, stable)", "RollerCoriolisVelocity", RollerCoriolisVelocities, (PetscEnum)ctx->coriolis, (PetscEnum *)&ctx->coriolis, NULL));
+  PetscCall(PetscOptionsEnum("-coriolis_velocity", "Coriolis velocity: backward (the paper, explicit, 1st order), extrapolated (explicit, 2nd order), centered (implicit, 2nd order, stable)", "RollerCoriolisVelocity", RollerCoriolisVelocities,
+                             (PetscEnum)ctx->coriolis, (PetscEnum *)&ctx->coriolis, NULL));
   PetscCall(PetscOptionsBool("-clamp_outer", "Also clamp Gamma_C (xi = 0 on the whole boundary, Theorem 1)", NULL, ctx->clamp_outer, &ctx->clamp_outer, NULL));
   PetscCall(PetscOptionsReal("-young", "Young's modulus E", NULL, ctx->young, &ctx->young, NULL));
   PetscCall(PetscOptionsReal("-poisson", "Poisson's ratio nu", NULL, ctx->poisson, &ctx->poisson, NULL));
@@ -79,7 +79,8 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsReal("-obstacle_speed", "Obstacle speed v", NULL, ctx->obstacle_speed, &ctx->obstacle_speed, NULL));
   PetscCall(PetscOptionsReal("-obstacle_depth", "Final indentation depth", NULL, ctx->obstacle_depth, &ctx->obstacle_depth, NULL));
   PetscCall(PetscOptionsReal("-damping", "Damping eta of the DMF functional", NULL, ctx->damping, &ctx->damping, NULL));
-  PetscCall(PetscOptionsBool("-static", "Solve the static contact (Signorini) problem K xi = E N lambda at the obstacle of t = -ts_max_time in one step, the state a damped run with -omega 0 comes to rest in (docs/validation.md section 5)", NULL, ctx->static_solve, &ctx->static_solve, NULL));
+  PetscCall(PetscOptionsBool("-static", "Solve the static contact (Signorini) problem K xi = E N lambda at the obstacle of t = -ts_max_time in one step, the state a damped run with -omega 0 comes to rest in (docs/validation.md section 5)", NULL, ctx->static_solve,
+                             &ctx->static_solve, NULL));
   PetscOptionsEnd();
 
   PetscOptionsBegin(ctx->comm, NULL, "Roller: time stepping", NULL);
@@ -107,7 +108,8 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCheck(ctx->mesh_h >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_h %g must be > 0 (or 0: chosen from -ts_phase_error)", (double)ctx->mesh_h);
   ctx->mesh_h_set = (PetscBool)(ctx->mesh_h > 0);
   PetscCheck(ctx->r_inner > 0 && ctx->r_inner < ctx->r_outer, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-r_inner %g and -r_outer %g must satisfy 0 < r_inner < r_outer", (double)ctx->r_inner, (double)ctx->r_outer);
-  PetscCheck(ctx->mesh_file[0] || !ctx->mesh_h_set || ctx->mesh_h < ctx->r_outer - ctx->r_inner, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_h %g must be smaller than the annulus width r_outer - r_inner = %g", (double)ctx->mesh_h, (double)(ctx->r_outer - ctx->r_inner));
+  PetscCheck(ctx->mesh_file[0] || !ctx->mesh_h_set || ctx->mesh_h < ctx->r_outer - ctx->r_inner, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_h %g must be smaller than the annulus width r_outer - r_inner = %g", (double)ctx->mesh_h,
+             (double)(ctx->r_outer - ctx->r_inner));
   PetscCheck(ctx->degree == 1 || ctx->degree == 2, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-degree %" PetscInt_FMT " must be 1 or 2", ctx->degree);
   PetscCheck(!ctx->curved || ctx->degree == 2, ctx->comm, PETSC_ERR_ARG_INCOMP, "-mesh_curved needs -degree 2 (a P1 field cannot see a curved edge), got -degree %" PetscInt_FMT, ctx->degree);
   PetscCheck(ctx->young > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-young %g must be > 0", (double)ctx->young);
@@ -129,6 +131,7 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCheck(!ctx->static_solve || (ctx->omega == 0 && ctx->theta_a == 0 && ctx->ic == ROLLER_IC_REST && ctx->mms == ROLLER_MMS_NONE && !ctx->restart[0] && ctx->max_time > 0), ctx->comm, PETSC_ERR_ARG_INCOMP, "-static needs -omega 0, -theta_a 0, the rest initial condition, no -mms or -restart, and -ts_max_time > 0");
   if (ctx->static_solve) { /* one step from rest to t = max_time with A = K: the right-hand side is 0 */
     ctx->dt        = ctx->max_time;
+    ctx->dt_set    = PETSC_TRUE; /* not the accurate default's dt */
     ctx->max_steps = 1;
   }
   if (ctx->mms != ROLLER_MMS_NONE) ctx->ic = ROLLER_IC_MMS;

@@ -61,12 +61,12 @@ struct _n_RollerOutput {
   Dataset     vertices, cells;
 
   /* Output spaces on the same mesh: vdm P1 with 3 components, sdm and pdm (contact pressure) P1 scalar */
-  DM          vdm, sdm, pdm;
-  Vec         velocity; /* on ctx->dm */
-  Vec         position; /* (x, y, 0) at every vertex (vdm) */
-  Vec         count;    /* the number of cells around every vertex (sdm) */
-  OutputField field[MAX_FIELDS];
-  PetscInt    nfields;
+  DM           vdm, sdm, pdm;
+  Vec          velocity; /* on ctx->dm */
+  Vec          position; /* (x, y, 0) at every vertex (vdm) */
+  Vec          count;    /* the number of cells around every vertex (sdm) */
+  OutputField  field[MAX_FIELDS];
+  PetscInt     nfields;
   RollerSeries series; /* R, alpha, energy, ... of every step, to /diagnostics at the end */
 };
 
@@ -315,9 +315,14 @@ static PetscErrorCode XdmfGrid(FILE *fp, RollerOutput out, const char h5_name[],
 
   PetscFunctionBeginUser;
   switch (out->cells.dims[1]) {
-  case 3: corners = "Triangle"; break;
-  case 4: corners = "Quadrilateral"; break;
-  default: SETERRQ(PETSC_COMM_SELF, PETSC_ERR_SUP, "Cells with %d corners in %s", (int)out->cells.dims[1], out->cells.path);
+  case 3:
+    corners = "Triangle";
+    break;
+  case 4:
+    corners = "Quadrilateral";
+    break;
+  default:
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_SUP, "Cells with %d corners in %s", (int)out->cells.dims[1], out->cells.path);
   }
   PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "      <Grid Name=\"step %" PetscInt_FMT "\" GridType=\"Uniform\">\n        <Time Value=\"%.17g\"/>\n", k, (double)out->times[k]));
   PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "        <Topology TopologyType=\"%s\" NumberOfElements=\"%llu\"><DataItem Reference=\"XML\">/Xdmf/Domain/DataItem[@Name=\"cells\"]</DataItem></Topology>\n", corners, (unsigned long long)out->cells.dims[0]));
@@ -648,7 +653,8 @@ PetscErrorCode RollerOutputStep(Roller ctx, RollerOutput out)
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_OUTPUT]));
   if (out->csv_path[0]) {
     RollerTheta(ctx, ctx->time, &theta, NULL, NULL);
-    PetscCall(PetscFPrintf(ctx->comm, out->csv, "%" PetscInt_FMT ",%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%.17g,%.17g,%" PetscInt_FMT ",%.17g,%.17g\n", ctx->step, (double)ctx->time, (double)info->R, (double)info->alpha, (double)info->energy, info->contact_nodes, (double)info->contact_force, (double)info->gap_min, info->qp_iterations, (double)info->kkt_residual, (double)theta));
+    PetscCall(PetscFPrintf(ctx->comm, out->csv, "%" PetscInt_FMT ",%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%.17g,%.17g,%" PetscInt_FMT ",%.17g,%.17g\n", ctx->step, (double)ctx->time, (double)info->R, (double)info->alpha, (double)info->energy, info->contact_nodes,
+                           (double)info->contact_force, (double)info->gap_min, info->qp_iterations, (double)info->kkt_residual, (double)theta));
     /* a killed run keeps every row it printed */
     if (out->csv) PetscCheck(fflush(out->csv) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s: %s", out->csv_part, strerror(errno));
   }

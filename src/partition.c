@@ -28,8 +28,8 @@ static PetscErrorCode RollerPartitionerCreateMetis(Roller ctx, PetscPartitioner 
     /* Default options: edge-cut objective, fixed seed, so the partition is reproducible. */
     METIS_SetDefaultOptions(options);
     options[METIS_OPTION_NUMBERING] = 0;
-    status[0] = METIS_PartGraphKway(&n, &n_constraints, xadj, adjncy, NULL, NULL, NULL, &n_parts, NULL, NULL, options, &objval, where);
-    status[1] = (int)objval;
+    status[0]                       = METIS_PartGraphKway(&n, &n_constraints, xadj, adjncy, NULL, NULL, NULL, &n_parts, NULL, NULL, options, &objval, where);
+    status[1]                       = (int)objval;
     if (status[0] == METIS_OK) {
       /* Shell partitions list the graph vertices (local cell numbers) grouped by rank. */
       for (PetscInt i = 0; i < n_vertices; ++i) sizes[where[i]]++;

@@ -11,9 +11,9 @@
 
 static PetscErrorCode LowestFrequency(Roller ctx, PetscReal *omega1)
 {
-  KSP       ksp;
-  PC        pc;
-  Vec       v, w, Mv;
+  KSP         ksp;
+  PC          pc;
+  Vec         v, w, Mv;
   PetscReal   rq = 0, rq_old = PETSC_MAX_REAL;
   PetscInt    it;
   PetscMPIInt size;
@@ -75,8 +75,7 @@ PetscErrorCode RollerCheckRotation(Roller ctx)
   if (!check || (max_rate == 0 && !view)) PetscFunctionReturn(0);
   PetscCall(LowestFrequency(ctx, &omega1));
   if (view) PetscCall(PetscPrintf(ctx->comm, "stability: omega_1 = %.10g, max |theta'| = %.10g, allowed < %.10g\n", (double)omega1, (double)max_rate, (double)(margin * omega1)));
-  PetscCheck(max_rate < margin * omega1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "-omega %g (max |theta'| = |omega| + |theta_a theta_b| = %g) is beyond the centrifugal-softening limit: the roller's lowest natural frequency is omega_1 = %g, and the rotating-frame model loses stability at |theta'| = omega_1; allowed: max |theta'| < %g (-stability_margin %g)",
+  PetscCheck(max_rate < margin * omega1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-omega %g (max |theta'| = |omega| + |theta_a theta_b| = %g) is beyond the centrifugal-softening limit: the roller's lowest natural frequency is omega_1 = %g, and the rotating-frame model loses stability at |theta'| = omega_1; allowed: max |theta'| < %g (-stability_margin %g)",
              (double)ctx->omega, (double)max_rate, (double)omega1, (double)(margin * omega1), (double)margin);
   PetscFunctionReturn(0);
 }

@@ -110,11 +110,11 @@ PetscErrorCode RollerStep(Roller ctx)
     }
   }
   /* rotate the history: xi3 <- xi2 <- xi1 <- xi, and K xi likewise */
-  tmp      = ctx->xi3;
-  ctx->xi3 = ctx->xi2;
-  ctx->xi2 = ctx->xi1;
-  ctx->xi1 = ctx->xi;
-  ctx->xi  = tmp;
+  tmp       = ctx->xi3;
+  ctx->xi3  = ctx->xi2;
+  ctx->xi2  = ctx->xi1;
+  ctx->xi1  = ctx->xi;
+  ctx->xi   = tmp;
   tmp       = ctx->Kxi2;
   ctx->Kxi2 = ctx->Kxi1;
   ctx->Kxi1 = tmp;

@@ -17,7 +17,7 @@ REFERENCE = os.path.join(SOURCE, "scripts", "axisym_reference.py")
 c = Checker(f"accurate_defaults ({MODE})")
 for young, t_end in CASES:
     name = f"E{young}_T{t_end:g}"
-    subprocess.run(["/usr/bin/python3", REFERENCE, "--scheme", "exact", "--young", str(young), "--t-end", str(t_end),
+    subprocess.run([sys.executable, REFERENCE, "--scheme", "exact", "--young", str(young), "--t-end", str(t_end),
                     "--dt-out", "0.001", "--out", f"reference_{name}.csv"], check=True)
     ref = read_csv(f"reference_{name}.csv")
     run(["-young", young, "-ts_max_time", t_end, "-quiet", "-monitor_csv", f"{name}.csv"])

@@ -9,12 +9,13 @@ paper's backward Coriolis velocity (first order in time), dt = h/4 given with ev
 curved and the extrapolated velocity; tests/accurate_defaults.py checks those against this reference.)"""
 import os
 import subprocess
+import sys
 
 from rollertest import SOURCE, Checker, read_csv, rel_max_error, run
 
 c = Checker("dmf_axisym")
 T = 5.0
-subprocess.run(["/usr/bin/python3", os.path.join(SOURCE, "scripts", "axisym_reference.py"), "--scheme", "exact",
+subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "axisym_reference.py"), "--scheme", "exact",
                 "--t-end", str(T), "--dt-out", "0.003125", "--out", "reference.csv"], check=True)
 ref = read_csv("reference.csv")
 errors = []

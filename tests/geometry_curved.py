@@ -9,12 +9,13 @@ Discretization: the 2D runs must use the reference's time scheme, so the Corioli
 reference's (--coriolis backward, the paper's; Roller's default is extrapolated), as are degree, h and dt."""
 import os
 import subprocess
+import sys
 
 from rollertest import SOURCE, Checker, read_csv, rel_max_error, run, slope
 
 c = Checker("geometry_curved")
 T, DT = 2.0, 0.01
-subprocess.run(["/usr/bin/python3", os.path.join(SOURCE, "scripts", "axisym_reference.py"), "--scheme", "dmf",
+subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "axisym_reference.py"), "--scheme", "dmf",
                 "--coriolis", "backward", "--dt", str(DT), "--t-end", str(T), "--dt-out", str(DT), "--out", "dmf.csv"], check=True)
 ref = read_csv("dmf.csv")
 hs = (0.05, 0.025, 0.0125)
