@@ -38,6 +38,18 @@ static PetscInt StepCount(Roller ctx)
   return (PetscInt)PetscMin(n, (PetscReal)PETSC_MAX_INT);
 }
 
+/* A step failed (the step solve, the contact solver, a non-finite solution): the history still holds the
+   last good state (RollerStep rotates it only on success), so write it to the checkpoint before the error
+   goes up, and say how to go on. Collective, like the failures it follows. */
+static PetscErrorCode StepFailed(Roller ctx, PetscErrorCode ierr)
+{
+  PetscFunctionBeginUser;
+  PetscCall(RollerCheckpointWrite(ctx, ctx->checkpoint));
+  PetscCall(PetscPrintf(ctx->comm, "roller: step %" PetscInt_FMT " (t = %g) failed; the last good state (step %" PetscInt_FMT ", t = %g) is in the checkpoint %s: continue with the same options and -restart %s (after changing what failed)\n", ctx->step + 1,
+                        (double)((ctx->step + 1) * ctx->dt), ctx->step, (double)ctx->time, ctx->checkpoint, ctx->checkpoint));
+  SETERRQ(ctx->comm, ierr, "Step %" PetscInt_FMT " failed; the last good state is in the checkpoint %s", ctx->step + 1, ctx->checkpoint);
+}
+
 PetscErrorCode RollerSolve(Roller ctx)
 {
   Progress  p      = {PETSC_FALSE, ctx->quiet, 0, 0};
@@ -59,8 +71,11 @@ PetscErrorCode RollerSolve(Roller ctx)
   while (ctx->step < nsteps) {
     PetscInt sig;
 
+    PetscErrorCode ierr;
+
     PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_STEP]));
-    PetscCall(RollerStep(ctx));
+    ierr = RollerStep(ctx);
+    if (ierr) PetscCall(StepFailed(ctx, ierr));
     PetscCall(PetscLogStagePop());
     PetscCall(RollerComputeStepInfo(ctx));
     PetscCall(Monitor(ctx, &p, nsteps));

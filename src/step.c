@@ -104,10 +104,8 @@ PetscErrorCode RollerStep(Roller ctx)
     PetscReal norm;
 
     PetscCall(VecNorm(ctx->xi, NORM_INFINITY, &norm));
-    if (PetscIsInfOrNanReal(norm)) {
-      PetscCall(RollerCheckpointWrite(ctx, ctx->checkpoint));
-      SETERRQ(ctx->comm, PETSC_ERR_FP, "The solution is not finite at step %" PetscInt_FMT ", t = %g; the last good state (step %" PetscInt_FMT ") is in the checkpoint %s", ctx->step + 1, (double)t, ctx->step, ctx->checkpoint);
-    }
+    /* the driver writes the last good state to the checkpoint (StepFailed) */
+    PetscCheck(!PetscIsInfOrNanReal(norm), ctx->comm, PETSC_ERR_FP, "The solution is not finite at step %" PetscInt_FMT ", t = %g; the last good state (step %" PetscInt_FMT ") is in the checkpoint %s", ctx->step + 1, (double)t, ctx->step, ctx->checkpoint);
   }
   /* rotate the history: xi3 <- xi2 <- xi1 <- xi, and K xi likewise */
   tmp       = ctx->xi3;
