@@ -97,8 +97,8 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscOptionsEnd();
 
   PetscOptionsBegin(ctx->comm, NULL, "Roller: checkpoint and restart", NULL);
-  PetscCall(PetscOptionsString("-checkpoint", "HDF5 file of the full state (written every N steps, on SIGTERM/SIGINT, and on divergence)", NULL, ctx->checkpoint, ctx->checkpoint, sizeof(ctx->checkpoint), NULL));
-  PetscCall(PetscOptionsInt("-checkpoint_every", "Write the checkpoint every N steps (0: only on a signal or divergence)", NULL, ctx->checkpoint_every, &ctx->checkpoint_every, NULL));
+  PetscCall(PetscOptionsString("-checkpoint", "HDF5 file of the full state (written every N steps, on SIGTERM/SIGINT, and when a step fails)", NULL, ctx->checkpoint, ctx->checkpoint, sizeof(ctx->checkpoint), NULL));
+  PetscCall(PetscOptionsInt("-checkpoint_every", "Write the checkpoint every N steps (0: only on a signal or a failed step)", NULL, ctx->checkpoint_every, &ctx->checkpoint_every, NULL));
   PetscCall(PetscOptionsString("-restart", "Continue from this checkpoint (same mesh, -degree, -ts_dt and ranks)", NULL, ctx->restart, ctx->restart, sizeof(ctx->restart), NULL));
   PetscOptionsEnd();
 
