@@ -1,5 +1,6 @@
 /* The Roller context and the functions the source files share. One concern per file:
      options.c        parameters, validation, -help                      (docs/model.md section 6)
+     accuracy.c       the default dt and h from -ts_phase_error           (docs/model.md section 6.2)
      mesh.c           gmsh annulus (C API or file), labels, validation
      partition.c      METIS partition of the cell graph, distribution
      geometry.c       curved (isoparametric P2) boundary
@@ -10,7 +11,8 @@
      contact*.c       the obstacle QP in rotated contact coordinates       (docs/model.md section 2)
      diagnostics.c    R, alpha, energy                                    (docs/model.md section 4)
      driver.c         the time loop, monitors, progress line
-     output.c         CSV, HDF5 fields, XDMF
+     output.c         HDF5 fields (output_csv.c the CSV, output_xdmf.c the XDMF index, output.h)
+     output_files.c   .part files renamed on success, stale outputs, writable paths
      checkpoint.c     checkpoint and restart, signals */
 #ifndef ROLLER_IMPL_H
 #define ROLLER_IMPL_H
@@ -184,7 +186,13 @@ PETSC_INTERN PetscErrorCode     RollerSeriesAppend(Roller, RollerSeries *);
 PETSC_INTERN PetscErrorCode     RollerSeriesWrite(Roller, RollerSeries, PetscViewer);
 PETSC_INTERN PetscErrorCode     RollerSeriesDestroy(RollerSeries *);
 
-/* output.c */
+/* output_files.c: output that must not look complete before it is (CSV, HDF5, XDMF, checkpoint) */
+PETSC_INTERN PetscErrorCode RollerJoinPath(char[], size_t, const char[], const char[], const char[]);
+PETSC_INTERN PetscErrorCode RollerRenameFile(MPI_Comm, const char[], const char[]);
+PETSC_INTERN PetscErrorCode RollerRemoveStale(MPI_Comm, const char[]);
+PETSC_INTERN PetscErrorCode RollerCheckWritable(MPI_Comm, const char[], const char[]);
+
+/* output.c, output_csv.c, output_xdmf.c */
 PETSC_INTERN PetscErrorCode RollerOutputCreate(Roller, RollerOutput *);
 PETSC_INTERN PetscErrorCode RollerOutputStep(Roller, RollerOutput);
 PETSC_INTERN PetscErrorCode RollerOutputDestroy(Roller, RollerOutput *);

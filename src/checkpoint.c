@@ -54,10 +54,9 @@ PetscErrorCode RollerCheckpointWrite(Roller ctx, const char *path)
   PetscViewer viewer;
   Vec         v[3];
   PetscInt    N;
-  PetscMPIInt rank;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
+  PetscCall(RollerJoinPath(tmp, sizeof(tmp), path, ".tmp", "-checkpoint"));
   PetscCall(PetscViewerHDF5Open(ctx->comm, tmp, FILE_MODE_WRITE, &viewer));
   History(ctx, v);
   for (PetscInt i = 0; i < 3; ++i) PetscCall(PlainView(v[i], history_names[i], viewer, PETSC_FALSE));
@@ -69,9 +68,7 @@ PetscErrorCode RollerCheckpointWrite(Roller ctx, const char *path)
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "degree", PETSC_INT, &ctx->degree));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "mesh_h", PETSC_REAL, &ctx->mesh_h));
   PetscCall(PetscViewerDestroy(&viewer));
-  PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
-  if (rank == 0) PetscCheck(rename(tmp, path) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "-checkpoint %s: cannot rename %s to it", path, tmp);
-  PetscCallMPI(MPI_Barrier(ctx->comm));
+  PetscCall(RollerRenameFile(ctx->comm, tmp, path));
   PetscFunctionReturn(0);
 }
 

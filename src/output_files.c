@@ -1,0 +1,66 @@
+/* Files that must not look complete before they are: joined names checked for length, the rank-0 rename
+   of a finished .part file, stale outputs of an earlier run removed, a writable path checked early. Used by
+   the CSV, the HDF5/XDMF output and the checkpoint. */
+#include <roller_impl.h>
+#include <errno.h>
+#include <stdio.h>
+#include <string.h>
+
+PetscErrorCode RollerJoinPath(char dst[], size_t len, const char a[], const char b[], const char option[])
+{
+  size_t la, lb;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrlen(a, &la));
+  PetscCall(PetscStrlen(b, &lb));
+  PetscCheck(la + lb < len, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s %s: the file name is too long (at most %d characters)", option, a, (int)(len - lb - 1));
+  PetscCall(PetscStrncpy(dst, a, len));
+  PetscCall(PetscStrlcat(dst, b, len));
+  PetscFunctionReturn(0);
+}
+
+/* Rank 0 renames from -> to (atomic on one file system); everyone waits for it. */
+PetscErrorCode RollerRenameFile(MPI_Comm comm, const char from[], const char to[])
+{
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) PetscCheck(rename(from, to) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot rename %s to %s: %s", from, to, strerror(errno));
+  PetscCallMPI(MPI_Barrier(comm));
+  PetscFunctionReturn(0);
+}
+
+/* Remove what an earlier run left under these names, so that a failed run cannot sit next to a
+   complete-looking output of another run (the files would have been truncated anyway). */
+PetscErrorCode RollerRemoveStale(MPI_Comm comm, const char path[])
+{
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0 && path[0]) PetscCheck(remove(path) == 0 || errno == ENOENT, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot remove the old output %s: %s", path, strerror(errno));
+  PetscFunctionReturn(0);
+}
+
+/* Fail early, with the option in the message, if path cannot be created (HDF5 would say it less clearly). */
+PetscErrorCode RollerCheckWritable(MPI_Comm comm, const char option[], const char path[])
+{
+  PetscMPIInt rank;
+  int         err = 0;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    FILE *fp = fopen(path, "w");
+
+    if (!fp) err = errno;
+    else {
+      fclose(fp);
+      remove(path);
+    }
+  }
+  PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));
+  PetscCheck(!err, comm, PETSC_ERR_FILE_OPEN, "%s: cannot write %s: %s", option, path, strerror(err));
+  PetscFunctionReturn(0);
+}
