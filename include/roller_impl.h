@@ -137,6 +137,7 @@ PETSC_INTERN PetscErrorCode RollerGeometrySetUp(Roller);           /* geometry.c
 
 /* discretization.c */
 PETSC_INTERN PetscErrorCode RollerDiscretizationSetUp(Roller);
+PETSC_INTERN PetscErrorCode RollerDirectSolverDefaults(KSP, PCType); /* preonly + factorization: ND serial, MUMPS parallel */
 PETSC_INTERN PetscErrorCode RollerSetConstants(Roller, PetscReal, PetscReal, PetscReal, PetscReal);
 PETSC_INTERN PetscErrorCode RollerUpdateGyroscopic(Roller, PetscReal);
 PETSC_INTERN PetscErrorCode RollerOperatorsSetUp(Roller);

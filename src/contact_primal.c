@@ -144,12 +144,9 @@ PetscErrorCode RollerContactVISolve(Roller ctx, RollerContact c, Vec b, Vec xi, 
   PetscCall(RollerContactPrimalSetUpStep(ctx, c, b));
   if (!pr->snes) {
     KSP            ksp;
-    PC             pc;
     Vec            f;
     SNESLineSearch ls;
-    PetscMPIInt    size;
 
-    PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
     PetscCall(SNESCreate(ctx->comm, &pr->snes));
     PetscCall(SNESSetOptionsPrefix(pr->snes, "contact_vi_"));
     PetscCall(SNESSetType(pr->snes, SNESVINEWTONRSLS));
@@ -160,11 +157,7 @@ PetscErrorCode RollerContactVISolve(Roller ctx, RollerContact c, Vec b, Vec xi, 
     PetscCall(SNESGetLineSearch(pr->snes, &ls));
     PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHBASIC));
     PetscCall(SNESGetKSP(pr->snes, &ksp));
-    PetscCall(KSPSetType(ksp, KSPPREONLY));
-    PetscCall(KSPGetPC(ksp, &pc));
-    PetscCall(PCSetType(pc, PCCHOLESKY));
-    if (size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
-    else PetscCall(PCFactorSetMatOrderingType(pc, MATORDERINGND));
+    PetscCall(RollerDirectSolverDefaults(ksp, PCCHOLESKY));
     PetscCall(SNESSetTolerances(pr->snes, PETSC_DEFAULT, c->rtol, 1e-14, 100, PETSC_DEFAULT));
     PetscCall(SNESSetFromOptions(pr->snes));
   }

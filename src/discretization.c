@@ -116,24 +116,35 @@ static PetscErrorCode AssembleLoad(Roller ctx, void (*f0)(ROLLER_KERNEL_ARGS, co
 /* The step solver: a direct Cholesky factorization of A, computed once and reused by every step
    (PETSc's own with nested dissection in serial, MUMPS in parallel); -ksp_type cg -pc_type gamg (the
    rigid-body near-null space is attached) or hypre for large meshes. */
-static PetscErrorCode StepSolverSetUp(Roller ctx)
+/* The defaults of every factorization Roller makes (the step matrix, the stability check, SNES VI's inner
+   solve): a direct solve, PETSc's own with nested dissection in serial (the fastest measured,
+   docs/performance.md), MUMPS in parallel. Options may override them (KSPSetFromOptions follows). */
+PetscErrorCode RollerDirectSolverDefaults(KSP ksp, PCType type)
 {
-  PC           pc;
-  MatNullSpace nsp;
-  PetscMPIInt  size;
+  PC          pc;
+  PetscMPIInt size;
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
+  PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)ksp), &size));
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, type));
+  if (size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  else PetscCall(PCFactorSetMatOrderingType(pc, MATORDERINGND));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode StepSolverSetUp(Roller ctx)
+{
+  MatNullSpace nsp;
+
+  PetscFunctionBeginUser;
   PetscCall(DMPlexCreateRigidBody(ctx->dm, 0, &nsp));
   PetscCall(MatSetNearNullSpace(ctx->A, nsp));
   PetscCall(MatNullSpaceDestroy(&nsp));
   PetscCall(KSPCreate(ctx->comm, &ctx->ksp));
   PetscCall(KSPSetOperators(ctx->ksp, ctx->A, ctx->A));
-  PetscCall(KSPSetType(ctx->ksp, KSPPREONLY));
-  PetscCall(KSPGetPC(ctx->ksp, &pc));
-  PetscCall(PCSetType(pc, ctx->G ? PCLU : PCCHOLESKY));
-  if (size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
-  else PetscCall(PCFactorSetMatOrderingType(pc, MATORDERINGND));
+  PetscCall(RollerDirectSolverDefaults(ctx->ksp, ctx->G ? PCLU : PCCHOLESKY));
   PetscCall(KSPSetTolerances(ctx->ksp, 1e-12, 1e-50, PETSC_DEFAULT, PETSC_DEFAULT));
   PetscCall(KSPSetFromOptions(ctx->ksp));
   {

@@ -11,23 +11,16 @@
 
 static PetscErrorCode LowestFrequency(Roller ctx, PetscReal *omega1)
 {
-  KSP         ksp;
-  PC          pc;
-  Vec         v, w, Mv;
-  PetscReal   rq = 0, rq_old = PETSC_MAX_REAL;
-  PetscInt    it;
-  PetscMPIInt size;
+  KSP       ksp;
+  Vec       v, w, Mv;
+  PetscReal rq = 0, rq_old = PETSC_MAX_REAL;
+  PetscInt  it;
 
   PetscFunctionBeginUser;
   PetscCall(KSPCreate(ctx->comm, &ksp));
   PetscCall(KSPSetOptionsPrefix(ksp, "stability_"));
   PetscCall(KSPSetOperators(ksp, ctx->K, ctx->K));
-  PetscCall(KSPSetType(ksp, KSPPREONLY));
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCSetType(pc, PCCHOLESKY));
-  PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
-  if (size > 1) PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
-  else PetscCall(PCFactorSetMatOrderingType(pc, MATORDERINGND));
+  PetscCall(RollerDirectSolverDefaults(ksp, PCCHOLESKY));
   PetscCall(KSPSetFromOptions(ksp));
   PetscCall(VecDuplicate(ctx->coordinates, &v));
   PetscCall(VecDuplicate(ctx->coordinates, &w));
