@@ -10,12 +10,6 @@ static PetscErrorCode Zero(PetscInt dim, PetscReal time, const PetscReal x[], Pe
   return 0;
 }
 
-static PetscErrorCode Position(PetscInt dim, PetscReal time, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *ctx)
-{
-  for (PetscInt c = 0; c < Nc; ++c) u[c] = x[c];
-  return 0;
-}
-
 static PetscErrorCode AddDirichlet(Roller ctx, const char *name)
 {
   DMLabel        label;
@@ -175,7 +169,7 @@ PetscErrorCode RollerUpdateGyroscopic(Roller ctx, PetscReal t1)
 
 PetscErrorCode RollerOperatorsSetUp(Roller ctx)
 {
-  PetscErrorCode (*position[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {Position};
+  PetscErrorCode (*position[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {RollerPosition};
   const PetscReal shift                                                                                  = ctx->density / (ctx->dt * ctx->dt) + ctx->damping / (2.0 * ctx->dt);
 
   PetscFunctionBeginUser;

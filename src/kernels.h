@@ -26,6 +26,14 @@ typedef enum {
   PetscInt dim, PetscInt Nf, PetscInt NfAux, const PetscInt uOff[], const PetscInt uOff_x[], const PetscScalar u[], const PetscScalar u_t[], const PetscScalar u_x[], const PetscInt aOff[], const PetscInt aOff_x[], const PetscScalar a[], const PetscScalar a_t[], const PetscScalar a_x[], PetscReal t
 
 /* Plane-strain stress sigma = 2 mu eps + lambda tr(eps) I from the gradient u_x[c*dim+d] = d u_c / d x_d. */
+/* The position x as a field (DMProjectFunction), padded with zeros beyond the dimension (the 3-component
+   output vectors): the nodal coordinates of the step (discretization.c) and of the output (output.c). */
+static inline PetscErrorCode RollerPosition(PetscInt dim, PetscReal time, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *ctx)
+{
+  for (PetscInt c = 0; c < Nc; ++c) u[c] = c < dim ? x[c] : 0.0;
+  return 0;
+}
+
 static inline void RollerStress(PetscReal lambda, PetscReal mu, const PetscScalar u_x[], PetscScalar sigma[])
 {
   const PetscScalar div = u_x[0] + u_x[3];

@@ -26,12 +26,6 @@ static void f_pad_vector(PetscInt dim, PetscInt Nf, PetscInt NfAux, const PetscI
   f[2] = 0.0;
 }
 
-static PetscErrorCode Position(PetscInt dim, PetscReal time, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *ctx)
-{
-  for (PetscInt c = 0; c < Nc; ++c) u[c] = c < dim ? x[c] : 0.0;
-  return 0;
-}
-
 static void f_one(PetscInt dim, PetscInt Nf, PetscInt NfAux, const PetscInt uOff[], const PetscInt uOff_x[], const PetscScalar u[], const PetscScalar u_t[], const PetscScalar u_x[], const PetscInt aOff[], const PetscInt aOff_x[], const PetscScalar a[], const PetscScalar a_t[], const PetscScalar a_x[], PetscReal t, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f[])
 {
   f[0] = 1.0;
@@ -126,7 +120,7 @@ static PetscErrorCode WriteParameters(Roller ctx, PetscViewer h5)
 
 static PetscErrorCode FieldsCreate(Roller ctx, RollerOutput out)
 {
-  PetscErrorCode (*position[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {Position};
+  PetscErrorCode (*position[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {RollerPosition};
   PetscBool has;
 
   PetscFunctionBeginUser;
