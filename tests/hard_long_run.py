@@ -20,13 +20,16 @@ while proc.poll() is None:
             rss += [int(line.split()[1]) for line in f if line.startswith("VmRSS:")]
     except FileNotFoundError:
         break
-    time.sleep(0.2)
+    time.sleep(0.1)
 out, err = proc.communicate()
 c.check(proc.returncode == 0, f"100,000 steps ran (exit {proc.returncode}) {err[-300:]}")
 e = read_csv("long.csv")["energy"]
 drift = max(abs(e - e[0])) / e[0]
 c.check(len(e) == 100001 and drift < 1e-8, f"energy drift over {len(e) - 1} steps {drift:.2e} < 1e-8")
-if len(rss) >= 5:
-    early, late = rss[len(rss) // 5], max(rss[len(rss) // 5:])
-    c.check(late <= early * 1.02 + 1024, f"resident memory flat: {early} kB at 20% of the run, at most {late} kB after ({len(rss)} samples)")
+if len(rss) >= 10:
+    # the plateau of the first half (after set-up: on a loaded machine the 20% mark of a 4 s run can still
+    # fall in it, 75 MB against a 89 MB plateau) against the second half: a leak grows with the steps
+    n = len(rss)
+    early, late = max(rss[n // 5:n // 2]), max(rss[n // 2:])
+    c.check(late <= early * 1.02 + 1024, f"resident memory flat: at most {early} kB in 20-50% of the run, at most {late} kB after ({n} samples)")
 c.close()
