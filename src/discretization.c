@@ -170,7 +170,8 @@ PetscErrorCode RollerUpdateGyroscopic(Roller ctx, PetscReal t1)
 PetscErrorCode RollerOperatorsSetUp(Roller ctx)
 {
   PetscErrorCode (*position[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {RollerPosition};
-  const PetscReal shift                                                                                  = ctx->density / (ctx->dt * ctx->dt) + ctx->damping / (2.0 * ctx->dt);
+
+  const PetscReal shift = ctx->density / (ctx->dt * ctx->dt) + ctx->damping / (2.0 * ctx->dt);
 
   PetscFunctionBeginUser;
   PetscCall(AssembleMatrix(ctx, "M", 1.0, 0.0, 0.0, &ctx->M));
