@@ -2,7 +2,7 @@
    adjacent through a face) on rank 0, where the gmsh reader put every cell; -petscpartitioner_type X selects
    one of PETSc's partitioners instead (this PETSc build has no METIS of its own, PETSC-NOTES.md).
    -partition_view reports the cells per rank and the edge cut. */
-#include <roller_impl.h>
+#include "mesh/mesh.h"
 #include <metis.h>
 
 /* Partitions the cell graph with METIS_PartGraphKway on rank 0 and wraps the result in a shell partitioner.
@@ -16,7 +16,7 @@ static PetscErrorCode RollerPartitionerCreateMetis(Roller ctx, PetscPartitioner 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
   PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
-  PetscCall(DMPlexCreatePartitionerGraph(ctx->dm, 0, &n_vertices, &offsets, &adjacency, NULL));
+  PetscCall(DMPlexCreatePartitionerGraph(ctx->mesh.dm, 0, &n_vertices, &offsets, &adjacency, NULL));
   PetscCheck(rank == 0 || n_vertices == 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "The METIS partition expects every cell on rank 0, but rank %d has %" PetscInt_FMT, rank, n_vertices);
   PetscCall(PetscCalloc3(size, &sizes, size, &start, n_vertices, &points));
   if (n_vertices > 0) {
@@ -79,8 +79,8 @@ static PetscErrorCode RollerPartitionView(Roller ctx, const char *type, PetscInt
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
   PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
-  PetscCall(RollerPartitionEdgeCut(ctx->dm, &edge_cut));
-  PetscCall(DMPlexGetHeightStratum(ctx->dm, 0, &c_start, &c_end));
+  PetscCall(RollerPartitionEdgeCut(ctx->mesh.dm, &edge_cut));
+  PetscCall(DMPlexGetHeightStratum(ctx->mesh.dm, 0, &c_start, &c_end));
   n_cells = c_end - c_start;
   if (rank == 0) PetscCall(PetscMalloc1(size, &cells));
   PetscCallMPI(MPI_Gather(&n_cells, 1, MPIU_INT, cells, 1, MPIU_INT, 0, ctx->comm));
@@ -131,28 +131,28 @@ PetscErrorCode RollerMeshDistribute(Roller ctx)
 
     PetscCall(PetscOptionsHasName(NULL, NULL, "-petscpartitioner_type", &user_type));
     if (user_type) {
-      PetscCall(DMPlexGetPartitioner(ctx->dm, &part));
+      PetscCall(DMPlexGetPartitioner(ctx->mesh.dm, &part));
       PetscCall(PetscPartitionerSetFromOptions(part));
     } else {
       PetscCall(RollerPartitionerCreateMetis(ctx, &part, &metis_edge_cut));
-      PetscCall(DMPlexSetPartitioner(ctx->dm, part));
+      PetscCall(DMPlexSetPartitioner(ctx->mesh.dm, part));
       PetscCall(PetscPartitionerDestroy(&part));
-      PetscCall(DMPlexGetPartitioner(ctx->dm, &part));
+      PetscCall(DMPlexGetPartitioner(ctx->mesh.dm, &part));
     }
     /* Copied: the partitioner may go with the serial DM below. */
     PetscCall(PetscPartitionerGetType(part, &part_type));
     PetscCall(PetscStrncpy(type, user_type ? part_type : "metis", sizeof(type)));
-    PetscCall(RollerDistributeQuietly(ctx->dm, &dm_dist));
+    PetscCall(RollerDistributeQuietly(ctx->mesh.dm, &dm_dist));
     if (dm_dist) {
-      PetscCall(DMDestroy(&ctx->dm));
-      ctx->dm = dm_dist;
+      PetscCall(DMDestroy(&ctx->mesh.dm));
+      ctx->mesh.dm = dm_dist;
     }
   }
   /* Distributed once, here: DMSetFromOptions must not partition again, but still honours -dm_view etc. */
-  PetscCall(DMPlexDistributeSetDefault(ctx->dm, PETSC_FALSE));
-  PetscCall(DMSetFromOptions(ctx->dm));
-  PetscCall(DMViewFromOptions(ctx->dm, NULL, "-dm_view"));
-  if (ctx->partition_view) PetscCall(RollerPartitionView(ctx, type, metis_edge_cut));
+  PetscCall(DMPlexDistributeSetDefault(ctx->mesh.dm, PETSC_FALSE));
+  PetscCall(DMSetFromOptions(ctx->mesh.dm));
+  PetscCall(DMViewFromOptions(ctx->mesh.dm, NULL, "-dm_view"));
+  if (ctx->mesh.partition_view) PetscCall(RollerPartitionView(ctx, type, metis_edge_cut));
   PetscCall(RollerMeshMeasure(ctx));
   PetscFunctionReturn(0);
 }

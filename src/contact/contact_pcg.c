@@ -14,7 +14,7 @@
    describes adds max{0, g - (x + xi) . n} n (docs/model.md sections 2 and 9).
    Q is orthogonal, so the Euclidean gradient, the norms and the line search are those of the paper's
    unknowns. eps = -contact_pcg_rtol times the force scale max(||b||_2, ||A||_inf ||z_0||_2). */
-#include "contact.h"
+#include "contact_impl.h"
 
 /* p = T_z(v): zero the components that point below an active bound. */
 static PetscErrorCode Restrict(Vec z, Vec lower, Vec v, Vec p)

@@ -6,8 +6,8 @@
    geometry node of every edge of Gamma_D and Gamma_C is moved radially onto its circle: the elements
    next to the boundary become curved and the discrete domain is the annulus to O(h^3) (-mesh_curved,
    default on with -degree 2). Every integral (M, K, loads, R, alpha, errors) then uses the curved map.
-   The straight-sided DM is kept for the HDF5/XDMF mesh (ctx->dm_view): ParaView draws linear cells. */
-#include <roller_impl.h>
+   The straight-sided DM is kept for the HDF5/XDMF mesh (ctx->mesh.dm_view): ParaView draws linear cells. */
+#include "mesh/mesh.h"
 
 /* Moves the geometry node of every edge of `label` onto the circle of radius r: the midpoint m of an
    edge v0 v1 with |v0| = |v1| = r goes to r m / |m|. Every rank moves its local (owned and ghost) edges
@@ -21,8 +21,8 @@ static PetscErrorCode SnapEdges(Roller ctx, const char *name, PetscReal r, Vec c
   PetscScalar    *x;
 
   PetscFunctionBeginUser;
-  PetscCall(DMGetLabel(ctx->dm, name, &label));
-  PetscCall(DMPlexGetHeightStratum(ctx->dm, 1, &e_start, &e_end));
+  PetscCall(DMGetLabel(ctx->mesh.dm, name, &label));
+  PetscCall(DMPlexGetHeightStratum(ctx->mesh.dm, 1, &e_start, &e_end));
   PetscCall(DMLabelGetStratumIS(label, 1, &is));
   if (is) PetscCall(ISGetLocalSize(is, &n));
   if (is) PetscCall(ISGetIndices(is, &points));
@@ -54,18 +54,18 @@ PetscErrorCode RollerGeometrySetUp(Roller ctx)
   PetscSection section;
 
   PetscFunctionBeginUser;
-  if (!ctx->curved) {
-    PetscCall(PetscObjectReference((PetscObject)ctx->dm));
-    ctx->dm_view = ctx->dm;
+  if (!ctx->mesh.curved) {
+    PetscCall(PetscObjectReference((PetscObject)ctx->mesh.dm));
+    ctx->mesh.dm_view = ctx->mesh.dm;
     PetscFunctionReturn(0);
   }
-  PetscCall(DMClone(ctx->dm, &ctx->dm_view)); /* keeps the straight-sided coordinate DM */
-  PetscCall(DMPlexCreateCoordinateSpace(ctx->dm, 2, NULL));
-  PetscCall(DMGetCoordinateDM(ctx->dm, &cdm));
+  PetscCall(DMClone(ctx->mesh.dm, &ctx->mesh.dm_view)); /* keeps the straight-sided coordinate DM */
+  PetscCall(DMPlexCreateCoordinateSpace(ctx->mesh.dm, 2, NULL));
+  PetscCall(DMGetCoordinateDM(ctx->mesh.dm, &cdm));
   PetscCall(DMGetLocalSection(cdm, &section));
-  PetscCall(DMGetCoordinatesLocal(ctx->dm, &coordinates));
-  PetscCall(SnapEdges(ctx, "inner", ctx->r_inner, coordinates, section));
-  PetscCall(SnapEdges(ctx, "outer", ctx->r_outer, coordinates, section));
-  PetscCall(DMSetCoordinatesLocal(ctx->dm, coordinates)); /* the global coordinates are rebuilt from these */
+  PetscCall(DMGetCoordinatesLocal(ctx->mesh.dm, &coordinates));
+  PetscCall(SnapEdges(ctx, "inner", ctx->mesh.r_inner, coordinates, section));
+  PetscCall(SnapEdges(ctx, "outer", ctx->mesh.r_outer, coordinates, section));
+  PetscCall(DMSetCoordinatesLocal(ctx->mesh.dm, coordinates)); /* the global coordinates are rebuilt from these */
   PetscFunctionReturn(0);
 }

@@ -1,7 +1,7 @@
 /* The per-step diagnostics (docs/model.md section 6 columns) kept in memory while fields go to HDF5, and written at
    the successful end as /diagnostics/<column>, one dataset per column of length steps: the HDF5 file
    then carries the same time series as the CSV. Rank 0 holds the rows. */
-#include <roller_impl.h>
+#include "io/io.h"
 #include <petscviewerhdf5.h>
 
 #define NCOL 8
@@ -32,8 +32,8 @@ PetscErrorCode RollerSeriesAppend(Roller ctx, RollerSeries *series)
     s->rows = rows;
   }
   r    = s->rows + s->n++ * NCOL;
-  r[0] = ctx->step;
-  r[1] = ctx->time;
+  r[0] = ctx->state.step;
+  r[1] = ctx->state.time;
   r[2] = ctx->info.R;
   r[3] = ctx->info.alpha;
   r[4] = ctx->info.energy;

@@ -16,12 +16,12 @@ static PetscErrorCode CsvResume(Roller ctx, RollerOutput out)
   if (rank) PetscFunctionReturn(0);
   src = fopen(out->csv_old, "r");
   if (!src) {
-    PetscCall(PetscInfo(NULL, "-restart: no earlier %s to continue; the CSV starts after step %" PetscInt_FMT "\n", out->csv_path, ctx->step));
+    PetscCall(PetscInfo(NULL, "-restart: no earlier %s to continue; the CSV starts after step %" PetscInt_FMT "\n", out->csv_path, ctx->state.step));
     PetscFunctionReturn(0);
   }
   PetscCheck(fgets(line, sizeof(line), src), PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-monitor_csv %s: empty file, cannot continue it after -restart", out->csv_path);
   while (fgets(line, sizeof(line), src)) {
-    if (atol(line) > (long)ctx->step) break;
+    if (atol(line) > (long)ctx->state.step) break;
     PetscCheck(fputs(line, out->csv) >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s: %s", out->csv_part, strerror(errno));
   }
   fclose(src);
@@ -47,11 +47,11 @@ PetscErrorCode RollerCsvOpen(Roller ctx, RollerOutput out)
   PetscFunctionBeginUser;
   PetscCall(RollerJoinPath(out->csv_part, sizeof(out->csv_part), out->csv_path, ".part", "-monitor_csv"));
   PetscCall(RollerJoinPath(out->csv_old, sizeof(out->csv_old), out->csv_path, ".old", "-monitor_csv"));
-  if (ctx->restart[0]) PetscCall(CsvKeepOld(ctx->comm, out));
+  if (ctx->ck.restart[0]) PetscCall(CsvKeepOld(ctx->comm, out));
   PetscCall(RollerRemoveStale(ctx->comm, out->csv_path));
   PetscCall(PetscFOpen(ctx->comm, out->csv_part, "w", &out->csv));
   PetscCall(PetscFPrintf(ctx->comm, out->csv, "step,t,R,alpha,energy,contact_nodes,contact_force,gap_min,qp_iterations,kkt_residual,theta\n"));
-  if (ctx->restart[0]) PetscCall(CsvResume(ctx, out));
+  if (ctx->ck.restart[0]) PetscCall(CsvResume(ctx, out));
   PetscFunctionReturn(0);
 }
 
@@ -62,9 +62,9 @@ PetscErrorCode RollerCsvRow(Roller ctx, RollerOutput out)
   PetscReal             theta;
 
   PetscFunctionBeginUser;
-  RollerTheta(ctx, ctx->time, &theta, NULL, NULL);
-  PetscCall(PetscFPrintf(ctx->comm, out->csv, "%" PetscInt_FMT ",%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%.17g,%.17g,%" PetscInt_FMT ",%.17g,%.17g\n", ctx->step, (double)ctx->time, (double)info->R, (double)info->alpha, (double)info->energy, info->contact_nodes,
-                         (double)info->contact_force, (double)info->gap_min, info->qp_iterations, (double)info->kkt_residual, (double)theta));
+  RollerTheta(ctx, ctx->state.time, &theta, NULL, NULL);
+  PetscCall(PetscFPrintf(ctx->comm, out->csv, "%" PetscInt_FMT ",%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%.17g,%.17g,%" PetscInt_FMT ",%.17g,%.17g\n", ctx->state.step, (double)ctx->state.time, (double)info->R, (double)info->alpha, (double)info->energy,
+                         info->contact_nodes, (double)info->contact_force, (double)info->gap_min, info->qp_iterations, (double)info->kkt_residual, (double)theta));
   if (out->csv) PetscCheck(fflush(out->csv) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s: %s", out->csv_part, strerror(errno));
   PetscFunctionReturn(0);
 }

@@ -1,8 +1,8 @@
 /* PetscFE discretization (docs/model.md section 3) and the constant operators of the DMF step (docs/model.md section 2):
    mass M, stiffness K, A = rho/dt^2 M + K/2 (+ eta/(2 dt) M), factored once; the loads of the rigid part
    of f; the nodal positions; the boundary functionals behind R and alpha (docs/model.md section 4). */
-#include <roller_impl.h>
-#include "kernels.h"
+#include "model/model.h"
+#include "model/kernels.h"
 
 static PetscErrorCode Zero(PetscInt dim, PetscReal time, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *ctx)
 {
@@ -16,9 +16,9 @@ static PetscErrorCode AddDirichlet(Roller ctx, const char *name)
   const PetscInt one = 1;
 
   PetscFunctionBeginUser;
-  PetscCall(DMGetLabel(ctx->dm, name, &label));
+  PetscCall(DMGetLabel(ctx->mesh.dm, name, &label));
   PetscCheck(label, ctx->comm, PETSC_ERR_ARG_WRONG, "The mesh has no label \"%s\"", name);
-  PetscCall(DMAddBoundary(ctx->dm, DM_BC_ESSENTIAL, name, label, 1, &one, 0, 0, NULL, (void (*)(void))Zero, NULL, NULL, NULL));
+  PetscCall(DMAddBoundary(ctx->mesh.dm, DM_BC_ESSENTIAL, name, label, 1, &one, 0, 0, NULL, (void (*)(void))Zero, NULL, NULL, NULL));
   PetscFunctionReturn(0);
 }
 
@@ -30,13 +30,13 @@ PetscErrorCode RollerDiscretizationSetUp(Roller ctx)
 
   PetscFunctionBeginUser;
   /* quadrature of order 2k integrates the mass matrix exactly on affine triangles */
-  PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, 2, 2, PETSC_TRUE, ctx->degree, 2 * ctx->degree, &fe));
+  PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, 2, 2, PETSC_TRUE, ctx->disc.degree, 2 * ctx->disc.degree, &fe));
   PetscCall(PetscObjectSetName((PetscObject)fe, "displacement"));
-  PetscCall(DMSetField(ctx->dm, 0, NULL, (PetscObject)fe));
+  PetscCall(DMSetField(ctx->mesh.dm, 0, NULL, (PetscObject)fe));
   PetscCall(PetscFEDestroy(&fe));
-  PetscCall(DMCreateDS(ctx->dm));
+  PetscCall(DMCreateDS(ctx->mesh.dm));
   PetscCall(AddDirichlet(ctx, "inner"));
-  if (ctx->clamp_outer) PetscCall(AddDirichlet(ctx, "outer"));
+  if (ctx->disc.clamp_outer) PetscCall(AddDirichlet(ctx, "outer"));
   PetscCall(RollerSetConstants(ctx, 0.0, 0.0, 0.0, 0.0));
   PetscFunctionReturn(0);
 }
@@ -50,20 +50,20 @@ PetscErrorCode RollerSetConstants(Roller ctx, PetscReal t, PetscReal mass_weight
 
   PetscFunctionBeginUser;
   RollerTheta(ctx, t, NULL, &td, &tdd);
-  constants[ROLLER_C_LAMBDA]           = ctx->lambda;
-  constants[ROLLER_C_MU]               = ctx->mu;
-  constants[ROLLER_C_RHO]              = ctx->density;
+  constants[ROLLER_C_LAMBDA]           = ctx->material.lambda;
+  constants[ROLLER_C_MU]               = ctx->material.mu;
+  constants[ROLLER_C_RHO]              = ctx->material.density;
   constants[ROLLER_C_TIME]             = t;
   constants[ROLLER_C_THETA_DOT]        = td;
   constants[ROLLER_C_THETA_DDOT]       = tdd;
-  constants[ROLLER_C_MMS]              = ctx->mms;
-  constants[ROLLER_C_R_INNER]          = ctx->r_inner;
-  constants[ROLLER_C_R_OUTER]          = ctx->r_outer;
+  constants[ROLLER_C_MMS]              = ctx->init.mms;
+  constants[ROLLER_C_R_INNER]          = ctx->mesh.r_inner;
+  constants[ROLLER_C_R_OUTER]          = ctx->mesh.r_outer;
   constants[ROLLER_C_MASS_WEIGHT]      = mass_weight;
   constants[ROLLER_C_STIFFNESS_WEIGHT] = stiffness_weight;
   constants[ROLLER_C_GYRO_WEIGHT]      = gyro_weight;
-  constants[ROLLER_C_MMS_AMPLITUDE]    = ctx->ic_amplitude;
-  PetscCall(DMGetDS(ctx->dm, &ds));
+  constants[ROLLER_C_MMS_AMPLITUDE]    = ctx->init.amplitude;
+  PetscCall(DMGetDS(ctx->mesh.dm, &ds));
   PetscCall(PetscDSSetConstants(ds, ROLLER_NUM_CONSTANTS, constants));
   PetscFunctionReturn(0);
 }
@@ -75,14 +75,14 @@ static PetscErrorCode AssembleMatrix(Roller ctx, const char *name, PetscReal cm,
   Vec     loc;
 
   PetscFunctionBeginUser;
-  PetscCall(DMGetDS(ctx->dm, &ds));
+  PetscCall(DMGetDS(ctx->mesh.dm, &ds));
   PetscCall(PetscDSSetJacobian(ds, 0, 0, g0_mass, NULL, NULL, g3_elastic));
   PetscCall(RollerSetConstants(ctx, 0.0, cm, ck, cg));
-  PetscCall(DMCreateMatrix(ctx->dm, J));
-  PetscCall(DMGetLocalVector(ctx->dm, &loc));
+  PetscCall(DMCreateMatrix(ctx->mesh.dm, J));
+  PetscCall(DMGetLocalVector(ctx->mesh.dm, &loc));
   PetscCall(VecZeroEntries(loc));
-  PetscCall(DMPlexSNESComputeJacobianFEM(ctx->dm, loc, *J, *J, NULL));
-  PetscCall(DMRestoreLocalVector(ctx->dm, &loc));
+  PetscCall(DMPlexSNESComputeJacobianFEM(ctx->mesh.dm, loc, *J, *J, NULL));
+  PetscCall(DMRestoreLocalVector(ctx->mesh.dm, &loc));
   PetscCall(PetscObjectSetName((PetscObject)*J, name));
   PetscFunctionReturn(0);
 }
@@ -93,17 +93,17 @@ static PetscErrorCode AssembleLoad(Roller ctx, void (*f0)(ROLLER_KERNEL_ARGS, co
   Vec     loc, locF;
 
   PetscFunctionBeginUser;
-  PetscCall(DMGetDS(ctx->dm, &ds));
+  PetscCall(DMGetDS(ctx->mesh.dm, &ds));
   PetscCall(PetscDSSetResidual(ds, 0, f0, NULL));
-  PetscCall(DMCreateGlobalVector(ctx->dm, L));
-  PetscCall(DMGetLocalVector(ctx->dm, &loc));
-  PetscCall(DMGetLocalVector(ctx->dm, &locF));
+  PetscCall(DMCreateGlobalVector(ctx->mesh.dm, L));
+  PetscCall(DMGetLocalVector(ctx->mesh.dm, &loc));
+  PetscCall(DMGetLocalVector(ctx->mesh.dm, &locF));
   PetscCall(VecZeroEntries(loc));
   PetscCall(VecZeroEntries(locF));
-  PetscCall(DMPlexSNESComputeResidualFEM(ctx->dm, loc, locF, NULL));
-  PetscCall(DMLocalToGlobal(ctx->dm, locF, ADD_VALUES, *L));
-  PetscCall(DMRestoreLocalVector(ctx->dm, &loc));
-  PetscCall(DMRestoreLocalVector(ctx->dm, &locF));
+  PetscCall(DMPlexSNESComputeResidualFEM(ctx->mesh.dm, loc, locF, NULL));
+  PetscCall(DMLocalToGlobal(ctx->mesh.dm, locF, ADD_VALUES, *L));
+  PetscCall(DMRestoreLocalVector(ctx->mesh.dm, &loc));
+  PetscCall(DMRestoreLocalVector(ctx->mesh.dm, &locF));
   PetscFunctionReturn(0);
 }
 
@@ -133,22 +133,22 @@ static PetscErrorCode StepSolverSetUp(Roller ctx)
   MatNullSpace nsp;
 
   PetscFunctionBeginUser;
-  PetscCall(DMPlexCreateRigidBody(ctx->dm, 0, &nsp));
-  PetscCall(MatSetNearNullSpace(ctx->A, nsp));
+  PetscCall(DMPlexCreateRigidBody(ctx->mesh.dm, 0, &nsp));
+  PetscCall(MatSetNearNullSpace(ctx->ops.A, nsp));
   PetscCall(MatNullSpaceDestroy(&nsp));
-  PetscCall(KSPCreate(ctx->comm, &ctx->ksp));
-  PetscCall(KSPSetOperators(ctx->ksp, ctx->A, ctx->A));
-  PetscCall(RollerDirectSolverDefaults(ctx->ksp, ctx->G ? PCLU : PCCHOLESKY));
-  PetscCall(KSPSetTolerances(ctx->ksp, 1e-12, 1e-50, PETSC_DEFAULT, PETSC_DEFAULT));
-  PetscCall(KSPSetFromOptions(ctx->ksp));
+  PetscCall(KSPCreate(ctx->comm, &ctx->ops.ksp));
+  PetscCall(KSPSetOperators(ctx->ops.ksp, ctx->ops.A, ctx->ops.A));
+  PetscCall(RollerDirectSolverDefaults(ctx->ops.ksp, ctx->ops.Gyro ? PCLU : PCCHOLESKY));
+  PetscCall(KSPSetTolerances(ctx->ops.ksp, 1e-12, 1e-50, PETSC_DEFAULT, PETSC_DEFAULT));
+  PetscCall(KSPSetFromOptions(ctx->ops.ksp));
   {
     PetscBool direct;
 
     /* an iterative solver starts from the extrapolation 2 xi^{k-1} - xi^{k-2} (step.c) */
-    PetscCall(PetscObjectTypeCompare((PetscObject)ctx->ksp, KSPPREONLY, &direct));
-    PetscCall(KSPSetInitialGuessNonzero(ctx->ksp, (PetscBool)!direct));
+    PetscCall(PetscObjectTypeCompare((PetscObject)ctx->ops.ksp, KSPPREONLY, &direct));
+    PetscCall(KSPSetInitialGuessNonzero(ctx->ops.ksp, (PetscBool)!direct));
   }
-  PetscCall(KSPSetUp(ctx->ksp));
+  PetscCall(KSPSetUp(ctx->ops.ksp));
   PetscFunctionReturn(0);
 }
 
@@ -159,11 +159,11 @@ PetscErrorCode RollerUpdateGyroscopic(Roller ctx, PetscReal t1)
   PetscReal td;
 
   PetscFunctionBeginUser;
-  if (!ctx->G || (ctx->ksp && ctx->theta_a * ctx->theta_b == 0)) PetscFunctionReturn(0);
+  if (!ctx->ops.Gyro || (ctx->ops.ksp && ctx->rotation.a * ctx->rotation.b == 0)) PetscFunctionReturn(0);
   RollerTheta(ctx, t1, NULL, &td, NULL);
-  PetscCall(MatCopy(ctx->A0, ctx->A, SAME_NONZERO_PATTERN));
-  PetscCall(MatAXPY(ctx->A, -ctx->density * td / ctx->dt, ctx->G, SAME_NONZERO_PATTERN));
-  if (ctx->ksp) PetscCall(KSPSetOperators(ctx->ksp, ctx->A, ctx->A));
+  PetscCall(MatCopy(ctx->ops.A0, ctx->ops.A, SAME_NONZERO_PATTERN));
+  PetscCall(MatAXPY(ctx->ops.A, -ctx->material.density * td / ctx->ts.dt, ctx->ops.Gyro, SAME_NONZERO_PATTERN));
+  if (ctx->ops.ksp) PetscCall(KSPSetOperators(ctx->ops.ksp, ctx->ops.A, ctx->ops.A));
   PetscFunctionReturn(0);
 }
 
@@ -171,30 +171,30 @@ PetscErrorCode RollerOperatorsSetUp(Roller ctx)
 {
   PetscErrorCode (*position[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {RollerPosition};
 
-  const PetscReal shift = ctx->density / (ctx->dt * ctx->dt) + ctx->damping / (2.0 * ctx->dt);
+  const PetscReal shift = ctx->material.density / (ctx->ts.dt * ctx->ts.dt) + ctx->disc.damping / (2.0 * ctx->ts.dt);
 
   PetscFunctionBeginUser;
-  PetscCall(AssembleMatrix(ctx, "M", 1.0, 0.0, 0.0, &ctx->M));
-  PetscCall(AssembleMatrix(ctx, "K", 0.0, 1.0, 0.0, &ctx->K));
-  PetscCall(MatDuplicate(ctx->K, MAT_COPY_VALUES, &ctx->A));
-  if (!ctx->static_solve) { /* -static: A = K, the step from rest is min 1/2 xi^T K xi over the admissible set */
-    PetscCall(MatScale(ctx->A, 0.5));
-    PetscCall(MatAXPY(ctx->A, shift, ctx->M, SAME_NONZERO_PATTERN));
+  PetscCall(AssembleMatrix(ctx, "M", 1.0, 0.0, 0.0, &ctx->ops.M));
+  PetscCall(AssembleMatrix(ctx, "K", 0.0, 1.0, 0.0, &ctx->ops.K));
+  PetscCall(MatDuplicate(ctx->ops.K, MAT_COPY_VALUES, &ctx->ops.A));
+  if (!ctx->disc.static_solve) { /* -static: A = K, the step from rest is min 1/2 xi^T K xi over the admissible set */
+    PetscCall(MatScale(ctx->ops.A, 0.5));
+    PetscCall(MatAXPY(ctx->ops.A, shift, ctx->ops.M, SAME_NONZERO_PATTERN));
   }
-  if (ctx->coriolis == ROLLER_CORIOLIS_CENTERED) {
+  if (ctx->disc.coriolis == ROLLER_CORIOLIS_CENTERED) {
     /* A - rho theta'/dt G: no longer symmetric (G is skew), still positive definite */
-    PetscCall(AssembleMatrix(ctx, "G", 0.0, 0.0, 1.0, &ctx->G));
-    PetscCall(MatDuplicate(ctx->A, MAT_COPY_VALUES, &ctx->A0));
+    PetscCall(AssembleMatrix(ctx, "G", 0.0, 0.0, 1.0, &ctx->ops.Gyro));
+    PetscCall(MatDuplicate(ctx->ops.A, MAT_COPY_VALUES, &ctx->ops.A0));
     PetscCall(RollerUpdateGyroscopic(ctx, 0.0));
   } else {
-    PetscCall(MatSetOption(ctx->A, MAT_SPD, PETSC_TRUE));
-    PetscCall(MatSetOption(ctx->A, MAT_SPD_ETERNAL, PETSC_TRUE));
+    PetscCall(MatSetOption(ctx->ops.A, MAT_SPD, PETSC_TRUE));
+    PetscCall(MatSetOption(ctx->ops.A, MAT_SPD_ETERNAL, PETSC_TRUE));
   }
-  PetscCall(PetscObjectSetName((PetscObject)ctx->A, "A"));
-  PetscCall(AssembleLoad(ctx, f0_euler, &ctx->L_euler));
-  PetscCall(AssembleLoad(ctx, f0_centrifugal, &ctx->L_centrifugal));
-  PetscCall(DMCreateGlobalVector(ctx->dm, &ctx->coordinates));
-  PetscCall(DMProjectFunction(ctx->dm, 0.0, position, NULL, INSERT_VALUES, ctx->coordinates));
+  PetscCall(PetscObjectSetName((PetscObject)ctx->ops.A, "A"));
+  PetscCall(AssembleLoad(ctx, f0_euler, &ctx->ops.L_euler));
+  PetscCall(AssembleLoad(ctx, f0_centrifugal, &ctx->ops.L_centrifugal));
+  PetscCall(DMCreateGlobalVector(ctx->mesh.dm, &ctx->ops.coordinates));
+  PetscCall(DMProjectFunction(ctx->mesh.dm, 0.0, position, NULL, INSERT_VALUES, ctx->ops.coordinates));
   PetscCall(StepSolverSetUp(ctx));
   PetscFunctionReturn(0);
 }
@@ -220,16 +220,16 @@ PetscErrorCode RollerComputeBoundaryFunctionals(Roller ctx)
   PetscReal              length = 0.0;
 
   PetscFunctionBeginUser;
-  PetscCall(DMGetLabel(ctx->dm, "outer", &label));
-  PetscCall(DMGetLocalSection(ctx->dm, &section));
-  PetscCall(DMGetCoordinatesLocal(ctx->dm, &clocal));
-  PetscCall(DMGetCoordinateSection(ctx->dm, &csection));
+  PetscCall(DMGetLabel(ctx->mesh.dm, "outer", &label));
+  PetscCall(DMGetLocalSection(ctx->mesh.dm, &section));
+  PetscCall(DMGetCoordinatesLocal(ctx->mesh.dm, &clocal));
+  PetscCall(DMGetCoordinateSection(ctx->mesh.dm, &csection));
   PetscCall(PetscSectionGetChart(csection, &csStart, &csEnd));
-  PetscCall(DMPlexGetHeightStratum(ctx->dm, 1, &eStart, &eEnd));
-  PetscCall(DMPlexGetChart(ctx->dm, &pStart, &pEnd));
-  PetscCall(RollerMeshOwnedMask(ctx->dm, &owned));
-  PetscCall(DMGetLocalVector(ctx->dm, &wR));
-  PetscCall(DMGetLocalVector(ctx->dm, &wA));
+  PetscCall(DMPlexGetHeightStratum(ctx->mesh.dm, 1, &eStart, &eEnd));
+  PetscCall(DMPlexGetChart(ctx->mesh.dm, &pStart, &pEnd));
+  PetscCall(RollerMeshOwnedMask(ctx->mesh.dm, &owned));
+  PetscCall(DMGetLocalVector(ctx->mesh.dm, &wR));
+  PetscCall(DMGetLocalVector(ctx->mesh.dm, &wA));
   PetscCall(VecZeroEntries(wR));
   PetscCall(VecZeroEntries(wA));
   PetscCall(VecGetArray(wR, &r));
@@ -247,7 +247,7 @@ PetscErrorCode RollerComputeBoundaryFunctionals(Roller ctx)
 
     if (e < eStart || e >= eEnd) continue;
     if (!owned[e - pStart]) continue; /* its owner counts it */
-    PetscCall(DMPlexGetCone(ctx->dm, e, &cone));
+    PetscCall(DMPlexGetCone(ctx->mesh.dm, e, &cone));
     PetscCall(PetscSectionGetOffset(csection, cone[0], &coff[0]));
     PetscCall(PetscSectionGetOffset(csection, cone[1], &coff[1]));
     cdof = 0; /* a P1 coordinate section has no chart beyond the vertices */
@@ -296,15 +296,15 @@ PetscErrorCode RollerComputeBoundaryFunctionals(Roller ctx)
   if (is) PetscCall(ISRestoreIndices(is, &points));
   PetscCall(ISDestroy(&is));
   PetscCall(PetscFree(owned));
-  PetscCall(MPIU_Allreduce(&length, &ctx->boundary_length, 1, MPIU_REAL, MPI_SUM, ctx->comm));
+  PetscCall(MPIU_Allreduce(&length, &ctx->mesh.boundary_length, 1, MPIU_REAL, MPI_SUM, ctx->comm));
   PetscCall(VecRestoreArrayRead(clocal, &carr));
   PetscCall(VecRestoreArray(wR, &r));
   PetscCall(VecRestoreArray(wA, &a));
-  PetscCall(DMCreateGlobalVector(ctx->dm, &ctx->w_R));
-  PetscCall(DMCreateGlobalVector(ctx->dm, &ctx->w_alpha));
-  PetscCall(DMLocalToGlobal(ctx->dm, wR, ADD_VALUES, ctx->w_R));
-  PetscCall(DMLocalToGlobal(ctx->dm, wA, ADD_VALUES, ctx->w_alpha));
-  PetscCall(DMRestoreLocalVector(ctx->dm, &wR));
-  PetscCall(DMRestoreLocalVector(ctx->dm, &wA));
+  PetscCall(DMCreateGlobalVector(ctx->mesh.dm, &ctx->ops.w_R));
+  PetscCall(DMCreateGlobalVector(ctx->mesh.dm, &ctx->ops.w_alpha));
+  PetscCall(DMLocalToGlobal(ctx->mesh.dm, wR, ADD_VALUES, ctx->ops.w_R));
+  PetscCall(DMLocalToGlobal(ctx->mesh.dm, wA, ADD_VALUES, ctx->ops.w_alpha));
+  PetscCall(DMRestoreLocalVector(ctx->mesh.dm, &wR));
+  PetscCall(DMRestoreLocalVector(ctx->mesh.dm, &wA));
   PetscFunctionReturn(0);
 }

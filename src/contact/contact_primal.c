@@ -5,7 +5,7 @@
    MatPtAP(MAT_REUSE_MATRIX): Q keeps a 2x2 pattern at every Gamma_C node (explicit zeros where it is the
    identity), so the pattern never changes. The multipliers are the normal components of
    A_hat z - b_hat at the candidates whose bound is active. */
-#include "contact.h"
+#include "contact_impl.h"
 
 /* Q (pattern: 2x2 blocks at every Gamma_C node, diagonal elsewhere), A_hat, and the vectors. */
 static PetscErrorCode PrimalCreate(Roller ctx, RollerContact c)
@@ -15,8 +15,8 @@ static PetscErrorCode PrimalCreate(Roller ctx, RollerContact c)
   PetscBool           *on_gamma;
 
   PetscFunctionBeginUser;
-  PetscCall(VecGetLocalSize(ctx->xi1, &nlocal));
-  PetscCall(VecGetOwnershipRange(ctx->xi1, &rstart, &rend));
+  PetscCall(VecGetLocalSize(ctx->state.cur, &nlocal));
+  PetscCall(VecGetOwnershipRange(ctx->state.cur, &rstart, &rend));
   PetscCall(PetscCalloc2(nlocal, &nnz, nlocal, &on_gamma));
   for (PetscInt k = 0; k < c->nown; ++k) on_gamma[c->own_off[k]] = on_gamma[c->own_off[k] + 1] = PETSC_TRUE;
   for (PetscInt r = 0; r < nlocal; ++r) nnz[r] = on_gamma[r] ? 2 : 1;
@@ -37,17 +37,17 @@ static PetscErrorCode PrimalCreate(Roller ctx, RollerContact c)
   PetscCall(MatAssemblyBegin(pr->Q, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(pr->Q, MAT_FINAL_ASSEMBLY));
   PetscCall(PetscFree2(nnz, on_gamma));
-  PetscCall(MatPtAP(ctx->A, pr->Q, MAT_INITIAL_MATRIX, 1.0, &pr->Ahat));
+  PetscCall(MatPtAP(ctx->ops.A, pr->Q, MAT_INITIAL_MATRIX, 1.0, &pr->Ahat));
   PetscCall(PetscObjectSetName((PetscObject)pr->Ahat, "A_hat"));
-  PetscCall(VecDuplicate(ctx->xi1, &pr->z));
-  PetscCall(VecDuplicate(ctx->xi1, &pr->bhat));
-  PetscCall(VecDuplicate(ctx->xi1, &pr->lower));
-  PetscCall(VecDuplicate(ctx->xi1, &pr->upper));
-  PetscCall(VecDuplicate(ctx->xi1, &pr->r));
-  PetscCall(VecDuplicateVecs(ctx->xi1, 4, &pr->work));
+  PetscCall(VecDuplicate(ctx->state.cur, &pr->z));
+  PetscCall(VecDuplicate(ctx->state.cur, &pr->bhat));
+  PetscCall(VecDuplicate(ctx->state.cur, &pr->lower));
+  PetscCall(VecDuplicate(ctx->state.cur, &pr->upper));
+  PetscCall(VecDuplicate(ctx->state.cur, &pr->r));
+  PetscCall(VecDuplicateVecs(ctx->state.cur, 4, &pr->work));
   PetscCall(VecSet(pr->upper, PETSC_INFINITY));
-  PetscCall(MatNorm(ctx->A, NORM_INFINITY, &pr->Anorm));
-  pr->ksp         = ctx->ksp;
+  PetscCall(MatNorm(ctx->ops.A, NORM_INFINITY, &pr->Anorm));
+  pr->ksp         = ctx->ops.ksp;
   c->primal_ready = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
@@ -64,7 +64,7 @@ PetscErrorCode RollerContactPrimalSetUpStep(Roller ctx, RollerContact c, Vec b)
 
   PetscFunctionBeginUser;
   if (!c->primal_ready) PetscCall(PrimalCreate(ctx, c));
-  PetscCall(VecGetOwnershipRange(ctx->xi1, &rstart, NULL));
+  PetscCall(VecGetOwnershipRange(ctx->state.cur, &rstart, NULL));
   for (PetscInt k = 0; k < c->nown; ++k) {
     const PetscInt    i = c->own_node[k], rows[2] = {rstart + c->own_off[k], rstart + c->own_off[k] + 1};
     const PetscScalar id[4] = {1.0, 0.0, 0.0, 1.0};
@@ -75,7 +75,7 @@ PetscErrorCode RollerContactPrimalSetUpStep(Roller ctx, RollerContact c, Vec b)
   }
   PetscCall(MatAssemblyBegin(pr->Q, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(pr->Q, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatPtAP(ctx->A, pr->Q, MAT_REUSE_MATRIX, 1.0, &pr->Ahat));
+  PetscCall(MatPtAP(ctx->ops.A, pr->Q, MAT_REUSE_MATRIX, 1.0, &pr->Ahat));
   PetscCall(MatSetOption(pr->Ahat, MAT_SYMMETRIC, PETSC_TRUE));
   PetscCall(MatSetOption(pr->Ahat, MAT_SPD, PETSC_TRUE));
   PetscCall(MatMultTranspose(pr->Q, b, pr->bhat));
@@ -84,7 +84,7 @@ PetscErrorCode RollerContactPrimalSetUpStep(Roller ctx, RollerContact c, Vec b)
   for (PetscInt k = 0; k < c->nown; ++k)
     if (c->is_cand[c->own_node[k]]) l[c->own_off[k] + 1] = c->lower[c->own_node[k]];
   PetscCall(VecRestoreArray(pr->lower, &l));
-  PetscCall(MatMultTranspose(pr->Q, ctx->xi1, pr->z));
+  PetscCall(MatMultTranspose(pr->Q, ctx->state.cur, pr->z));
   PetscCall(VecPointwiseMax(pr->z, pr->z, pr->lower));
   PetscCall(VecNorm(pr->z, NORM_2, &nz));
   PetscCall(VecNorm(pr->bhat, NORM_2, &nb));

@@ -3,7 +3,7 @@
    temporary name and renamed so that a kill during a write never leaves a corrupt latest checkpoint.
    SIGTERM/SIGINT (what a batch scheduler sends before the kill) make the driver finish the step, write a
    checkpoint and stop cleanly. */
-#include <roller_impl.h>
+#include "integrate/integrate.h"
 #include <petscviewerhdf5.h>
 #include <signal.h>
 #include <stdio.h>
@@ -18,9 +18,9 @@ static void RollerSignalHandler(int sig)
 /* The scheme's history, in the order it is written. */
 static void History(Roller ctx, Vec v[3])
 {
-  v[0] = ctx->xi1;
-  v[1] = ctx->xi2;
-  v[2] = ctx->xi3;
+  v[0] = ctx->state.cur;
+  v[1] = ctx->state.prev;
+  v[2] = ctx->state.prev2;
 }
 
 static const char *const history_names[3] = {"xi_k", "xi_k1", "xi_k2"};
@@ -60,13 +60,13 @@ PetscErrorCode RollerCheckpointWrite(Roller ctx, const char *path)
   PetscCall(PetscViewerHDF5Open(ctx->comm, tmp, FILE_MODE_WRITE, &viewer));
   History(ctx, v);
   for (PetscInt i = 0; i < 3; ++i) PetscCall(PlainView(v[i], history_names[i], viewer, PETSC_FALSE));
-  PetscCall(VecGetSize(ctx->xi1, &N));
-  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "step", PETSC_INT, &ctx->step));
-  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "time", PETSC_REAL, &ctx->time));
-  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "dt", PETSC_REAL, &ctx->dt));
+  PetscCall(VecGetSize(ctx->state.cur, &N));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "step", PETSC_INT, &ctx->state.step));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "time", PETSC_REAL, &ctx->state.time));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "dt", PETSC_REAL, &ctx->ts.dt));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "dofs", PETSC_INT, &N));
-  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "degree", PETSC_INT, &ctx->degree));
-  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "mesh_h", PETSC_REAL, &ctx->mesh_h));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "degree", PETSC_INT, &ctx->disc.degree));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "mesh_h", PETSC_REAL, &ctx->mesh.h));
   PetscCall(PetscViewerDestroy(&viewer));
   PetscCall(RollerRenameFile(ctx->comm, tmp, path));
   PetscFunctionReturn(0);
@@ -95,14 +95,14 @@ PetscErrorCode RollerCheckpointDiscretization(Roller ctx, const char *path)
 
   PetscFunctionBeginUser;
   PetscCall(CheckpointOpen(ctx, path, &viewer));
-  if (!ctx->dt_set) {
-    PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "dt", PETSC_REAL, NULL, &ctx->dt));
-    ctx->dt_set = PETSC_TRUE;
+  if (!ctx->ts.dt_set) {
+    PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "dt", PETSC_REAL, NULL, &ctx->ts.dt));
+    ctx->ts.dt_set = PETSC_TRUE;
   }
   PetscCall(PetscViewerHDF5HasAttribute(viewer, "/", "mesh_h", &exists));
-  if (!ctx->mesh_h_set && !ctx->mesh_file[0] && exists) {
-    PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "mesh_h", PETSC_REAL, NULL, &ctx->mesh_h));
-    ctx->mesh_h_set = PETSC_TRUE;
+  if (!ctx->mesh.h_set && !ctx->mesh.file[0] && exists) {
+    PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "mesh_h", PETSC_REAL, NULL, &ctx->mesh.h));
+    ctx->mesh.h_set = PETSC_TRUE;
   }
   PetscCall(PetscViewerDestroy(&viewer));
   PetscFunctionReturn(0);
@@ -121,17 +121,17 @@ PetscErrorCode RollerCheckpointRead(Roller ctx, const char *path)
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "dofs", PETSC_INT, NULL, &dofs));
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "degree", PETSC_INT, NULL, &degree));
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "dt", PETSC_REAL, NULL, &dt));
-  PetscCall(VecGetSize(ctx->xi1, &N));
-  PetscCheck(dofs == N && degree == ctx->degree, ctx->comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written for %" PetscInt_FMT " dofs of P%" PetscInt_FMT ", this run has %" PetscInt_FMT " of P%" PetscInt_FMT " (use the same mesh and -degree)", path, dofs, degree, N,
-             ctx->degree);
-  PetscCheck(dt == ctx->dt, ctx->comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written with -ts_dt %.17g, this run has %.17g", path, (double)dt, (double)ctx->dt);
-  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "step", PETSC_INT, NULL, &ctx->step));
-  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "time", PETSC_REAL, NULL, &ctx->time));
+  PetscCall(VecGetSize(ctx->state.cur, &N));
+  PetscCheck(dofs == N && degree == ctx->disc.degree, ctx->comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written for %" PetscInt_FMT " dofs of P%" PetscInt_FMT ", this run has %" PetscInt_FMT " of P%" PetscInt_FMT " (use the same mesh and -degree)", path, dofs, degree, N,
+             ctx->disc.degree);
+  PetscCheck(dt == ctx->ts.dt, ctx->comm, PETSC_ERR_ARG_INCOMP, "-restart %s: written with -ts_dt %.17g, this run has %.17g", path, (double)dt, (double)ctx->ts.dt);
+  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "step", PETSC_INT, NULL, &ctx->state.step));
+  PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "time", PETSC_REAL, NULL, &ctx->state.time));
   History(ctx, v);
   for (PetscInt i = 0; i < 3; ++i) PetscCall(PlainView(v[i], history_names[i], viewer, PETSC_TRUE));
   PetscCall(PetscViewerDestroy(&viewer));
-  PetscCall(MatMult(ctx->K, ctx->xi1, ctx->Kxi1));
-  PetscCall(MatMult(ctx->K, ctx->xi2, ctx->Kxi2));
+  PetscCall(MatMult(ctx->ops.K, ctx->state.cur, ctx->state.Kcur));
+  PetscCall(MatMult(ctx->ops.K, ctx->state.prev, ctx->state.Kprev));
   PetscFunctionReturn(0);
 }
 

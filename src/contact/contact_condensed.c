@@ -7,7 +7,7 @@
    once with the step factorization; each step is one solve for xi_f, a small dense LCP in lambda (equivalently
    min 1/2 lambda^T G lambda + d^T lambda, lambda >= 0), and, only if some lambda > 0, one more solve for the
    correction. A step in which nothing touches costs what a free step costs. */
-#include "contact.h"
+#include "contact_impl.h"
 
 struct _n_RollerContactCondensed {
   PetscReal *S;                                /* 2 nc x 2 nc, column-major, the same on every rank */
@@ -39,11 +39,11 @@ PetscErrorCode RollerContactCondensedCreate(Roller ctx, RollerContact c)
   PetscCall(PetscMalloc1((size_t)n * n, &cd->S));
   PetscCall(PetscMalloc5(c->nc, &cd->gf, (size_t)c->nc * c->nc, &cd->G, (size_t)c->nc * c->nc, &cd->Gff, c->nc, &cd->d, c->nc, &cd->lam));
   PetscCall(PetscMalloc5(c->nc, &cd->mu, c->nc, &cd->mu2, c->nc, &cd->w, c->nc, &cd->F, c->nc, &cd->act));
-  PetscCall(VecDuplicate(ctx->xi1, &cd->xf));
-  PetscCall(VecDuplicate(ctx->xi1, &cd->f));
-  PetscCall(VecDuplicate(ctx->xi1, &cd->corr));
-  PetscCall(VecGetLocalSize(ctx->xi1, &nlocal));
-  PetscCall(VecGetOwnershipRange(ctx->xi1, &rstart, &rend));
+  PetscCall(VecDuplicate(ctx->state.cur, &cd->xf));
+  PetscCall(VecDuplicate(ctx->state.cur, &cd->f));
+  PetscCall(VecDuplicate(ctx->state.cur, &cd->corr));
+  PetscCall(VecGetLocalSize(ctx->state.cur, &nlocal));
+  PetscCall(VecGetOwnershipRange(ctx->state.cur, &rstart, &rend));
   for (PetscInt j0 = 0; j0 < n; j0 += nb) {
     const PetscInt m = PetscMin(nb, n - j0);
     Mat            B, X;
@@ -58,7 +58,7 @@ PetscErrorCode RollerContactCondensedCreate(Roller ctx, RollerContact c)
     PetscCall(MatAssemblyBegin(B, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(B, MAT_FINAL_ASSEMBLY));
     PetscCall(MatDuplicate(B, MAT_DO_NOT_COPY_VALUES, &X));
-    PetscCall(KSPMatSolve(ctx->ksp, B, X));
+    PetscCall(KSPMatSolve(ctx->ops.ksp, B, X));
     for (PetscInt jj = 0; jj < m; ++jj) {
       Vec                col;
       const PetscScalar *r;
@@ -307,8 +307,8 @@ PetscErrorCode RollerContactCondensedSolve(Roller ctx, RollerContact c, Vec b, V
 
   PetscFunctionBeginUser;
   PetscCheck(cd, ctx->comm, PETSC_ERR_ORDER, "The condensed contact solver was not set up");
-  PetscCall(KSPSolve(ctx->ksp, b, cd->xf));
-  PetscCall(KSPGetConvergedReason(ctx->ksp, &reason));
+  PetscCall(KSPSolve(ctx->ops.ksp, b, cd->xf));
+  PetscCall(KSPGetConvergedReason(ctx->ops.ksp, &reason));
   PetscCheck(reason > 0, ctx->comm, PETSC_ERR_NOT_CONVERGED, "The free solve of the contact step at t = %g diverged: %s", (double)c->t, KSPConvergedReasons[reason]);
   PetscCall(RollerContactGather(c, cd->xf, c->red));
   PetscCall(VecGetArrayRead(c->red, &u));
@@ -358,8 +358,8 @@ PetscErrorCode RollerContactCondensedSolve(Roller ctx, RollerContact c, Vec b, V
     PetscFunctionReturn(0);
   }
   PetscCall(RollerContactForce(c, res->lambda, cd->f));
-  PetscCall(KSPSolve(ctx->ksp, cd->f, cd->corr));
-  PetscCall(KSPGetConvergedReason(ctx->ksp, &reason));
+  PetscCall(KSPSolve(ctx->ops.ksp, cd->f, cd->corr));
+  PetscCall(KSPGetConvergedReason(ctx->ops.ksp, &reason));
   PetscCheck(reason > 0, ctx->comm, PETSC_ERR_NOT_CONVERGED, "The contact correction solve at t = %g diverged: %s", (double)c->t, KSPConvergedReasons[reason]);
   PetscCall(VecWAXPY(xi, 1.0, cd->xf, cd->corr));
   PetscFunctionReturn(0);

@@ -1,21 +1,21 @@
 /* The prescribed motions: the driving rotation theta(t) and the obstacle height g(t) (docs/model.md sections 1, 5),
    and the pointwise R(-pi/2) that the Euler and Coriolis terms of f apply. */
-#include <roller_impl.h>
+#include "model/model.h"
 
 /* theta(t) = omega t + a cos(b t) and its first two derivatives. */
 void RollerTheta(Roller ctx, PetscReal t, PetscReal *theta, PetscReal *theta_dot, PetscReal *theta_ddot)
 {
-  const PetscReal a = ctx->theta_a, b = ctx->theta_b;
+  const PetscReal a = ctx->rotation.a, b = ctx->rotation.b;
 
-  if (theta) *theta = ctx->omega * t + a * PetscCosReal(b * t);
-  if (theta_dot) *theta_dot = ctx->omega - a * b * PetscSinReal(b * t);
+  if (theta) *theta = ctx->rotation.omega * t + a * PetscCosReal(b * t);
+  if (theta_dot) *theta_dot = ctx->rotation.omega - a * b * PetscSinReal(b * t);
   if (theta_ddot) *theta_ddot = -a * b * b * PetscCosReal(b * t);
 }
 
 /* g(t) = min(speed t, depth) - r_outer (docs/model.md section 6). */
 PetscReal RollerObstacleHeight(Roller ctx, PetscReal t)
 {
-  return PetscMin(ctx->obstacle_speed * t, ctx->obstacle_depth) - ctx->r_outer;
+  return PetscMin(ctx->obstacle.speed * t, ctx->obstacle.depth) - ctx->mesh.r_outer;
 }
 
 /* y = R(-pi/2) x at every node: (a, b) -> (b, -a). Displacement dofs are stored in (x, y) pairs, and a

@@ -1,5 +1,5 @@
 /* The life of a Roller context: set up every component in order, destroy them all. */
-#include <roller_impl.h>
+#include "integrate/integrate.h"
 
 PetscErrorCode RollerSetUp(Roller ctx)
 {
@@ -14,8 +14,8 @@ PetscErrorCode RollerSetUp(Roller ctx)
   PetscCall(RollerComputeBoundaryFunctionals(ctx));
   PetscCall(RollerCheckRotation(ctx));
   PetscCall(RollerInitialState(ctx));
-  if (ctx->restart[0]) PetscCall(RollerCheckpointRead(ctx, ctx->restart));
-  if (ctx->obstacle) PetscCall(RollerContactCreate(ctx, &ctx->contact));
+  if (ctx->ck.restart[0]) PetscCall(RollerCheckpointRead(ctx, ctx->ck.restart));
+  if (ctx->obstacle.on) PetscCall(RollerContactCreate(ctx, &ctx->contact));
   else {
     PetscBool help;
 
@@ -35,27 +35,27 @@ PetscErrorCode RollerDestroy(Roller *roller)
   if (!ctx) PetscFunctionReturn(0);
   PetscCall(RollerOutputDestroy(ctx, &ctx->output));
   PetscCall(RollerContactDestroy(&ctx->contact));
-  PetscCall(KSPDestroy(&ctx->ksp));
-  PetscCall(MatDestroy(&ctx->M));
-  PetscCall(MatDestroy(&ctx->K));
-  PetscCall(MatDestroy(&ctx->A));
-  PetscCall(MatDestroy(&ctx->A0));
-  PetscCall(MatDestroy(&ctx->G));
-  PetscCall(VecDestroy(&ctx->L_euler));
-  PetscCall(VecDestroy(&ctx->L_centrifugal));
-  PetscCall(VecDestroy(&ctx->coordinates));
-  PetscCall(VecDestroy(&ctx->xi));
-  PetscCall(VecDestroy(&ctx->xi1));
-  PetscCall(VecDestroy(&ctx->xi2));
-  PetscCall(VecDestroy(&ctx->xi3));
-  PetscCall(VecDestroy(&ctx->Kxi1));
-  PetscCall(VecDestroy(&ctx->Kxi2));
-  PetscCall(VecDestroy(&ctx->rhs));
-  PetscCall(VecDestroy(&ctx->work));
-  PetscCall(VecDestroy(&ctx->w_R));
-  PetscCall(VecDestroy(&ctx->w_alpha));
-  PetscCall(DMDestroy(&ctx->dm_view));
-  PetscCall(DMDestroy(&ctx->dm));
+  PetscCall(KSPDestroy(&ctx->ops.ksp));
+  PetscCall(MatDestroy(&ctx->ops.M));
+  PetscCall(MatDestroy(&ctx->ops.K));
+  PetscCall(MatDestroy(&ctx->ops.A));
+  PetscCall(MatDestroy(&ctx->ops.A0));
+  PetscCall(MatDestroy(&ctx->ops.Gyro));
+  PetscCall(VecDestroy(&ctx->ops.L_euler));
+  PetscCall(VecDestroy(&ctx->ops.L_centrifugal));
+  PetscCall(VecDestroy(&ctx->ops.coordinates));
+  PetscCall(VecDestroy(&ctx->state.next));
+  PetscCall(VecDestroy(&ctx->state.cur));
+  PetscCall(VecDestroy(&ctx->state.prev));
+  PetscCall(VecDestroy(&ctx->state.prev2));
+  PetscCall(VecDestroy(&ctx->state.Kcur));
+  PetscCall(VecDestroy(&ctx->state.Kprev));
+  PetscCall(VecDestroy(&ctx->state.rhs));
+  PetscCall(VecDestroy(&ctx->state.work));
+  PetscCall(VecDestroy(&ctx->ops.w_R));
+  PetscCall(VecDestroy(&ctx->ops.w_alpha));
+  PetscCall(DMDestroy(&ctx->mesh.dm_view));
+  PetscCall(DMDestroy(&ctx->mesh.dm));
   PetscCall(PetscFree(ctx));
   *roller = NULL;
   PetscFunctionReturn(0);

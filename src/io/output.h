@@ -2,10 +2,10 @@
    files share. One concern a file: output.c the fields and the object's life, output_csv.c the CSV,
    output_xdmf.c the HDF5 layout and the XDMF index (the file handling they share with the
    checkpoint is output_files.c, declared in roller_impl.h). */
-#ifndef ROLLER_OUTPUT_H
-#define ROLLER_OUTPUT_H
+#ifndef ROLLER_IO_OUTPUT_H
+#define ROLLER_IO_OUTPUT_H
 
-#include <roller_impl.h>
+#include "io/io.h"
 #include <petscviewerhdf5.h>
 #include <errno.h>
 #include <stdio.h>
@@ -49,7 +49,7 @@ struct _n_RollerOutput {
 
   /* Output spaces on the same mesh: vdm P1 with 3 components, sdm and pdm (contact pressure) P1 scalar */
   DM           vdm, sdm, pdm;
-  Vec          velocity; /* on ctx->dm */
+  Vec          velocity; /* on ctx->mesh.dm */
   Vec          position; /* (x, y, 0) at every vertex (vdm) */
   Vec          count;    /* the number of cells around every vertex (sdm) */
   OutputField  field[MAX_FIELDS];

@@ -1,6 +1,6 @@
 /* What every step reports (docs/model.md sections 4 and 6): the mean radial and tangential displacements of
    Gamma_C, the discrete energy of Theorem 1, and the contact quantities. */
-#include <roller_impl.h>
+#include "integrate/integrate.h"
 
 /* E^k = rho/2 |xi^k - xi^{k-1}|^2_M / dt^2 + (a(xi^k, xi^k) + a(xi^{k-1}, xi^{k-1}))/4 (docs/model.md section 2). */
 static PetscErrorCode Energy(Roller ctx, PetscReal *energy)
@@ -8,12 +8,12 @@ static PetscErrorCode Energy(Roller ctx, PetscReal *energy)
   PetscScalar kin, pot1, pot2;
 
   PetscFunctionBeginUser;
-  PetscCall(VecWAXPY(ctx->work, -1.0, ctx->xi2, ctx->xi1));
-  PetscCall(MatMult(ctx->M, ctx->work, ctx->xi));
-  PetscCall(VecDot(ctx->work, ctx->xi, &kin));
-  PetscCall(VecDot(ctx->xi1, ctx->Kxi1, &pot1));
-  PetscCall(VecDot(ctx->xi2, ctx->Kxi2, &pot2));
-  *energy = 0.5 * ctx->density * PetscRealPart(kin) / (ctx->dt * ctx->dt) + 0.25 * PetscRealPart(pot1 + pot2);
+  PetscCall(VecWAXPY(ctx->state.work, -1.0, ctx->state.prev, ctx->state.cur));
+  PetscCall(MatMult(ctx->ops.M, ctx->state.work, ctx->state.next));
+  PetscCall(VecDot(ctx->state.work, ctx->state.next, &kin));
+  PetscCall(VecDot(ctx->state.cur, ctx->state.Kcur, &pot1));
+  PetscCall(VecDot(ctx->state.prev, ctx->state.Kprev, &pot2));
+  *energy = 0.5 * ctx->material.density * PetscRealPart(kin) / (ctx->ts.dt * ctx->ts.dt) + 0.25 * PetscRealPart(pot1 + pot2);
   PetscFunctionReturn(0);
 }
 
@@ -25,12 +25,12 @@ PetscErrorCode RollerComputeStepInfo(Roller ctx)
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_DIAGNOSTICS]));
-  PetscCall(VecDot(ctx->w_R, ctx->xi1, &r));
-  PetscCall(VecDot(ctx->w_alpha, ctx->xi1, &a));
-  info->R     = PetscRealPart(r) / ctx->boundary_length;
-  info->alpha = PetscRealPart(a) / ctx->boundary_length;
+  PetscCall(VecDot(ctx->ops.w_R, ctx->state.cur, &r));
+  PetscCall(VecDot(ctx->ops.w_alpha, ctx->state.cur, &a));
+  info->R     = PetscRealPart(r) / ctx->mesh.boundary_length;
+  info->alpha = PetscRealPart(a) / ctx->mesh.boundary_length;
   PetscCall(Energy(ctx, &info->energy));
-  if (ctx->contact) PetscCall(RollerContactInfo(ctx, ctx->contact, ctx->xi1, ctx->time, info));
+  if (ctx->contact) PetscCall(RollerContactInfo(ctx, ctx->contact, ctx->state.cur, ctx->state.time, info));
   else {
     /* no obstacle: no contact, and no gap to report (docs/output.md) */
     info->contact_nodes = 0;

@@ -1,7 +1,7 @@
 /* Files that must not look complete before they are: joined names checked for length, the rank-0 rename
    of a finished .part file, stale outputs of an earlier run removed, a writable path checked early. Used by
    the CSV, the HDF5/XDMF output and the checkpoint. */
-#include <roller_impl.h>
+#include "io/io.h"
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>

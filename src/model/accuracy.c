@@ -11,7 +11,7 @@
             C_k w_t T (h/L)^q_k with L = r_C - r_D; h makes it 0.7 P, which leaves 0.3 P for alpha's
             time error (measured <= 0.06 P) and the scatter of the calibration.
    Both frequencies are Bessel-root problems of the annulus clamped at r_D and free at r_C. */
-#include <roller_impl.h>
+#include "model/model.h"
 
 /* Calibration of the spatial phase error C_k w_t T (h/L)^q_k (docs/validation.md, "accurate defaults"):
    measured against the exact-in-space DMF reference for E = 0.05, 0.1, 0.2 and T = 20, 60 with the
@@ -44,22 +44,22 @@ typedef PetscReal (*Determinant)(PetscReal, PetscReal, PetscReal, PetscReal, Pet
 /* The lowest root k > 0 of det: scan k (r_C - r_D) in (0, 40] for the first sign change, then bisect. */
 static PetscErrorCode LowestRoot(Roller ctx, Determinant det, const char *what, PetscReal *k)
 {
-  const PetscReal ri = ctx->r_inner, ro = ctx->r_outer, L = ro - ri;
+  const PetscReal ri = ctx->mesh.r_inner, ro = ctx->mesh.r_outer, L = ro - ri;
   const PetscInt  n = 4000;
-  PetscReal       a = 1e-3 / L, fa = det(a, ri, ro, ctx->lambda, ctx->mu), b = a, fb = fa;
+  PetscReal       a = 1e-3 / L, fa = det(a, ri, ro, ctx->material.lambda, ctx->material.mu), b = a, fb = fa;
   PetscInt        i;
 
   PetscFunctionBeginUser;
   for (i = 1; i <= n; i++) {
     b  = 40.0 * i / (n * L);
-    fb = det(b, ri, ro, ctx->lambda, ctx->mu);
+    fb = det(b, ri, ro, ctx->material.lambda, ctx->material.mu);
     if ((fa < 0) != (fb < 0)) break;
     a  = b;
     fa = fb;
   }
   PetscCheck(i <= n, ctx->comm, PETSC_ERR_PLIB, "No %s mode found below k = %g for -r_inner %g -r_outer %g", what, (double)(40.0 / L), (double)ri, (double)ro);
   for (i = 0; i < 100 && b - a > 1e-15 * b; i++) {
-    const PetscReal m = 0.5 * (a + b), fm = det(m, ri, ro, ctx->lambda, ctx->mu);
+    const PetscReal m = 0.5 * (a + b), fm = det(m, ri, ro, ctx->material.lambda, ctx->material.mu);
 
     if ((fa < 0) == (fm < 0)) {
       a  = m;
@@ -73,7 +73,7 @@ static PetscErrorCode LowestRoot(Roller ctx, Determinant det, const char *what, 
 /* Angular frequencies of the breathing (P) and torsional (S) modes of the annulus at rest. */
 PetscErrorCode RollerModeFrequencies(Roller ctx, PetscReal *w_breathing, PetscReal *w_torsion)
 {
-  const PetscReal c_p = PetscSqrtReal((ctx->lambda + 2 * ctx->mu) / ctx->density), c_s = PetscSqrtReal(ctx->mu / ctx->density);
+  const PetscReal c_p = PetscSqrtReal((ctx->material.lambda + 2 * ctx->material.mu) / ctx->material.density), c_s = PetscSqrtReal(ctx->material.mu / ctx->material.density);
   PetscReal       k;
 
   PetscFunctionBeginUser;
@@ -87,30 +87,30 @@ PetscErrorCode RollerModeFrequencies(Roller ctx, PetscReal *w_breathing, PetscRe
 /* The end time the error target refers to: -ts_max_time, at least one period of the fastest mode. */
 static PetscReal EndTime(Roller ctx, PetscReal w_fast)
 {
-  return PetscMax(ctx->max_time, 2 * PETSC_PI / w_fast);
+  return PetscMax(ctx->ts.max_time, 2 * PETSC_PI / w_fast);
 }
 
 /* -mesh_h when not given: C_k w_t T (h/L)^q = 0.7 P. Needs the radii from the options (a mesh file sets its own h). */
 PetscErrorCode RollerChooseMeshSize(Roller ctx)
 {
-  PetscReal w_b, w_t, T, L = ctx->r_outer - ctx->r_inner;
+  PetscReal w_b, w_t, T, L = ctx->mesh.r_outer - ctx->mesh.r_inner;
 
   PetscFunctionBeginUser;
-  if (ctx->mesh_h_set || ctx->mesh_file[0]) PetscFunctionReturn(0);
+  if (ctx->mesh.h_set || ctx->mesh.file[0]) PetscFunctionReturn(0);
   PetscCall(RollerModeFrequencies(ctx, &w_b, &w_t));
-  T           = EndTime(ctx, PetscMax(w_b, ctx->theta_b));
-  ctx->mesh_h = L * PetscPowReal(0.7 * ctx->phase_error / (calibration_C[ctx->degree] * w_t * T), 1.0 / calibration_q[ctx->degree]);
-  ctx->mesh_h = PetscMin(ctx->mesh_h, 0.5 * L); /* at least two elements across the wall */
-  PetscCall(PetscInfo(NULL, "-mesh_h %g from -ts_phase_error %g: torsional mode w_t = %g (period %g), T = %g, P%" PetscInt_FMT "\n", (double)ctx->mesh_h, (double)ctx->phase_error, (double)w_t, (double)(2 * PETSC_PI / w_t), (double)T, ctx->degree));
-  if (ctx->obstacle && ctx->obstacle_depth > 0) {
+  T           = EndTime(ctx, PetscMax(w_b, ctx->rotation.b));
+  ctx->mesh.h = L * PetscPowReal(0.7 * ctx->ts.phase_error / (calibration_C[ctx->disc.degree] * w_t * T), 1.0 / calibration_q[ctx->disc.degree]);
+  ctx->mesh.h = PetscMin(ctx->mesh.h, 0.5 * L); /* at least two elements across the wall */
+  PetscCall(PetscInfo(NULL, "-mesh_h %g from -ts_phase_error %g: torsional mode w_t = %g (period %g), T = %g, P%" PetscInt_FMT "\n", (double)ctx->mesh.h, (double)ctx->ts.phase_error, (double)w_t, (double)(2 * PETSC_PI / w_t), (double)T, ctx->disc.degree));
+  if (ctx->obstacle.on && ctx->obstacle.depth > 0) {
     /* Contact: five elements across the contact half-width a ~ sqrt(r_C d) (Hertz's a^2 = 4 P R/(pi E*)
        is close to r_C d for these depths); measured on the rolling scene against its finest run: 1 % in R,
        alpha and the averaged force (docs/model.md section 6.2). */
-    const PetscReal h_contact = PetscSqrtReal(ctx->r_outer * ctx->obstacle_depth) / 5.0;
+    const PetscReal h_contact = PetscSqrtReal(ctx->mesh.r_outer * ctx->obstacle.depth) / 5.0;
 
-    if (h_contact < ctx->mesh_h) {
-      ctx->mesh_h = h_contact;
-      PetscCall(PetscInfo(NULL, "-mesh_h %g: five elements across the contact half-width sqrt(r_outer depth) = %g\n", (double)ctx->mesh_h, (double)(5 * h_contact)));
+    if (h_contact < ctx->mesh.h) {
+      ctx->mesh.h = h_contact;
+      PetscCall(PetscInfo(NULL, "-mesh_h %g: five elements across the contact half-width sqrt(r_outer depth) = %g\n", (double)ctx->mesh.h, (double)(5 * h_contact)));
     }
   }
   PetscFunctionReturn(0);
@@ -124,18 +124,18 @@ PetscErrorCode RollerChooseTimeStep(Roller ctx)
 
   PetscFunctionBeginUser;
   PetscCall(RollerModeFrequencies(ctx, &w_b, &w_t));
-  w = PetscMax(w_b, ctx->theta_b);
+  w = PetscMax(w_b, ctx->rotation.b);
   T = EndTime(ctx, w);
-  if (!ctx->dt_set) ctx->dt = PetscSqrtReal(24.0 * ctx->phase_error / (5.0 * w * w * w * T));
-  PetscCall(PetscInfo(NULL, "-ts_dt %g (%s): fastest excited mode w = %g (period %g, %s), T = %g, phase error target %g\n", (double)ctx->dt, ctx->dt_set ? "given" : "from -ts_phase_error", (double)w, (double)(2 * PETSC_PI / w), w_b >= ctx->theta_b ? "radial breathing" : "forcing b", (double)T,
-                      (double)ctx->phase_error));
-  if (ctx->discretization_view) {
-    const PetscReal phase = 5.0 * w * T * PetscSqr(w * ctx->dt) / 24.0;
+  if (!ctx->ts.dt_set) ctx->ts.dt = PetscSqrtReal(24.0 * ctx->ts.phase_error / (5.0 * w * w * w * T));
+  PetscCall(PetscInfo(NULL, "-ts_dt %g (%s): fastest excited mode w = %g (period %g, %s), T = %g, phase error target %g\n", (double)ctx->ts.dt, ctx->ts.dt_set ? "given" : "from -ts_phase_error", (double)w, (double)(2 * PETSC_PI / w),
+                      w_b >= ctx->rotation.b ? "radial breathing" : "forcing b", (double)T, (double)ctx->ts.phase_error));
+  if (ctx->ts.view) {
+    const PetscReal phase = 5.0 * w * T * PetscSqr(w * ctx->ts.dt) / 24.0;
 
-    PetscCall(PetscPrintf(ctx->comm, "roller: P%" PetscInt_FMT "%s, %s -mesh_h %g, -ts_dt %g (%s), -coriolis_velocity %s\n", ctx->degree, ctx->curved ? " curved" : "", ctx->mesh_file[0] ? "mesh file, not" : (ctx->mesh_h_set ? "given" : "from -ts_phase_error:"),
-                          (double)ctx->mesh_h, (double)ctx->dt, ctx->dt_set ? "given" : "from -ts_phase_error", RollerCoriolisVelocities[ctx->coriolis]));
-    PetscCall(PetscPrintf(ctx->comm, "roller: fastest excited mode: %s, w = %g (period %g); torsional mode w_t = %g (period %g); end time %g; its phase error (5/24) w T (w dt)^2 = %.3g (target %g)\n", w_b >= ctx->theta_b ? "radial breathing" : "the forcing b", (double)w, (double)(2 * PETSC_PI / w), (double)w_t, (double)(2 * PETSC_PI / w_t), (double)T, (double)phase,
-                          (double)ctx->phase_error));
+    PetscCall(PetscPrintf(ctx->comm, "roller: P%" PetscInt_FMT "%s, %s -mesh_h %g, -ts_dt %g (%s), -coriolis_velocity %s\n", ctx->disc.degree, ctx->mesh.curved ? " curved" : "", ctx->mesh.file[0] ? "mesh file, not" : (ctx->mesh.h_set ? "given" : "from -ts_phase_error:"),
+                          (double)ctx->mesh.h, (double)ctx->ts.dt, ctx->ts.dt_set ? "given" : "from -ts_phase_error", RollerCoriolisVelocities[ctx->disc.coriolis]));
+    PetscCall(PetscPrintf(ctx->comm, "roller: fastest excited mode: %s, w = %g (period %g); torsional mode w_t = %g (period %g); end time %g; its phase error (5/24) w T (w dt)^2 = %.3g (target %g)\n", w_b >= ctx->rotation.b ? "radial breathing" : "the forcing b", (double)w, (double)(2 * PETSC_PI / w), (double)w_t, (double)(2 * PETSC_PI / w_t), (double)T, (double)phase,
+                          (double)ctx->ts.phase_error));
   }
   PetscFunctionReturn(0);
 }

@@ -6,8 +6,8 @@
    (f of docs/model.md section 1, all of it) makes it a solution of (P) without obstacle.
    T(t) = 1 + t ("linear": the DMF scheme is exact in time, so the error is spatial only) or
    T(t) = sin(2 pi t) ("sine": the time error shows). */
-#include <roller_impl.h>
-#include "kernels.h"
+#include "verify/verify.h"
+#include "model/kernels.h"
 
 static const PetscReal mms_c[2] = {1.0, 0.5};
 
@@ -74,9 +74,9 @@ static PetscErrorCode MMSExact(PetscInt dim, PetscReal time, const PetscReal x[]
   Roller    ctx = (Roller)vctx;
   PetscReal T[3], B;
 
-  MMSTime(ctx->mms, time, T);
-  MMSShape(ctx->r_inner, ctx->r_outer, x, &B, NULL, NULL);
-  for (PetscInt c = 0; c < 2; ++c) u[c] = T[0] * ctx->ic_amplitude * B * mms_c[c];
+  MMSTime(ctx->init.mms, time, T);
+  MMSShape(ctx->mesh.r_inner, ctx->mesh.r_outer, x, &B, NULL, NULL);
+  for (PetscInt c = 0; c < 2; ++c) u[c] = T[0] * ctx->init.amplitude * B * mms_c[c];
   return 0;
 }
 
@@ -86,19 +86,19 @@ static PetscErrorCode BumpShape(PetscInt dim, PetscReal time, const PetscReal x[
   Roller    ctx = (Roller)vctx;
   PetscReal B;
 
-  MMSShape(ctx->r_inner, ctx->r_outer, x, &B, NULL, NULL);
-  for (PetscInt c = 0; c < 2; ++c) u[c] = ctx->ic_amplitude * B * mms_c[c];
+  MMSShape(ctx->mesh.r_inner, ctx->mesh.r_outer, x, &B, NULL, NULL);
+  for (PetscInt c = 0; c < 2; ++c) u[c] = ctx->init.amplitude * B * mms_c[c];
   return 0;
 }
 
 /* xi = I u(t), the nodal interpolant of the exact solution (or of the bump). */
 PetscErrorCode RollerMMSExact(Roller ctx, PetscReal t, Vec xi)
 {
-  PetscErrorCode (*funcs[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {ctx->mms == ROLLER_MMS_NONE ? BumpShape : MMSExact};
+  PetscErrorCode (*funcs[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {ctx->init.mms == ROLLER_MMS_NONE ? BumpShape : MMSExact};
   void *ctxs[1]                                                                                       = {ctx};
 
   PetscFunctionBeginUser;
-  PetscCall(DMProjectFunction(ctx->dm, t, funcs, ctxs, INSERT_VALUES, xi));
+  PetscCall(DMProjectFunction(ctx->mesh.dm, t, funcs, ctxs, INSERT_VALUES, xi));
   PetscFunctionReturn(0);
 }
 
@@ -110,16 +110,16 @@ PetscErrorCode RollerAddMMSLoad(Roller ctx, PetscReal t, Vec b)
 
   PetscFunctionBeginUser;
   PetscCall(RollerSetConstants(ctx, t, 0.0, 0.0, 0.0));
-  PetscCall(DMGetDS(ctx->dm, &ds));
+  PetscCall(DMGetDS(ctx->mesh.dm, &ds));
   PetscCall(PetscDSSetResidual(ds, 0, f0_mms, NULL));
-  PetscCall(DMGetLocalVector(ctx->dm, &loc));
-  PetscCall(DMGetLocalVector(ctx->dm, &locF));
+  PetscCall(DMGetLocalVector(ctx->mesh.dm, &loc));
+  PetscCall(DMGetLocalVector(ctx->mesh.dm, &locF));
   PetscCall(VecZeroEntries(loc));
   PetscCall(VecZeroEntries(locF));
-  PetscCall(DMPlexSNESComputeResidualFEM(ctx->dm, loc, locF, NULL));
-  PetscCall(DMLocalToGlobal(ctx->dm, locF, ADD_VALUES, b));
-  PetscCall(DMRestoreLocalVector(ctx->dm, &loc));
-  PetscCall(DMRestoreLocalVector(ctx->dm, &locF));
+  PetscCall(DMPlexSNESComputeResidualFEM(ctx->mesh.dm, loc, locF, NULL));
+  PetscCall(DMLocalToGlobal(ctx->mesh.dm, locF, ADD_VALUES, b));
+  PetscCall(DMRestoreLocalVector(ctx->mesh.dm, &loc));
+  PetscCall(DMRestoreLocalVector(ctx->mesh.dm, &locF));
   PetscFunctionReturn(0);
 }
 
@@ -153,9 +153,9 @@ static PetscErrorCode IntegrateError(Roller ctx, void (*f0)(ROLLER_KERNEL_ARGS, 
   PetscScalar integral;
 
   PetscFunctionBeginUser;
-  PetscCall(DMGetDS(ctx->dm, &ds));
+  PetscCall(DMGetDS(ctx->mesh.dm, &ds));
   PetscCall(PetscDSSetObjective(ds, 0, f0));
-  PetscCall(DMPlexComputeIntegralFEM(ctx->dm, ctx->xi1, &integral, NULL));
+  PetscCall(DMPlexComputeIntegralFEM(ctx->mesh.dm, ctx->state.cur, &integral, NULL));
   *err = PetscSqrtReal(PetscRealPart(integral));
   PetscFunctionReturn(0);
 }

@@ -7,7 +7,7 @@
    circle exactly when theta'^2 <= kappa, whatever dt (docs/stability.md). So before stepping, Roller
    computes omega_1 by inverse iteration with a Cholesky factorization of K and refuses a rotation with
    max |theta'| >= omega_1 (with -stability_margin). */
-#include <roller_impl.h>
+#include "verify/verify.h"
 
 static PetscErrorCode LowestFrequency(Roller ctx, PetscReal *omega1)
 {
@@ -19,32 +19,32 @@ static PetscErrorCode LowestFrequency(Roller ctx, PetscReal *omega1)
   PetscFunctionBeginUser;
   PetscCall(KSPCreate(ctx->comm, &ksp));
   PetscCall(KSPSetOptionsPrefix(ksp, "stability_"));
-  PetscCall(KSPSetOperators(ksp, ctx->K, ctx->K));
+  PetscCall(KSPSetOperators(ksp, ctx->ops.K, ctx->ops.K));
   PetscCall(RollerDirectSolverDefaults(ksp, PCCHOLESKY));
   PetscCall(KSPSetFromOptions(ksp));
-  PetscCall(VecDuplicate(ctx->coordinates, &v));
-  PetscCall(VecDuplicate(ctx->coordinates, &w));
-  PetscCall(VecDuplicate(ctx->coordinates, &Mv));
-  PetscCall(VecCopy(ctx->coordinates, v)); /* any start with a component on the lowest mode */
+  PetscCall(VecDuplicate(ctx->ops.coordinates, &v));
+  PetscCall(VecDuplicate(ctx->ops.coordinates, &w));
+  PetscCall(VecDuplicate(ctx->ops.coordinates, &Mv));
+  PetscCall(VecCopy(ctx->ops.coordinates, v)); /* any start with a component on the lowest mode */
   PetscCall(VecShift(v, 0.1));
   for (it = 0; it < 200; ++it) {
     PetscScalar vKv, vMv;
     PetscReal   norm;
 
-    PetscCall(MatMult(ctx->M, v, Mv));
+    PetscCall(MatMult(ctx->ops.M, v, Mv));
     PetscCall(KSPSolve(ksp, Mv, w));
     PetscCall(VecNorm(w, NORM_2, &norm));
     PetscCall(VecScale(w, 1.0 / norm));
     PetscCall(VecCopy(w, v));
-    PetscCall(MatMult(ctx->K, v, w));
+    PetscCall(MatMult(ctx->ops.K, v, w));
     PetscCall(VecDot(v, w, &vKv));
-    PetscCall(MatMult(ctx->M, v, Mv));
+    PetscCall(MatMult(ctx->ops.M, v, Mv));
     PetscCall(VecDot(v, Mv, &vMv));
     rq = PetscRealPart(vKv / vMv);
     if (PetscAbsReal(rq - rq_old) < 1e-10 * rq) break;
     rq_old = rq;
   }
-  *omega1 = PetscSqrtReal(rq / ctx->density);
+  *omega1 = PetscSqrtReal(rq / ctx->material.density);
   PetscCall(PetscInfo(ksp, "omega_1 = %g after %" PetscInt_FMT " inverse iterations\n", (double)*omega1, it));
   PetscCall(VecDestroy(&v));
   PetscCall(VecDestroy(&w));
@@ -56,7 +56,7 @@ static PetscErrorCode LowestFrequency(Roller ctx, PetscReal *omega1)
 PetscErrorCode RollerCheckRotation(Roller ctx)
 {
   PetscBool check = PETSC_TRUE, view = PETSC_FALSE;
-  PetscReal margin = 0.95, omega1 = 0, max_rate = PetscAbsReal(ctx->omega) + PetscAbsReal(ctx->theta_a * ctx->theta_b);
+  PetscReal margin = 0.95, omega1 = 0, max_rate = PetscAbsReal(ctx->rotation.omega) + PetscAbsReal(ctx->rotation.a * ctx->rotation.b);
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(ctx->comm, NULL, "Roller: rotation stability", NULL);
@@ -69,6 +69,6 @@ PetscErrorCode RollerCheckRotation(Roller ctx)
   PetscCall(LowestFrequency(ctx, &omega1));
   if (view) PetscCall(PetscPrintf(ctx->comm, "stability: omega_1 = %.10g, max |theta'| = %.10g, allowed < %.10g\n", (double)omega1, (double)max_rate, (double)(margin * omega1)));
   PetscCheck(max_rate < margin * omega1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-omega %g (max |theta'| = |omega| + |theta_a theta_b| = %g) is beyond the centrifugal-softening limit: the roller's lowest natural frequency is omega_1 = %g, and the rotating-frame model loses stability at |theta'| = omega_1; allowed: max |theta'| < %g (-stability_margin %g)",
-             (double)ctx->omega, (double)max_rate, (double)omega1, (double)(margin * omega1), (double)margin);
+             (double)ctx->rotation.omega, (double)max_rate, (double)omega1, (double)(margin * omega1), (double)margin);
   PetscFunctionReturn(0);
 }

@@ -14,7 +14,7 @@
    would pad a 2-component dataset is read differently by the Xdmf2 (interlaces) and Xdmf3 (concatenates)
    readers, so the padding is in the data, where every reader agrees. */
 #include "output.h"
-#include "kernels.h"
+#include "model/kernels.h"
 
 typedef void (*PointwiseFunc)(PetscInt, PetscInt, PetscInt, const PetscInt[], const PetscInt[], const PetscScalar[], const PetscScalar[], const PetscScalar[], const PetscInt[], const PetscInt[], const PetscScalar[], const PetscScalar[], const PetscScalar[], PetscReal, const PetscReal[], PetscInt, const PetscScalar[], PetscScalar[]);
 
@@ -31,7 +31,7 @@ static void f_one(PetscInt dim, PetscInt Nf, PetscInt NfAux, const PetscInt uOff
   f[0] = 1.0;
 }
 
-/* Evaluate a kernel of the field u (on ctx->dm) at the vertices of the output space of X. ADD_VALUES sums
+/* Evaluate a kernel of the field u (on ctx->mesh.dm) at the vertices of the output space of X. ADD_VALUES sums
    over the cells around each vertex (then divided by their number: a derivative such as sigma is
    discontinuous across cells and its vertex value is the mean of the cells' values). */
 static PetscErrorCode ProjectAtVertices(Roller ctx, Vec u, PointwiseFunc kernel, InsertMode mode, Vec X)
@@ -42,31 +42,31 @@ static PetscErrorCode ProjectAtVertices(Roller ctx, Vec u, PointwiseFunc kernel,
 
   PetscFunctionBeginUser;
   PetscCall(VecGetDM(X, &dm));
-  PetscCall(DMGetLocalVector(ctx->dm, &ul));
+  PetscCall(DMGetLocalVector(ctx->mesh.dm, &ul));
   PetscCall(DMGetLocalVector(dm, &Xl));
   /* the Dirichlet dofs are not in the global vector: set them (xi = 0, and so xi_t = 0, on Gamma_D) */
-  PetscCall(DMPlexInsertBoundaryValues(ctx->dm, PETSC_TRUE, ul, ctx->time, NULL, NULL, NULL));
-  PetscCall(DMGlobalToLocal(ctx->dm, u, INSERT_VALUES, ul));
+  PetscCall(DMPlexInsertBoundaryValues(ctx->mesh.dm, PETSC_TRUE, ul, ctx->state.time, NULL, NULL, NULL));
+  PetscCall(DMGlobalToLocal(ctx->mesh.dm, u, INSERT_VALUES, ul));
   PetscCall(VecZeroEntries(Xl));
-  PetscCall(DMProjectFieldLocal(dm, ctx->time, ul, funcs, mode, Xl));
+  PetscCall(DMProjectFieldLocal(dm, ctx->state.time, ul, funcs, mode, Xl));
   PetscCall(VecZeroEntries(X));
   PetscCall(DMLocalToGlobal(dm, Xl, mode, X));
   PetscCall(DMRestoreLocalVector(dm, &Xl));
-  PetscCall(DMRestoreLocalVector(ctx->dm, &ul));
+  PetscCall(DMRestoreLocalVector(ctx->mesh.dm, &ul));
   PetscFunctionReturn(0);
 }
 
 /* ---------------------------------------------------------------------------------------------------
    Set-up */
 
-/* A P1 space on the mesh of ctx->dm with nc components, its field named name (PETSc names the vertex
+/* A P1 space on the mesh of ctx->mesh.dm with nc components, its field named name (PETSc names the vertex
    datasets <vec>_<field>). */
 static PetscErrorCode OutputSpace(Roller ctx, PetscInt nc, const char name[], DM *dm)
 {
   PetscFE fe;
 
   PetscFunctionBeginUser;
-  PetscCall(DMClone(ctx->dm, dm));
+  PetscCall(DMClone(ctx->mesh.dm, dm));
   PetscCall(PetscFECreateLagrange(PETSC_COMM_SELF, 2, nc, PETSC_TRUE, 1, PETSC_DETERMINE, &fe));
   PetscCall(PetscObjectSetName((PetscObject)fe, name));
   PetscCall(DMSetField(*dm, 0, NULL, (PetscObject)fe));
@@ -96,25 +96,25 @@ static PetscErrorCode WriteParameters(Roller ctx, PetscViewer h5)
     const char *name;
     PetscReal   value;
   } p[] = {
-    {"r_inner",        ctx->r_inner       },
-    {"r_outer",        ctx->r_outer       },
-    {"young",          ctx->young         },
-    {"poisson",        ctx->poisson       },
-    {"density",        ctx->density       },
-    {"omega",          ctx->omega         },
-    {"theta_a",        ctx->theta_a       },
-    {"theta_b",        ctx->theta_b       },
-    {"obstacle_speed", ctx->obstacle_speed},
-    {"obstacle_depth", ctx->obstacle_depth},
-    {"damping",        ctx->damping       },
-    {"dt",             ctx->dt            },
+    {"r_inner",        ctx->mesh.r_inner    },
+    {"r_outer",        ctx->mesh.r_outer    },
+    {"young",          ctx->material.young  },
+    {"poisson",        ctx->material.poisson},
+    {"density",        ctx->material.density},
+    {"omega",          ctx->rotation.omega  },
+    {"theta_a",        ctx->rotation.a      },
+    {"theta_b",        ctx->rotation.b      },
+    {"obstacle_speed", ctx->obstacle.speed  },
+    {"obstacle_depth", ctx->obstacle.depth  },
+    {"damping",        ctx->disc.damping    },
+    {"dt",             ctx->ts.dt           },
   };
-  const PetscInt obstacle = ctx->obstacle ? 1 : 0;
+  const PetscInt obstacle = ctx->obstacle.on ? 1 : 0;
 
   PetscFunctionBeginUser;
   for (size_t i = 0; i < sizeof(p) / sizeof(p[0]); ++i) PetscCall(PetscViewerHDF5WriteAttribute(h5, "/parameters", p[i].name, PETSC_REAL, &p[i].value));
   PetscCall(PetscViewerHDF5WriteAttribute(h5, "/parameters", "obstacle", PETSC_INT, &obstacle));
-  PetscCall(PetscViewerHDF5WriteAttribute(h5, "/parameters", "degree", PETSC_INT, &ctx->degree));
+  PetscCall(PetscViewerHDF5WriteAttribute(h5, "/parameters", "degree", PETSC_INT, &ctx->disc.degree));
   PetscFunctionReturn(0);
 }
 
@@ -131,7 +131,7 @@ static PetscErrorCode FieldsCreate(Roller ctx, RollerOutput out)
   PetscCall(RollerRemoveStale(ctx->comm, out->xmf_part)); /* would index the new file before it has a step */
   PetscCall(RollerCheckWritable(ctx->comm, "-output", out->h5_part));
   PetscCall(PetscViewerHDF5Open(ctx->comm, out->h5_part, FILE_MODE_WRITE, &out->h5));
-  PetscCall(DMView(ctx->dm_view, out->h5)); /* straight-sided: XDMF draws linear triangles */
+  PetscCall(DMView(ctx->mesh.dm_view, out->h5)); /* straight-sided: XDMF draws linear triangles */
   PetscCall(WriteParameters(ctx, out->h5));
   PetscCall(PetscViewerHDF5HasDataset(out->h5, "/viz/geometry/vertices", &has));
   PetscCall(RollerDatasetQuery(out->h5, has ? "/viz/geometry/vertices" : "/geometry/vertices", &out->vertices));
@@ -150,11 +150,11 @@ static PetscErrorCode FieldsCreate(Roller ctx, RollerOutput out)
     PetscCall(FieldCreate(out->pdm, "contact_pressure", &out->field[FIELD_CONTACT_PRESSURE]));
     out->nfields = FIELD_CONTACT_PRESSURE + 1;
   }
-  PetscCall(DMCreateGlobalVector(ctx->dm, &out->velocity));
+  PetscCall(DMCreateGlobalVector(ctx->mesh.dm, &out->velocity));
   PetscCall(DMCreateGlobalVector(out->sdm, &out->count));
   PetscCall(DMCreateGlobalVector(out->vdm, &out->position));
   PetscCall(DMProjectFunction(out->vdm, 0.0, position, NULL, INSERT_VALUES, out->position));
-  PetscCall(ProjectAtVertices(ctx, ctx->xi1, f_one, ADD_VALUES, out->count));
+  PetscCall(ProjectAtVertices(ctx, ctx->state.cur, f_one, ADD_VALUES, out->count));
   PetscFunctionReturn(0);
 }
 
@@ -215,27 +215,27 @@ static PetscErrorCode WriteFields(Roller ctx, RollerOutput out)
   PetscReal theta;
 
   PetscFunctionBeginUser;
-  RollerTheta(ctx, ctx->time, &theta, NULL, NULL);
-  PetscCall(ProjectAtVertices(ctx, ctx->xi1, f_pad_vector, INSERT_VALUES, out->field[FIELD_DISPLACEMENT].vec));
+  RollerTheta(ctx, ctx->state.time, &theta, NULL, NULL);
+  PetscCall(ProjectAtVertices(ctx, ctx->state.cur, f_pad_vector, INSERT_VALUES, out->field[FIELD_DISPLACEMENT].vec));
   PetscCall(LabDisplacement(out, theta, out->field[FIELD_DISPLACEMENT].vec, out->field[FIELD_LAB].vec));
-  PetscCall(VecWAXPY(out->velocity, -1.0, ctx->xi2, ctx->xi1));
-  PetscCall(VecScale(out->velocity, 1.0 / ctx->dt));
+  PetscCall(VecWAXPY(out->velocity, -1.0, ctx->state.prev, ctx->state.cur));
+  PetscCall(VecScale(out->velocity, 1.0 / ctx->ts.dt));
   PetscCall(ProjectAtVertices(ctx, out->velocity, f_pad_vector, INSERT_VALUES, out->field[FIELD_VELOCITY].vec));
-  /* |sigma| (docs/model.md section 4); DMProjectField hands the kernel the constants of the input DS, ctx->dm's */
-  PetscCall(ProjectAtVertices(ctx, ctx->xi1, f_stress_norm, ADD_VALUES, out->field[FIELD_STRESS].vec));
+  /* |sigma| (docs/model.md section 4); DMProjectField hands the kernel the constants of the input DS, ctx->mesh.dm's */
+  PetscCall(ProjectAtVertices(ctx, ctx->state.cur, f_stress_norm, ADD_VALUES, out->field[FIELD_STRESS].vec));
   PetscCall(VecPointwiseDivide(out->field[FIELD_STRESS].vec, out->field[FIELD_STRESS].vec, out->count));
   /* multiplier / tributary length at the Gamma_C vertices (docs/contact.md) */
   if (out->nfields > FIELD_CONTACT_PRESSURE) PetscCall(RollerContactPressure(ctx, ctx->contact, out->field[FIELD_CONTACT_PRESSURE].vec));
 
-  PetscCall(DMSetOutputSequenceNumber(out->vdm, out->written, ctx->time));
-  PetscCall(DMSetOutputSequenceNumber(out->sdm, out->written, ctx->time));
-  if (out->pdm) PetscCall(DMSetOutputSequenceNumber(out->pdm, out->written, ctx->time));
+  PetscCall(DMSetOutputSequenceNumber(out->vdm, out->written, ctx->state.time));
+  PetscCall(DMSetOutputSequenceNumber(out->sdm, out->written, ctx->state.time));
+  if (out->pdm) PetscCall(DMSetOutputSequenceNumber(out->pdm, out->written, ctx->state.time));
   for (PetscInt f = 0; f < out->nfields; ++f) PetscCall(VecView(out->field[f].vec, out->h5));
   if (out->written == out->times_size) {
     out->times_size = PetscMax(64, 2 * out->times_size);
     PetscCall(PetscRealloc(sizeof(PetscReal) * out->times_size, &out->times));
   }
-  out->times[out->written++] = ctx->time;
+  out->times[out->written++] = ctx->state.time;
   PetscCall(RollerLayoutUpdate(out));
   PetscCall(RollerXdmfAppend(ctx->comm, out));
   PetscFunctionReturn(0);
@@ -247,7 +247,7 @@ PetscErrorCode RollerOutputStep(Roller ctx, RollerOutput out)
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_OUTPUT]));
   if (out->csv_path[0]) PetscCall(RollerCsvRow(ctx, out));
   if (out->h5) PetscCall(RollerSeriesAppend(ctx, &out->series));
-  if (out->h5 && ctx->step % out->every == 0) PetscCall(WriteFields(ctx, out));
+  if (out->h5 && ctx->state.step % out->every == 0) PetscCall(WriteFields(ctx, out));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }

@@ -1,7 +1,7 @@
 /* The obstacle QP of one DMF step (docs/model.md section 2): the Gamma_C nodes, the candidate set, the dispatch to
    the solver chosen by -contact_solver with the penetration check, the KKT residual and the per-step contact
    diagnostics (docs/model.md section 6). The solvers live in contact_condensed.c, contact_primal.c, contact_pcg.c. */
-#include "contact.h"
+#include "contact_impl.h"
 
 const char *const RollerContactSolverTypes[] = {"condensed", "vi", "tao", "pcg", "RollerContactSolverType", "CONTACT_", NULL};
 const char *const RollerContactQPTypes[]     = {"activeset", "tao", "RollerContactQPType", "CONTACT_QP_", NULL};
@@ -9,7 +9,7 @@ const char *const RollerContactQPTypes[]     = {"activeset", "tao", "RollerConta
 /* A node outside the candidate set whose gap is below -tol triggers a re-solve with it added. */
 PetscReal RollerContactGapTolerance(Roller ctx)
 {
-  return 1e-12 * ctx->r_outer;
+  return 1e-12 * ctx->mesh.r_outer;
 }
 
 static PetscErrorCode ContactSetFromOptions(Roller ctx, RollerContact c)
@@ -17,7 +17,7 @@ static PetscErrorCode ContactSetFromOptions(Roller ctx, RollerContact c)
   PetscFunctionBeginUser;
   c->solver       = CONTACT_CONDENSED;
   c->qp           = CONTACT_QP_ACTIVESET;
-  c->margin       = 2e-3 * ctx->r_outer;
+  c->margin       = 2e-3 * ctx->mesh.r_outer;
   c->rtol         = 1e-12;
   c->pcg_rtol     = 1e-12;
   c->pcg_max_it   = 100000;
@@ -35,7 +35,7 @@ static PetscErrorCode ContactSetFromOptions(Roller ctx, RollerContact c)
   PetscCall(PetscOptionsInt("-contact_pcg_max_it", "Iteration cap of the projected CG", NULL, c->pcg_max_it, &c->pcg_max_it, NULL));
   PetscCall(PetscOptionsInt("-contact_max_resolves", "Re-solves allowed per step when a node outside the candidate set penetrates", NULL, c->max_resolves, &c->max_resolves, NULL));
   PetscOptionsEnd();
-  PetscCheck(c->margin > -ctx->r_outer, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_margin %g must be > -r_outer", (double)c->margin);
+  PetscCheck(c->margin > -ctx->mesh.r_outer, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_margin %g must be > -r_outer", (double)c->margin);
   PetscCheck(c->rtol > 0 && c->rtol < 1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_rtol %g must lie in (0, 1)", (double)c->rtol);
   PetscCheck(c->pcg_rtol > 0 && c->pcg_rtol < 1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_pcg_rtol %g must lie in (0, 1)", (double)c->pcg_rtol);
   PetscCheck(c->pcg_max_it > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_pcg_max_it %" PetscInt_FMT " must be > 0", c->pcg_max_it);
@@ -59,16 +59,16 @@ static PetscErrorCode ContactGatherNodes(Roller ctx, RollerContact c)
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
-  PetscCall(DMGetLabel(ctx->dm, "outer", &label));
+  PetscCall(DMGetLabel(ctx->mesh.dm, "outer", &label));
   PetscCheck(label, ctx->comm, PETSC_ERR_ARG_WRONG, "The mesh has no label \"outer\" (Gamma_C)");
-  PetscCall(DMGetGlobalSection(ctx->dm, &gsection));
-  PetscCall(VecGetOwnershipRange(ctx->coordinates, &rstart, &rend));
+  PetscCall(DMGetGlobalSection(ctx->mesh.dm, &gsection));
+  PetscCall(VecGetOwnershipRange(ctx->ops.coordinates, &rstart, &rend));
   PetscCall(DMLabelGetStratumIS(label, 1, &is));
   if (is) PetscCall(ISGetLocalSize(is, &npoints));
   if (is) PetscCall(ISGetIndices(is, &points));
   /* every owned point of the label carries gdof/2 nodes (P1 vertex 1, P2 vertex or edge 1) */
-  PetscCall(PetscMalloc4(2 * npoints * ctx->degree, &mine_idx, 2 * npoints * ctx->degree, &mine_vert, 2 * npoints * ctx->degree, &mine_point, 4 * npoints * ctx->degree, &mine_x));
-  PetscCall(VecGetArrayRead(ctx->coordinates, &x));
+  PetscCall(PetscMalloc4(2 * npoints * ctx->disc.degree, &mine_idx, 2 * npoints * ctx->disc.degree, &mine_vert, 2 * npoints * ctx->disc.degree, &mine_point, 4 * npoints * ctx->disc.degree, &mine_x));
+  PetscCall(VecGetArrayRead(ctx->ops.coordinates, &x));
   for (PetscInt p = 0; p < npoints; ++p) {
     PetscInt gdof, gcdof, goff, depth;
 
@@ -77,7 +77,7 @@ static PetscErrorCode ContactGatherNodes(Roller ctx, RollerContact c)
     PetscCall(PetscSectionGetOffset(gsection, points[p], &goff));
     if (gdof <= 0 || goff < 0) continue; /* not owned here */
     PetscCheck(gcdof == 0 && gdof % 2 == 0, ctx->comm, PETSC_ERR_PLIB, "Gamma_C point %" PetscInt_FMT " has %" PetscInt_FMT " dofs, %" PetscInt_FMT " constrained", points[p], gdof, gcdof);
-    PetscCall(DMPlexGetPointDepth(ctx->dm, points[p], &depth));
+    PetscCall(DMPlexGetPointDepth(ctx->mesh.dm, points[p], &depth));
     for (PetscInt j = 0; j < gdof; j += 2) {
       mine_idx[nown]       = goff + j;
       mine_vert[nown]      = depth == 0 ? 1 : 0;
@@ -87,7 +87,7 @@ static PetscErrorCode ContactGatherNodes(Roller ctx, RollerContact c)
       nown++;
     }
   }
-  PetscCall(VecRestoreArrayRead(ctx->coordinates, &x));
+  PetscCall(VecRestoreArrayRead(ctx->ops.coordinates, &x));
   if (is) PetscCall(ISRestoreIndices(is, &points));
   PetscCall(ISDestroy(&is));
 
@@ -148,7 +148,7 @@ static PetscErrorCode ContactGatherNodes(Roller ctx, RollerContact c)
   PetscCall(VecCreateSeq(PETSC_COMM_SELF, 2 * c->nc, &c->red));
   PetscCall(VecDuplicate(c->red, &c->red1));
   PetscCall(VecDuplicate(c->red, &c->red2));
-  PetscCall(VecScatterCreate(ctx->coordinates, is, c->red, to, &c->scatter));
+  PetscCall(VecScatterCreate(ctx->ops.coordinates, is, c->red, to, &c->scatter));
   PetscCall(ISDestroy(&is));
   PetscCall(ISDestroy(&to));
   PetscFunctionReturn(0);
@@ -178,10 +178,10 @@ PetscErrorCode RollerContactCreate(Roller ctx, RollerContact *contact)
   PetscCall(PetscMalloc7(c->nc, &c->cand, c->nc, &c->is_cand, c->nc, &c->on_obstacle, c->nc, &c->lower, c->nc, &c->gap, c->nc, &c->result.lambda, c->nc, &c->check_result.lambda));
   PetscCall(PetscArrayzero(c->result.lambda, c->nc));
   PetscCall(PetscArrayzero(c->is_cand, c->nc));
-  PetscCall(VecDuplicate(ctx->xi1, &c->b));
-  PetscCall(VecDuplicate(ctx->xi1, &c->force));
-  PetscCall(VecDuplicate(ctx->xi1, &c->work));
-  if (c->check) PetscCall(VecDuplicate(ctx->xi1, &c->xi_check));
+  PetscCall(VecDuplicate(ctx->state.cur, &c->b));
+  PetscCall(VecDuplicate(ctx->state.cur, &c->force));
+  PetscCall(VecDuplicate(ctx->state.cur, &c->work));
+  if (c->check) PetscCall(VecDuplicate(ctx->state.cur, &c->xi_check));
   /* S is computed once (2 N_C solves): only when the condensed solver will be used */
   if (c->solver == CONTACT_CONDENSED || c->check) PetscCall(RollerContactCondensedCreate(ctx, c));
   PetscCall(PetscInfo(NULL, "Contact: %" PetscInt_FMT " Gamma_C nodes (%" PetscInt_FMT " on this rank), solver %s\n", c->nc, c->nown, RollerContactSolverTypes[c->solver]));
@@ -271,16 +271,16 @@ static PetscErrorCode ContactCandidates(Roller ctx, RollerContact c)
   PetscReal          dmax = 0.0, reach, theta1, n1[2], g1;
 
   PetscFunctionBeginUser;
-  PetscCall(RollerContactGather(c, ctx->xi1, c->red1));
-  PetscCall(RollerContactGather(c, ctx->xi2, c->red2));
+  PetscCall(RollerContactGather(c, ctx->state.cur, c->red1));
+  PetscCall(RollerContactGather(c, ctx->state.prev, c->red2));
   PetscCall(VecGetArrayRead(c->red1, &u1));
   PetscCall(VecGetArrayRead(c->red2, &u2));
   for (PetscInt i = 0; i < c->nc; ++i) dmax = PetscMax(dmax, PetscSqrtReal(PetscSqr(PetscRealPart(u1[2 * i] - u2[2 * i])) + PetscSqr(PetscRealPart(u1[2 * i + 1] - u2[2 * i + 1]))));
-  reach = c->margin + PetscAbsReal(c->g - RollerObstacleHeight(ctx, c->t - ctx->dt)) + 2.0 * dmax;
-  RollerTheta(ctx, ctx->time, &theta1, NULL, NULL);
+  reach = c->margin + PetscAbsReal(c->g - RollerObstacleHeight(ctx, c->t - ctx->ts.dt)) + 2.0 * dmax;
+  RollerTheta(ctx, ctx->state.time, &theta1, NULL, NULL);
   n1[0] = PetscSinReal(theta1);
   n1[1] = PetscCosReal(theta1);
-  g1    = RollerObstacleHeight(ctx, ctx->time);
+  g1    = RollerObstacleHeight(ctx, ctx->state.time);
   for (PetscInt i = 0; i < c->nc; ++i) {
     const PetscReal p0 = PetscRealPart(2.0 * u1[2 * i] - u2[2 * i]), p1 = PetscRealPart(2.0 * u1[2 * i + 1] - u2[2 * i + 1]);
     const PetscReal gap1 = (c->xc[2 * i] + PetscRealPart(u1[2 * i])) * n1[0] + (c->xc[2 * i + 1] + PetscRealPart(u1[2 * i + 1])) * n1[1] - g1;
@@ -350,7 +350,7 @@ static PetscErrorCode ContactKKT(Roller ctx, RollerContact c, Vec xi, const Pets
   PetscCall(RollerContactGather(c, xi, c->red));
   PetscCall(ContactGaps(c, c->red, c->gap, gap_min));
   PetscCall(RollerContactForce(c, lambda, c->force));
-  PetscCall(MatMult(ctx->A, xi, c->work));
+  PetscCall(MatMult(ctx->ops.A, xi, c->work));
   PetscCall(VecAXPBYPCZ(c->work, -1.0, -1.0, 1.0, c->b, c->force));
   PetscCall(VecNorm(c->work, NORM_2, &nr));
   PetscCall(VecNorm(c->b, NORM_2, &nb));
@@ -361,7 +361,7 @@ static PetscErrorCode ContactKKT(Roller ctx, RollerContact c, Vec xi, const Pets
     lmin = PetscMin(lmin, lambda[i]);
     comp = PetscMax(comp, PetscAbsReal(lambda[i] * c->gap[i]));
   }
-  *kkt = PetscMax(PetscMax(PetscMax(0.0, -*gap_min) / ctx->r_outer, -lmin / fs), PetscMax(comp / (fs * ctx->r_outer), nr / fs));
+  *kkt = PetscMax(PetscMax(PetscMax(0.0, -*gap_min) / ctx->mesh.r_outer, -lmin / fs), PetscMax(comp / (fs * ctx->mesh.r_outer), nr / fs));
   PetscFunctionReturn(0);
 }
 
@@ -375,7 +375,7 @@ static PetscErrorCode ContactCheck(Roller ctx, RollerContact c, Vec b, Vec xi)
   if (xmax == 0.0) xmax = 1.0;
   PetscCall(ContactKKT(ctx, c, xi, c->result.lambda, &gap_min, &kkt));
   c->check_max_kkt[c->solver] = PetscMax(c->check_max_kkt[c->solver], kkt);
-  PetscCall(PetscPrintf(ctx->comm, "contact_check: step %" PetscInt_FMT " t %.6g solver %s its %" PetscInt_FMT " diff %.3e kkt %.3e gap_min %+.3e\n", ctx->step + 1, (double)c->t, RollerContactSolverTypes[c->solver], c->result.its, 0.0, (double)kkt, (double)gap_min));
+  PetscCall(PetscPrintf(ctx->comm, "contact_check: step %" PetscInt_FMT " t %.6g solver %s its %" PetscInt_FMT " diff %.3e kkt %.3e gap_min %+.3e\n", ctx->state.step + 1, (double)c->t, RollerContactSolverTypes[c->solver], c->result.its, 0.0, (double)kkt, (double)gap_min));
   for (PetscInt s = 0; s < CONTACT_NUM_SOLVERS; ++s) {
     PetscReal diff;
 
@@ -387,7 +387,7 @@ static PetscErrorCode ContactCheck(Roller ctx, RollerContact c, Vec b, Vec xi)
     diff /= xmax;
     c->check_max_diff[s] = PetscMax(c->check_max_diff[s], diff);
     c->check_max_kkt[s]  = PetscMax(c->check_max_kkt[s], kkt);
-    PetscCall(PetscPrintf(ctx->comm, "contact_check: step %" PetscInt_FMT " t %.6g solver %s its %" PetscInt_FMT " diff %.3e kkt %.3e gap_min %+.3e\n", ctx->step + 1, (double)c->t, RollerContactSolverTypes[s], c->check_result.its, (double)diff, (double)kkt, (double)gap_min));
+    PetscCall(PetscPrintf(ctx->comm, "contact_check: step %" PetscInt_FMT " t %.6g solver %s its %" PetscInt_FMT " diff %.3e kkt %.3e gap_min %+.3e\n", ctx->state.step + 1, (double)c->t, RollerContactSolverTypes[s], c->check_result.its, (double)diff, (double)kkt, (double)gap_min));
   }
   c->check_steps++;
   PetscFunctionReturn(0);
@@ -435,7 +435,7 @@ static PetscErrorCode ContactMonitor(Roller ctx, RollerContact c, const RollerSt
   }
   PetscCall(VecRestoreArrayRead(c->red, &u));
   if (info->contact_force > 0) s2 /= info->contact_force;
-  PetscCall(PetscPrintf(ctx->comm, "contact_monitor: step %" PetscInt_FMT " t %.6g nodes %" PetscInt_FMT " force %.10e s_min %+.10e s_max %+.10e s_centroid %+.10e s_rms %.10e candidates %" PetscInt_FMT " resolves %" PetscInt_FMT "\n", ctx->step,
+  PetscCall(PetscPrintf(ctx->comm, "contact_monitor: step %" PetscInt_FMT " t %.6g nodes %" PetscInt_FMT " force %.10e s_min %+.10e s_max %+.10e s_centroid %+.10e s_rms %.10e candidates %" PetscInt_FMT " resolves %" PetscInt_FMT "\n", ctx->state.step,
                         (double)c->t, info->contact_nodes, (double)info->contact_force, (double)smin, (double)smax, (double)sbar, (double)PetscSqrtReal(s2), c->ncand, c->resolves));
   PetscFunctionReturn(0);
 }
@@ -452,7 +452,7 @@ PetscErrorCode RollerContactInfo(Roller ctx, RollerContact c, Vec xi, PetscReal 
     c->result.its = 0;
     PetscCall(RollerContactGather(c, xi, c->red));
     PetscCall(ContactGaps(c, c->red, c->gap, &gap_min));
-    kkt = PetscMax(0.0, -gap_min) / ctx->r_outer;
+    kkt = PetscMax(0.0, -gap_min) / ctx->mesh.r_outer;
   } else PetscCall(ContactKKT(ctx, c, xi, c->result.lambda, &gap_min, &kkt));
   info->contact_nodes = 0;
   info->contact_force = 0.0;

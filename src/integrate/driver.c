@@ -1,6 +1,6 @@
 /* The TS-like driver: advances the three-level DMF scheme from t = 0 to -ts_max_time (or
    -ts_max_steps), runs the diagnostics and monitors of every step and prints a progress line. */
-#include <roller_impl.h>
+#include "integrate/integrate.h"
 
 typedef struct {
   PetscBool      monitor, quiet;
@@ -14,16 +14,16 @@ static PetscErrorCode Monitor(Roller ctx, Progress *p, PetscInt nsteps)
 
   PetscFunctionBeginUser;
   if (p->monitor) {
-    PetscCall(PetscPrintf(ctx->comm, "%5" PetscInt_FMT " t %-10.6g R %+.6e alpha %+.6e energy %.10e", ctx->step, (double)ctx->time, (double)info->R, (double)info->alpha, (double)info->energy));
+    PetscCall(PetscPrintf(ctx->comm, "%5" PetscInt_FMT " t %-10.6g R %+.6e alpha %+.6e energy %.10e", ctx->state.step, (double)ctx->state.time, (double)info->R, (double)info->alpha, (double)info->energy));
     if (ctx->contact)
       PetscCall(PetscPrintf(ctx->comm, " contact %" PetscInt_FMT " force %.6e gap %+.3e its %" PetscInt_FMT " kkt %.2e", info->contact_nodes, (double)info->contact_force, (double)info->gap_min, info->qp_iterations, (double)info->kkt_residual));
     PetscCall(PetscPrintf(ctx->comm, "\n"));
   }
-  if (p->quiet || ctx->step == 0) PetscFunctionReturn(0);
+  if (p->quiet || ctx->state.step == 0) PetscFunctionReturn(0);
   PetscCall(PetscTime(&now));
-  if (now - p->last >= 5.0 || ctx->step == nsteps) {
-    const PetscLogDouble eta = (now - p->start) * (nsteps - ctx->step) / ctx->step;
-    PetscCall(PetscPrintf(ctx->comm, "roller: step %" PetscInt_FMT "/%" PetscInt_FMT " t = %g, %.1f s elapsed, ETA %.1f s\n", ctx->step, nsteps, (double)ctx->time, now - p->start, eta));
+  if (now - p->last >= 5.0 || ctx->state.step == nsteps) {
+    const PetscLogDouble eta = (now - p->start) * (nsteps - ctx->state.step) / ctx->state.step;
+    PetscCall(PetscPrintf(ctx->comm, "roller: step %" PetscInt_FMT "/%" PetscInt_FMT " t = %g, %.1f s elapsed, ETA %.1f s\n", ctx->state.step, nsteps, (double)ctx->state.time, now - p->start, eta));
     p->last = now;
   }
   PetscFunctionReturn(0);
@@ -32,9 +32,9 @@ static PetscErrorCode Monitor(Roller ctx, Progress *p, PetscInt nsteps)
 /* Number of steps: floor(max_time/dt) (to a rounding tolerance), capped by -ts_max_steps. */
 static PetscInt StepCount(Roller ctx)
 {
-  PetscReal n = PetscFloorReal(ctx->max_time / ctx->dt + 1e-9);
+  PetscReal n = PetscFloorReal(ctx->ts.max_time / ctx->ts.dt + 1e-9);
 
-  if (ctx->max_steps >= 0) n = PetscMin(n, (PetscReal)ctx->max_steps);
+  if (ctx->ts.max_steps >= 0) n = PetscMin(n, (PetscReal)ctx->ts.max_steps);
   return (PetscInt)PetscMin(n, (PetscReal)PETSC_MAX_INT);
 }
 
@@ -44,15 +44,15 @@ static PetscInt StepCount(Roller ctx)
 static PetscErrorCode StepFailed(Roller ctx, PetscErrorCode ierr)
 {
   PetscFunctionBeginUser;
-  PetscCall(RollerCheckpointWrite(ctx, ctx->checkpoint));
-  PetscCall(PetscPrintf(ctx->comm, "roller: step %" PetscInt_FMT " (t = %g) failed; the last good state (step %" PetscInt_FMT ", t = %g) is in the checkpoint %s: continue with the same options and -restart %s (after changing what failed)\n", ctx->step + 1,
-                        (double)((ctx->step + 1) * ctx->dt), ctx->step, (double)ctx->time, ctx->checkpoint, ctx->checkpoint));
-  SETERRQ(ctx->comm, ierr, "Step %" PetscInt_FMT " failed; the last good state is in the checkpoint %s", ctx->step + 1, ctx->checkpoint);
+  PetscCall(RollerCheckpointWrite(ctx, ctx->ck.file));
+  PetscCall(PetscPrintf(ctx->comm, "roller: step %" PetscInt_FMT " (t = %g) failed; the last good state (step %" PetscInt_FMT ", t = %g) is in the checkpoint %s: continue with the same options and -restart %s (after changing what failed)\n",
+                        ctx->state.step + 1, (double)((ctx->state.step + 1) * ctx->ts.dt), ctx->state.step, (double)ctx->state.time, ctx->ck.file, ctx->ck.file));
+  SETERRQ(ctx->comm, ierr, "Step %" PetscInt_FMT " failed; the last good state is in the checkpoint %s", ctx->state.step + 1, ctx->ck.file);
 }
 
 PetscErrorCode RollerSolve(Roller ctx)
 {
-  Progress  p      = {PETSC_FALSE, ctx->quiet, 0, 0};
+  Progress  p      = {PETSC_FALSE, ctx->ts.quiet, 0, 0};
   PetscInt  nsteps = StepCount(ctx);
   PetscBool help;
 
@@ -67,8 +67,8 @@ PetscErrorCode RollerSolve(Roller ctx)
   p.last = p.start;
   PetscCall(RollerComputeStepInfo(ctx));
   PetscCall(Monitor(ctx, &p, nsteps));
-  if (!ctx->restart[0]) PetscCall(RollerOutputStep(ctx, ctx->output)); /* a restart continues after its row */
-  while (ctx->step < nsteps) {
+  if (!ctx->ck.restart[0]) PetscCall(RollerOutputStep(ctx, ctx->output)); /* a restart continues after its row */
+  while (ctx->state.step < nsteps) {
     PetscInt sig;
 
     PetscErrorCode ierr;
@@ -80,19 +80,19 @@ PetscErrorCode RollerSolve(Roller ctx)
     PetscCall(RollerComputeStepInfo(ctx));
     PetscCall(Monitor(ctx, &p, nsteps));
     PetscCall(RollerOutputStep(ctx, ctx->output));
-    if (ctx->checkpoint_every && ctx->step % ctx->checkpoint_every == 0) PetscCall(RollerCheckpointWrite(ctx, ctx->checkpoint));
+    if (ctx->ck.every && ctx->state.step % ctx->ck.every == 0) PetscCall(RollerCheckpointWrite(ctx, ctx->ck.file));
     PetscCall(RollerSignalCaught(ctx, &sig));
     if (sig) {
-      PetscCall(RollerCheckpointWrite(ctx, ctx->checkpoint));
-      PetscCall(PetscPrintf(ctx->comm, "roller: caught signal %d after step %" PetscInt_FMT " (t = %g); the state is in %s. Continue with the same options and -restart %s\n", (int)sig, ctx->step, (double)ctx->time, ctx->checkpoint, ctx->checkpoint));
+      PetscCall(RollerCheckpointWrite(ctx, ctx->ck.file));
+      PetscCall(PetscPrintf(ctx->comm, "roller: caught signal %d after step %" PetscInt_FMT " (t = %g); the state is in %s. Continue with the same options and -restart %s\n", (int)sig, ctx->state.step, (double)ctx->state.time, ctx->ck.file, ctx->ck.file));
       break;
     }
   }
-  if (ctx->mms != ROLLER_MMS_NONE) {
+  if (ctx->init.mms != ROLLER_MMS_NONE) {
     PetscReal l2, h1;
 
-    PetscCall(RollerComputeErrors(ctx, ctx->time, &l2, &h1));
-    PetscCall(PetscPrintf(ctx->comm, "mms: t %.17g L2 %.17g H1 %.17g\n", (double)ctx->time, (double)l2, (double)h1));
+    PetscCall(RollerComputeErrors(ctx, ctx->state.time, &l2, &h1));
+    PetscCall(PetscPrintf(ctx->comm, "mms: t %.17g L2 %.17g H1 %.17g\n", (double)ctx->state.time, (double)l2, (double)h1));
   }
   PetscFunctionReturn(0);
 }

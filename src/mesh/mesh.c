@@ -1,7 +1,7 @@
 /* The annulus mesh (docs/model.md section 3): gmsh, either in-process through its C API or a user's .msh file, read
    into DMPlex; the labels "inner" (Gamma_D) and "outer" (Gamma_C); the checks that the mesh really is a
    triangulated annulus about the origin; the measures of the distributed mesh. */
-#include <roller_impl.h>
+#include "mesh/mesh.h"
 #include <gmshc.h>
 
 /* Relative spread allowed for the radii of the vertices of one boundary circle. */
@@ -83,10 +83,10 @@ static PetscErrorCode RollerMeshGenerate(Roller ctx, PetscBool verbose, char dir
   int         ierr = 0;
 
   PetscFunctionBeginUser;
-  PetscCheck(ctx->mesh_h > 0 && ctx->mesh_h <= ctx->r_outer - ctx->r_inner, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_h %g must lie in (0, r_outer - r_inner = %g]", (double)ctx->mesh_h, (double)(ctx->r_outer - ctx->r_inner));
+  PetscCheck(ctx->mesh.h > 0 && ctx->mesh.h <= ctx->mesh.r_outer - ctx->mesh.r_inner, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_h %g must lie in (0, r_outer - r_inner = %g]", (double)ctx->mesh.h, (double)(ctx->mesh.r_outer - ctx->mesh.r_inner));
   PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
   if (rank == 0) {
-    const double h = ctx->mesh_h, ri = ctx->r_inner, ro = ctx->r_outer;
+    const double h = ctx->mesh.h, ri = ctx->mesh.r_inner, ro = ctx->mesh.r_outer;
     int          loops[2], inner[2], outer[2], body;
 
     PetscCall(PetscGetTmp(PETSC_COMM_SELF, dir, PETSC_MAX_PATH_LEN));
@@ -128,7 +128,7 @@ static PetscErrorCode RollerMeshGenerate(Roller ctx, PetscBool verbose, char dir
     }
   }
   PetscCallMPI(MPI_Bcast(&ierr, 1, MPI_INT, 0, ctx->comm));
-  PetscCheck(!ierr, ctx->comm, PETSC_ERR_LIB, "gmsh failed (error %d) to mesh the annulus r_inner %g, r_outer %g at -mesh_h %g; rerun with -mesh_gmsh_verbose", ierr, (double)ctx->r_inner, (double)ctx->r_outer, (double)ctx->mesh_h);
+  PetscCheck(!ierr, ctx->comm, PETSC_ERR_LIB, "gmsh failed (error %d) to mesh the annulus r_inner %g, r_outer %g at -mesh_h %g; rerun with -mesh_gmsh_verbose", ierr, (double)ctx->mesh.r_inner, (double)ctx->mesh.r_outer, (double)ctx->mesh.h);
   PetscCallMPI(MPI_Bcast(file, PETSC_MAX_PATH_LEN, MPI_CHAR, 0, ctx->comm));
   PetscFunctionReturn(0);
 }
@@ -140,12 +140,12 @@ static PetscErrorCode RollerMeshCheckCells(Roller ctx, const char *what)
   DMPolytopeType ct;
 
   PetscFunctionBeginUser;
-  PetscCall(DMGetDimension(ctx->dm, &dim));
-  PetscCall(DMGetCoordinateDim(ctx->dm, &cdim));
+  PetscCall(DMGetDimension(ctx->mesh.dm, &dim));
+  PetscCall(DMGetCoordinateDim(ctx->mesh.dm, &cdim));
   PetscCheck(dim == 2 && cdim == 2, ctx->comm, PETSC_ERR_FILE_UNEXPECTED, "%s: the mesh has dimension %" PetscInt_FMT " with %" PetscInt_FMT "-D coordinates; Roller needs a 2-D mesh in the plane", what, dim, cdim);
-  PetscCall(DMPlexGetHeightStratum(ctx->dm, 0, &c_start, &c_end));
+  PetscCall(DMPlexGetHeightStratum(ctx->mesh.dm, 0, &c_start, &c_end));
   for (PetscInt c = c_start; c < c_end; ++c) {
-    PetscCall(DMPlexGetCellType(ctx->dm, c, &ct));
+    PetscCall(DMPlexGetCellType(ctx->mesh.dm, c, &ct));
     if (ct != DM_POLYTOPE_TRIANGLE) {
       bad[0]++;
       bad[1] = (PetscInt)ct;
@@ -164,9 +164,9 @@ static PetscErrorCode RollerMeshLabelGroup(Roller ctx, const char *what, const c
   PetscInt n = 0, n_global;
 
   PetscFunctionBeginUser;
-  PetscCall(DMCreateLabel(ctx->dm, name));
-  PetscCall(DMGetLabel(ctx->dm, name, &label));
-  PetscCall(DMGetLabel(ctx->dm, "Face Sets", &face_sets));
+  PetscCall(DMCreateLabel(ctx->mesh.dm, name));
+  PetscCall(DMGetLabel(ctx->mesh.dm, name, &label));
+  PetscCall(DMGetLabel(ctx->mesh.dm, "Face Sets", &face_sets));
   if (face_sets) {
     IS              is;
     const PetscInt *faces;
@@ -182,7 +182,7 @@ static PetscErrorCode RollerMeshLabelGroup(Roller ctx, const char *what, const c
   }
   PetscCall(MPIU_Allreduce(&n, &n_global, 1, MPIU_INT, MPI_SUM, ctx->comm));
   PetscCheck(n_global > 0, ctx->comm, PETSC_ERR_FILE_UNEXPECTED, "%s: physical group \"%s\" (tag %" PetscInt_FMT ") has no edges in \"Face Sets\" (do not pass -dm_plex_gmsh_use_regions)", what, name, tag);
-  PetscCall(DMPlexLabelComplete(ctx->dm, label));
+  PetscCall(DMPlexLabelComplete(ctx->mesh.dm, label));
   PetscFunctionReturn(0);
 }
 
@@ -197,10 +197,10 @@ static PetscErrorCode RollerMeshRadii(Roller ctx, const char *name, PetscReal *r
   PetscReal          range[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, range_global[2]; /* min r, -max r */
 
   PetscFunctionBeginUser;
-  if (name) PetscCall(DMGetLabel(ctx->dm, name, &label));
-  PetscCall(DMPlexGetDepthStratum(ctx->dm, 0, &v_start, &v_end));
-  PetscCall(DMGetCoordinateSection(ctx->dm, &section));
-  PetscCall(DMGetCoordinatesLocal(ctx->dm, &coordinates));
+  if (name) PetscCall(DMGetLabel(ctx->mesh.dm, name, &label));
+  PetscCall(DMPlexGetDepthStratum(ctx->mesh.dm, 0, &v_start, &v_end));
+  PetscCall(DMGetCoordinateSection(ctx->mesh.dm, &section));
+  PetscCall(DMGetCoordinatesLocal(ctx->mesh.dm, &coordinates));
   PetscCall(VecGetArrayRead(coordinates, &x));
   for (PetscInt v = v_start; v < v_end; ++v) {
     PetscInt  value = 1, off;
@@ -225,7 +225,7 @@ static PetscErrorCode RollerMeshRadii(Roller ctx, const char *name, PetscReal *r
 static PetscErrorCode RollerMeshCheckAnnulus(Roller ctx, const char *what)
 {
   const char *names[2] = {"inner", "outer"}, *options[2] = {"-r_inner", "-r_outer"};
-  PetscReal   radius[2], r_min, r_max, *given[2] = {&ctx->r_inner, &ctx->r_outer};
+  PetscReal   radius[2], r_min, r_max, *given[2] = {&ctx->mesh.r_inner, &ctx->mesh.r_outer};
 
   PetscFunctionBeginUser;
   for (int i = 0; i < 2; ++i) {
@@ -234,16 +234,16 @@ static PetscErrorCode RollerMeshCheckAnnulus(Roller ctx, const char *what)
     PetscCall(RollerMeshRadii(ctx, names[i], &r_min, &r_max));
     radius[i] = 0.5 * (r_min + r_max);
     PetscCheck(r_max - r_min <= ROLLER_MESH_RTOL * radius[i], ctx->comm, PETSC_ERR_FILE_UNEXPECTED, "%s: the \"%s\" vertices are not on one circle about the origin: |x| ranges over [%.10g, %.10g], relative spread %g, allowed %g", what, names[i], (double)r_min, (double)r_max, (double)((r_max - r_min) / radius[i]), ROLLER_MESH_RTOL);
-    if (!ctx->mesh_file[0]) continue;
+    if (!ctx->mesh.file[0]) continue;
     PetscCall(PetscOptionsHasName(NULL, NULL, options[i], &set));
     PetscCheck(!set || PetscAbsReal(*given[i] - radius[i]) <= ROLLER_MESH_RTOL * radius[i], ctx->comm, PETSC_ERR_ARG_INCOMP, "%s %g disagrees with the radius %.10g of the \"%s\" circle of %s (allowed relative difference %g); drop the option or fix the mesh", options[i], (double)*given[i], (double)radius[i], names[i], what, ROLLER_MESH_RTOL);
   }
   PetscCheck(radius[0] < radius[1], ctx->comm, PETSC_ERR_FILE_UNEXPECTED, "%s: the \"inner\" radius %g must be smaller than the \"outer\" radius %g", what, (double)radius[0], (double)radius[1]);
   PetscCall(RollerMeshRadii(ctx, NULL, &r_min, &r_max));
   PetscCheck(r_min >= radius[0] * (1 - ROLLER_MESH_RTOL) && r_max <= radius[1] * (1 + ROLLER_MESH_RTOL), ctx->comm, PETSC_ERR_FILE_UNEXPECTED, "%s: vertices with |x| in [%g, %g] lie outside the annulus %g <= |x| <= %g", what, (double)r_min, (double)r_max, (double)radius[0], (double)radius[1]);
-  if (ctx->mesh_file[0]) {
-    ctx->r_inner = radius[0];
-    ctx->r_outer = radius[1];
+  if (ctx->mesh.file[0]) {
+    ctx->mesh.r_inner = radius[0];
+    ctx->mesh.r_outer = radius[1];
   }
   PetscFunctionReturn(0);
 }
@@ -260,18 +260,18 @@ PetscErrorCode RollerMeshCreate(Roller ctx)
   PetscCall(PetscOptionsBool("-mesh_gmsh_verbose", "Let gmsh print its progress (in-process mesh, no -dm_plex_filename)", NULL, verbose, &verbose, NULL));
   PetscOptionsEnd();
   PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
-  if (ctx->mesh_file[0]) {
-    PetscCall(PetscStrncpy(file, ctx->mesh_file, sizeof(file)));
-    PetscCall(PetscSNPrintf(what, sizeof(what), "-dm_plex_filename %s", ctx->mesh_file));
+  if (ctx->mesh.file[0]) {
+    PetscCall(PetscStrncpy(file, ctx->mesh.file, sizeof(file)));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "-dm_plex_filename %s", ctx->mesh.file));
   } else {
     PetscCall(RollerMeshGenerate(ctx, verbose, dir, file));
-    PetscCall(PetscSNPrintf(what, sizeof(what), "gmsh annulus at -mesh_h %g", (double)ctx->mesh_h));
+    PetscCall(PetscSNPrintf(what, sizeof(what), "gmsh annulus at -mesh_h %g", (double)ctx->mesh.h));
   }
   PetscCall(RollerMeshReadPhysicalNames(ctx, file, what, &groups));
   /* The gmsh reader puts every cell on rank 0; RollerMeshDistribute spreads them. */
-  PetscCall(DMPlexCreateGmshFromFile(ctx->comm, file, PETSC_TRUE, &ctx->dm));
+  PetscCall(DMPlexCreateGmshFromFile(ctx->comm, file, PETSC_TRUE, &ctx->mesh.dm));
   if (rank == 0 && dir[0]) PetscCall(PetscRMTree(dir));
-  PetscCall(PetscObjectSetName((PetscObject)ctx->dm, "annulus"));
+  PetscCall(PetscObjectSetName((PetscObject)ctx->mesh.dm, "annulus"));
   PetscCall(RollerMeshCheckCells(ctx, what));
   PetscCall(RollerMeshCheckGroups(ctx, what, &groups));
   PetscCall(RollerMeshLabelGroup(ctx, what, "inner", groups.tags[ROLLER_GROUP_INNER]));
@@ -302,7 +302,7 @@ PetscErrorCode RollerMeshOwnedMask(DM dm, PetscBool **owned)
    owner); -mesh_view_info prints them. */
 PetscErrorCode RollerMeshMeasure(Roller ctx)
 {
-  DM        dm = ctx->dm;
+  DM        dm = ctx->mesh.dm;
   DMLabel   labels[2];
   PetscBool view      = PETSC_FALSE, *owned;
   PetscInt  counts[4] = {0, 0, 0, 0}, counts_global[4]; /* vertices, cells, inner vertices, outer vertices */

@@ -13,10 +13,10 @@
    Every rank holds the same copy of the Gamma_C data (node list, positions, S, multipliers) and makes the
    same decisions on it, so the candidate set and the condensed problem do not depend on the partition.
    docs/contact.md describes the method, the options and the KKT residual. */
-#ifndef ROLLER_CONTACT_H
-#define ROLLER_CONTACT_H
+#ifndef ROLLER_CONTACT_IMPL_H
+#define ROLLER_CONTACT_IMPL_H
 
-#include <roller_impl.h>
+#include "contact/contact.h"
 
 typedef enum { CONTACT_CONDENSED, CONTACT_VI, CONTACT_TAO, CONTACT_PCG, CONTACT_NUM_SOLVERS } RollerContactSolverType;
 PETSC_INTERN const char *const RollerContactSolverTypes[];

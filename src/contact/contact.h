@@ -1,0 +1,16 @@
+/* The contact layer's face (docs/contact.md): the obstacle QP of a DMF step, only built when -obstacle is on.
+   Its files and private header: contact_impl.h. */
+#ifndef ROLLER_CONTACT_H
+#define ROLLER_CONTACT_H
+
+#include <roller_impl.h>
+#include "model/model.h"
+
+PETSC_INTERN PetscErrorCode RollerContactCreate(Roller, RollerContact *);
+PETSC_INTERN PetscErrorCode RollerContactHelp(Roller); /* -help without -obstacle: the options block only */
+PETSC_INTERN PetscErrorCode RollerContactSolve(Roller, RollerContact, PetscReal, Vec, Vec);
+PETSC_INTERN PetscErrorCode RollerContactInfo(Roller, RollerContact, Vec, PetscReal, RollerStepInfo *);
+PETSC_INTERN PetscErrorCode RollerContactPressure(Roller, RollerContact, Vec); /* into a P1 scalar Vec on the mesh */
+PETSC_INTERN PetscErrorCode RollerContactDestroy(RollerContact *);
+
+#endif
