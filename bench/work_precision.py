@@ -109,7 +109,7 @@ def configs(scene, name):
         elif name == "geometry":
             # P2 runs with straight edges on a mesh whose boundary polygons enclose the right area (vertices on
             # circles of radius r / sqrt(sin(t)/t), t = 2 pi / N): what the straight-sided boundary costs, before
-            # the curved boundary (src/geometry.c) fixed it (docs/performance.md).
+            # the curved boundary (src/mesh/geometry.c) fixed it (docs/performance.md).
             for h, dts in ((0.025, (0.003125, 0.0025, 0.00125)), (0.0125, (0.0025, 0.00125)), (0.05, (0.0025,))):
                 for dt in dts:
                     out.append(cfg(2, h, dt, "extrapolated", area_preserving(h) + ["-mesh_curved", "0"], label=f"P2 h={h:g} dt={dt:g} extrapolated, area-preserving boundary"))

@@ -27,7 +27,7 @@ With x = (U, V), P(U, V) = (V, -U) (= R(-pi/2)) and x_r = (r, 0) (the position, 
   rho omega^2 u term), and the modes carrying R and alpha (periods vs the paper's 4d/c).
 --scheme dmf: the same semi-discretization advanced by the paper's DMF exactly as docs/model.md section 2 writes it:
   rho M (x^k - 2x^{k-1} + x^{k-2})/dt^2 = -K (x^k + x^{k-2})/2 + rho M f^{k-1},  x^{-1} = x^0 = 0,
-  f^{k-1} with theta', theta'' at t_{k-1} (analytic, as src/forcing.c), rigid part loaded exactly, Coriolis
+  f^{k-1} with theta', theta'' at t_{k-1} (analytic, as src/model/forcing.c), rigid part loaded exactly, Coriolis
   velocity --coriolis backward (x^{k-1}-x^{k-2})/dt [paper], extrapolated (3x^{k-1}-4x^{k-2}+x^{k-3})/(2dt)
   or centered (x^k-x^{k-2})/(2dt) (implicit), as -coriolis_velocity of the 2D code. --start symmetric
   replaces the paper's x^{-1} = x^0 (a dt/2 time shift of the suddenly loaded response: first order) by

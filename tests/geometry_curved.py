@@ -1,4 +1,4 @@
-"""The curved (isoparametric P2) boundary, src/geometry.c. The rotating annulus without obstacle has an
+"""The curved (isoparametric P2) boundary, src/mesh/geometry.c. The rotating annulus without obstacle has an
 exact axisymmetric reference; run with the same DMF scheme and dt on its spectral radial
 semi-discretization (scripts/axisym_reference.py --scheme dmf, exact in space), it isolates the space
 error of the 2D run. With straight edges the P2 space error of R is second order (the inscribed polygon

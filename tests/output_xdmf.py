@@ -1,4 +1,4 @@
-"""Output (src/output.c, docs/output.md): the XDMF index is valid XML whose every HDF5 reference exists
+"""Output (src/io/output.c, docs/output.md): the XDMF index is valid XML whose every HDF5 reference exists
 with the stated shape and type, its times are the CSV's; the fields are right: displacement_lab is
 R(theta)(x + xi) - x recomputed from /geometry/vertices, displacement and the CSV theta, the boundary
 integrals of the written displacement give the CSV's R and alpha, |sigma| is the mean over the cells
