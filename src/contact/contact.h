@@ -13,4 +13,11 @@ PETSC_INTERN PetscErrorCode RollerContactInfo(Roller, RollerContact, Vec, PetscR
 PETSC_INTERN PetscErrorCode RollerContactPressure(Roller, RollerContact, Vec); /* into a P1 scalar Vec on the mesh */
 PETSC_INTERN PetscErrorCode RollerContactDestroy(RollerContact *);
 
+/* The registry of the per-step QP solvers (-contact_solver NAME, contact_registry.c): a solver is made by
+   its create function, which fills the ops and the data of the object it is given (like KSPRegister). */
+typedef struct _n_RollerContactSolver *RollerContactSolver;
+
+PETSC_INTERN PetscErrorCode RollerContactSolverRegister(const char[], PetscErrorCode (*)(RollerContactSolver));
+PETSC_INTERN PetscErrorCode RollerContactSolversRegisterAll(void);
+
 #endif

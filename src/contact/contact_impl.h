@@ -2,27 +2,27 @@
 
      min 1/2 xi^T A xi - b^T xi   s.t.  (x_n + xi_n) . n^k >= g^k  at every Lagrange node x_n of Gamma_C
 
-   contact.c            the Gamma_C nodes (gathered redundantly on every rank, in angle order), the candidate
-                        set of a step, the dispatch with the penetration check, KKT residual, info, -contact_check
-   contact_condensed.c  the default: the QP condensed onto the multipliers of the candidates with
-                        S = E^T A^{-1} E computed once; exact active-set solver (or TAO) for the small problem
-   contact_primal.c     the primal problem in rotated coordinates z = Q^T xi (Q: 2x2 blocks (t^k, n^k) at the
-                        candidates): SNES VI and TAO
-   contact_pcg.c        the paper's projected Polak-Ribiere nonlinear CG (its section 3.3), the baseline
+   The core (no file of it names a solver):
+   contact.c             create, options, destroy; the dispatch of a step and its re-solve loop
+   contact_nodes.c       the Gamma_C nodes (gathered redundantly on every rank, in angle order), gaps, force
+   contact_candidates.c  the step's basis and bounds, the candidate set, the penetrating nodes it gains
+   contact_report.c      KKT residual, -contact_check, -contact_monitor, the CSV's contact columns
+   contact_pressure.c    the contact pressure output field
+   The registry and the solvers (each file one solver, using the core):
+   contact_registry.c    RollerContactSolverRegister, RegisterAll, the solver object's create/setup/destroy
+   contact_condensed.c   the default: the QP condensed onto the multipliers of the candidates with
+                         S = E^T A^{-1} E computed once; its small LCP in contact_lcp.c (active set or TAO)
+   contact_primal.c      not a solver: the primal problem in rotated coordinates z = Q^T xi (Q: 2x2 blocks
+                         (t^k, n^k) at the candidates) shared by
+   contact_vi.c, contact_tao.c, contact_pcg.c   SNES VI, TAO, the paper's projected CG (its section 3.3)
 
    Every rank holds the same copy of the Gamma_C data (node list, positions, S, multipliers) and makes the
    same decisions on it, so the candidate set and the condensed problem do not depend on the partition.
-   docs/contact.md describes the method, the options and the KKT residual. */
+   docs/contact.md describes the method, the options, the KKT residual and how to add a solver. */
 #ifndef ROLLER_CONTACT_IMPL_H
 #define ROLLER_CONTACT_IMPL_H
 
 #include "contact/contact.h"
-
-typedef enum { CONTACT_CONDENSED, CONTACT_VI, CONTACT_TAO, CONTACT_PCG, CONTACT_NUM_SOLVERS } RollerContactSolverType;
-PETSC_INTERN const char *const RollerContactSolverTypes[];
-
-typedef enum { CONTACT_QP_ACTIVESET, CONTACT_QP_TAO } RollerContactQPType;
-PETSC_INTERN const char *const RollerContactQPTypes[];
 
 /* What one solver returns besides the displacement: the multiplier of every Gamma_C node (0 off the
    candidate set) and its iteration count. */
@@ -31,35 +31,44 @@ typedef struct {
   PetscInt   its;
 } RollerContactResult;
 
-typedef struct _n_RollerContactCondensed *RollerContactCondensed;
-
-/* The primal problem in rotated coordinates (contact_primal.c, used by vi, tao and pcg): xi = Q z, with
-   A_hat = Q^T A Q, b_hat = Q^T b, and the bound z_q >= lower at the normal component of every candidate. */
+/* A solver's operations. setfromoptions (optional) reads its own options inside the contact options block;
+   setup (optional) is called once before its first solve, when the Gamma_C nodes are known; solve finds the
+   minimizer xi with the bounds of the current candidate set (c->step) and its multipliers; destroy frees
+   what the data holds (the data itself is freed by RollerContactSolverDestroy). */
 typedef struct {
-  Mat       Q, Ahat;
-  Vec       z, bhat, lower, upper, r;
-  PetscReal fscale; /* force scale of the tolerances: max(||b||_2, ||A||_inf ||z_0||_2) */
-  PetscReal Anorm;  /* ||A||_inf */
-  Vec      *work;   /* 4 work vectors (projected CG, J0) */
-  SNES      snes;
-  Tao       tao;
-  KSP       ksp; /* the step factorization: A_hat^{-1} = Q^T A^{-1} Q, TAO's quasi-Newton J0 */
-} RollerContactPrimal;
+  PetscErrorCode (*setfromoptions)(RollerContactSolver, PetscOptionItems *);
+  PetscErrorCode (*setup)(RollerContactSolver, Roller, RollerContact);
+  PetscErrorCode (*solve)(RollerContactSolver, Roller, RollerContact, Vec, Vec, RollerContactResult *);
+  PetscErrorCode (*destroy)(RollerContactSolver);
+} RollerContactSolverOps;
 
-struct _n_RollerContact {
-  MPI_Comm comm;
+struct _n_RollerContactSolver {
+  char                  *name; /* its name in the registry */
+  RollerContactSolverOps ops[1];
+  void                  *data; /* the solver's own (freed by RollerContactSolverDestroy) */
+  PetscBool              setupcalled;
+};
 
-  /* options */
-  RollerContactSolverType solver;
-  RollerContactQPType     qp;
-  PetscBool               check, monitor, tao_j0;
-  PetscReal               margin;   /* extra reach of the candidate set (length) */
-  PetscReal               rtol;     /* relative tolerance of vi, tao and the condensed TAO */
-  PetscReal               pcg_rtol; /* stopping tolerance of the projected CG, relative to the force scale */
-  PetscInt                pcg_max_it, max_resolves;
+PETSC_INTERN PetscFunctionList RollerContactSolverList;
 
-  /* Gamma_C nodes, the same on every rank, sorted by angle: node i has its x dof at global index gidx[i]
-     (y at gidx[i] + 1) and position xc[2i], xc[2i+1]; the redundant vectors hold 2 nc entries in this order */
+/* The parts of the contact context, by lifetime and owner. */
+
+/* Options (contact.c), read once */
+typedef struct {
+  char              solver[64]; /* -contact_solver: a name in the registry */
+  PetscBool         check;
+  PetscReal         margin; /* extra reach of the candidate set (length) */
+  PetscReal         rtol;   /* relative tolerance of vi, tao and the condensed TAO */
+  PetscInt          max_resolves;
+  PetscViewer       monitor; /* -contact_monitor, NULL when off */
+  PetscViewerFormat monitor_format;
+  PetscBool         monitor_header; /* the CSV header line is written */
+} RollerContactOptions;
+
+/* Gamma_C nodes (contact_nodes.c), fixed at creation, the same on every rank, sorted by angle: node i has its
+   x dof at global index gidx[i] (y at gidx[i] + 1) and position xc[2i], xc[2i+1]; the redundant vectors hold
+   2 nc entries in this order */
+typedef struct {
   PetscInt   nc;
   PetscInt  *gidx;
   PetscBool *is_vertex; /* a mesh vertex (P2: the others are edge midpoints) */
@@ -67,11 +76,14 @@ struct _n_RollerContact {
   PetscInt   nown;      /* nodes owned by this rank: */
   PetscInt  *own_node;  /*   their indices in the sorted list */
   PetscInt  *own_off;   /*   the local offset of their x dof in a global Vec */
-  PetscInt  *own_point; /*  their mesh point (vertex, or edge for a P2 midpoint) */
+  PetscInt  *own_point; /*   their mesh point (vertex, or edge for a P2 midpoint) */
   VecScatter scatter;   /* global Vec -> redundant Vec of the Gamma_C dofs */
   Vec        red, red1, red2;
+} RollerContactNodes;
 
-  /* the step: time, rotation, obstacle height, contact basis (t^k, n^k), candidate set, bounds */
+/* The step (contact_candidates.c): time, rotation, obstacle height, contact basis (t^k, n^k), candidate set,
+   bounds, the gaps of the last solve and the re-solves it took */
+typedef struct {
   PetscReal  t, theta, g, normal[2], tangent[2];
   PetscInt   ncand;
   PetscInt  *cand;        /* candidate node indices, ascending */
@@ -80,42 +92,113 @@ struct _n_RollerContact {
   PetscReal *gap;         /* nc gaps of a solution (scratch) */
   PetscBool *on_obstacle; /* nc: gap^{k-1}_n <= tol, the nodes on the obstacle at the previous level, from
                              xi^{k-1} (checkpointed state, so a restart takes the same decisions) */
+  PetscInt   resolves;
+} RollerContactStep;
 
-  /* the accepted solution of the step: multipliers, iterations, re-solves; the right-hand side it solved */
+/* The accepted solution of the step: multipliers and iterations, the right-hand side it solved; work vectors
+   of its KKT residual */
+typedef struct {
   RollerContactResult result;
   PetscBool           solved;
-  PetscInt            resolves;
   Vec                 b, force, work;
+} RollerContactAccepted;
 
-  /* -contact_check: a second solution and its multipliers; the largest differences and residuals seen */
-  Vec                 xi_check;
-  RollerContactResult check_result;
-  PetscReal           check_max_diff[CONTACT_NUM_SOLVERS], check_max_kkt[CONTACT_NUM_SOLVERS];
-  PetscInt            check_steps;
+/* -contact_check: a second solution and its multipliers; per solver, the largest differences and residuals */
+typedef struct {
+  Vec                 xi;
+  RollerContactResult result;
+  PetscReal          *max_diff, *max_kkt;
+  PetscInt            steps;
+} RollerContactCheck;
 
-  RollerContactCondensed condensed;
-  RollerContactPrimal    primal;
-  PetscBool              primal_ready;
+struct _n_RollerContact {
+  MPI_Comm              comm;
+  RollerContactOptions  opt;
+  RollerContactNodes    nodes;
+  RollerContactStep     step;
+  RollerContactAccepted acc;
+  RollerContactCheck    check;
+  PetscInt              nsolvers;
+  RollerContactSolver  *solvers; /* every registered solver, in registration order (set up when first used) */
+  RollerContactSolver   solver;  /* the one of -contact_solver */
 };
 
 /* contact.c */
+PETSC_INTERN PetscErrorCode RollerContactSolveWith(Roller, RollerContact, RollerContactSolver, Vec, Vec, RollerContactResult *);
+
+/* contact_registry.c */
+PETSC_INTERN PetscErrorCode RollerContactSolverCreate(const char[], RollerContactSolver *);
+PETSC_INTERN PetscErrorCode RollerContactSolverSetUp(RollerContactSolver, Roller, RollerContact);
+PETSC_INTERN PetscErrorCode RollerContactSolverDestroy(RollerContactSolver *);
+
+/* contact_nodes.c */
+PETSC_INTERN PetscErrorCode RollerContactNodesCreate(Roller, RollerContact);
+PETSC_INTERN PetscErrorCode RollerContactNodesDestroy(RollerContact);
 PETSC_INTERN PetscErrorCode RollerContactGather(RollerContact, Vec, Vec);
+PETSC_INTERN PetscErrorCode RollerContactGaps(RollerContact, Vec, PetscReal[], PetscReal *);
 PETSC_INTERN PetscErrorCode RollerContactForce(RollerContact, const PetscReal[], Vec);
 PETSC_INTERN PetscReal      RollerContactGapTolerance(Roller);
 
-/* contact_condensed.c */
-PETSC_INTERN PetscErrorCode RollerContactCondensedCreate(Roller, RollerContact);
-PETSC_INTERN PetscErrorCode RollerContactCondensedSolve(Roller, RollerContact, Vec, Vec, RollerContactResult *);
-PETSC_INTERN PetscErrorCode RollerContactCondensedDestroy(RollerContact);
+/* contact_candidates.c */
+PETSC_INTERN PetscErrorCode RollerContactSetTime(Roller, RollerContact, PetscReal);
+PETSC_INTERN PetscErrorCode RollerContactSetUpStep(Roller, RollerContact, PetscReal);
+PETSC_INTERN PetscErrorCode RollerContactAddPenetrating(Roller, RollerContact, PetscInt *);
 
-/* contact_primal.c */
-PETSC_INTERN PetscErrorCode RollerContactPrimalSetUpStep(Roller, RollerContact, Vec);
-PETSC_INTERN PetscErrorCode RollerContactPrimalFinish(Roller, RollerContact, Vec, RollerContactResult *);
-PETSC_INTERN PetscErrorCode RollerContactVISolve(Roller, RollerContact, Vec, Vec, RollerContactResult *);
-PETSC_INTERN PetscErrorCode RollerContactTaoSolve(Roller, RollerContact, Vec, Vec, RollerContactResult *);
-PETSC_INTERN PetscErrorCode RollerContactPrimalDestroy(RollerContact);
+/* contact_report.c */
+PETSC_INTERN PetscErrorCode RollerContactKKT(Roller, RollerContact, Vec, const PetscReal[], PetscReal *, PetscReal *);
+PETSC_INTERN PetscErrorCode RollerContactCheckStep(Roller, RollerContact, Vec, Vec);
+PETSC_INTERN PetscErrorCode RollerContactCheckSummary(RollerContact);
 
-/* contact_pcg.c */
-PETSC_INTERN PetscErrorCode RollerContactPCGSolve(Roller, RollerContact, Vec, Vec, RollerContactResult *);
+/* contact_primal.c: the rotated primal problem of vi, tao and pcg, each of which holds one in its data:
+   xi = Q z, A_hat = Q^T A Q, b_hat = Q^T b, and the bound z_q >= lower at the normal component of every
+   candidate. */
+typedef struct {
+  Mat       Q, Ahat;
+  Vec       z, bhat, lower, upper, r;
+  PetscReal fscale; /* force scale of the tolerances: max(||b||_2, ||A||_inf ||z_0||_2) */
+  PetscReal Anorm;  /* ||A||_inf */
+  Vec      *work;   /* 4 work vectors (projected CG, J0) */
+  KSP       ksp;    /* the step factorization: A_hat^{-1} = Q^T A^{-1} Q, TAO's quasi-Newton J0 */
+} RollerContactPrimal;
+
+PETSC_INTERN PetscErrorCode RollerContactPrimalSetUp(Roller, RollerContact, RollerContactPrimal *);
+PETSC_INTERN PetscErrorCode RollerContactPrimalSetUpStep(Roller, RollerContact, RollerContactPrimal *, Vec);
+PETSC_INTERN PetscErrorCode RollerContactPrimalFinish(Roller, RollerContact, RollerContactPrimal *, Vec, RollerContactResult *);
+PETSC_INTERN PetscErrorCode RollerContactPrimalDestroy(RollerContactPrimal *);
+
+/* contact_tao.c: the QP  f(x) = 1/2 x^T H x + sign c^T x  of a TAO solve (the tao solver's, and the condensed
+   TAO's in contact_lcp.c): its objective-gradient callback and its Hessian callback (H is TAO's matrix). */
+typedef struct {
+  Mat       H;
+  Vec       c;
+  PetscReal sign;
+} RollerContactTaoQP;
+
+PETSC_INTERN PetscErrorCode RollerContactTaoQPObjective(Tao, Vec, PetscReal *, Vec, void *);
+PETSC_INTERN PetscErrorCode RollerContactTaoQPHessian(Tao, Vec, Mat, Mat, void *);
+
+/* contact_lcp.c: the small dense LCP of the condensed solver, its arrays sized for nc */
+typedef struct {
+  PetscReal *G, *Gff, *d, *lam, *mu, *mu2, *w;
+  PetscInt  *F;
+  PetscBool *act;
+  /* -contact_condensed_qp tao: a sequential TAO on the same problem, rebuilt when its size changes */
+  Tao                tao;
+  Mat                tG;
+  Vec                tx, tlb, tub, td;
+  PetscInt           tao_m;
+  RollerContactTaoQP tqp; /* 1/2 lam^T G lam + d^T lam on tG, td */
+} RollerContactLCP;
+
+PETSC_INTERN PetscErrorCode RollerContactLCPCreate(PetscInt, RollerContactLCP *);
+PETSC_INTERN PetscErrorCode RollerContactLCPActiveSet(RollerContactLCP *, PetscInt, PetscReal, PetscBool[], PetscReal[], PetscInt *);
+PETSC_INTERN PetscErrorCode RollerContactLCPTao(RollerContactLCP *, PetscInt, PetscReal, PetscReal, PetscReal[], PetscInt *);
+PETSC_INTERN PetscErrorCode RollerContactLCPDestroy(RollerContactLCP *);
+
+/* The solvers' create functions, for RollerContactSolversRegisterAll */
+PETSC_INTERN PetscErrorCode RollerContactSolverCreate_Condensed(RollerContactSolver);
+PETSC_INTERN PetscErrorCode RollerContactSolverCreate_VI(RollerContactSolver);
+PETSC_INTERN PetscErrorCode RollerContactSolverCreate_Tao(RollerContactSolver);
+PETSC_INTERN PetscErrorCode RollerContactSolverCreate_PCG(RollerContactSolver);
 
 #endif

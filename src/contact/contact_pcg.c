@@ -16,6 +16,31 @@
    unknowns. eps = -contact_pcg_rtol times the force scale max(||b||_2, ||A||_inf ||z_0||_2). */
 #include "contact_impl.h"
 
+typedef struct {
+  RollerContactPrimal pr;
+  PetscReal           rtol; /* -contact_pcg_rtol, relative to the force scale */
+  PetscInt            max_it;
+} PCG;
+
+static PetscErrorCode PCGSetFromOptions(RollerContactSolver s, PetscOptionItems *PetscOptionsObject)
+{
+  PCG *pcg = (PCG *)s->data;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsReal("-contact_pcg_rtol", "Projected CG stops when ||T(-grad J)|| <= rtol max(||b||, ||A|| ||xi_0||)", NULL, pcg->rtol, &pcg->rtol, NULL));
+  PetscCall(PetscOptionsInt("-contact_pcg_max_it", "Iteration cap of the projected CG", NULL, pcg->max_it, &pcg->max_it, NULL));
+  PetscCheck(pcg->rtol > 0 && pcg->rtol < 1, PetscOptionsObject->comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_pcg_rtol %g must lie in (0, 1)", (double)pcg->rtol);
+  PetscCheck(pcg->max_it > 0, PetscOptionsObject->comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_pcg_max_it %" PetscInt_FMT " must be > 0", pcg->max_it);
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCGSetUp(RollerContactSolver s, Roller ctx, RollerContact c)
+{
+  PetscFunctionBeginUser;
+  PetscCall(RollerContactPrimalSetUp(ctx, c, &((PCG *)s->data)->pr));
+  PetscFunctionReturn(0);
+}
+
 /* p = T_z(v): zero the components that point below an active bound. */
 static PetscErrorCode Restrict(Vec z, Vec lower, Vec v, Vec p)
 {
@@ -73,25 +98,26 @@ static PetscErrorCode NegativeGradient(RollerContactPrimal *pr, Vec g)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode RollerContactPCGSolve(Roller ctx, RollerContact c, Vec b, Vec xi, RollerContactResult *res)
+static PetscErrorCode PCGSolve(RollerContactSolver s, Roller ctx, RollerContact c, Vec b, Vec xi, RollerContactResult *res)
 {
-  RollerContactPrimal *pr = &c->primal;
+  PCG                 *pcg = (PCG *)s->data;
+  RollerContactPrimal *pr  = &pcg->pr;
   Vec                  g, gnew, p, Ap;
   PetscReal            eps, e, gg;
   PetscInt             m;
 
   PetscFunctionBeginUser;
-  PetscCall(RollerContactPrimalSetUpStep(ctx, c, b));
+  PetscCall(RollerContactPrimalSetUpStep(ctx, c, pr, b));
   g    = pr->work[0];
   gnew = pr->work[1];
   p    = pr->work[2];
   Ap   = pr->work[3];
-  eps  = c->pcg_rtol * pr->fscale;
+  eps  = pcg->rtol * pr->fscale;
   PetscCall(NegativeGradient(pr, g));
   PetscCall(Restrict(pr->z, pr->lower, g, p));
   PetscCall(VecNorm(p, NORM_2, &e));
   PetscCall(VecDot(g, g, &gg));
-  for (m = 1; e > eps && m <= c->pcg_max_it; ++m) {
+  for (m = 1; e > eps && m <= pcg->max_it; ++m) {
     PetscScalar gp, pAp, gnew_g, gnew_gnew;
     PetscReal   alpha, beta;
     PetscBool   clipped;
@@ -127,8 +153,30 @@ PetscErrorCode RollerContactPCGSolve(Roller ctx, RollerContact c, Vec b, Vec xi,
       PetscCall(VecNorm(gnew, NORM_2, &e));
     }
   }
-  PetscCheck(e <= eps, ctx->comm, PETSC_ERR_NOT_CONVERGED, "Contact QP at t = %g: the projected CG did not reach ||T(-grad)|| <= %g in %" PetscInt_FMT " iterations (-contact_pcg_max_it) : %g", (double)c->t, (double)eps, c->pcg_max_it, (double)e);
+  PetscCheck(e <= eps, ctx->comm, PETSC_ERR_NOT_CONVERGED, "Contact QP at t = %g: the projected CG did not reach ||T(-grad)|| <= %g in %" PetscInt_FMT " iterations (-contact_pcg_max_it) : %g", (double)c->step.t, (double)eps, pcg->max_it, (double)e);
   res->its = m - 1;
-  PetscCall(RollerContactPrimalFinish(ctx, c, xi, res));
+  PetscCall(RollerContactPrimalFinish(ctx, c, pr, xi, res));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode PCGDestroy(RollerContactSolver s)
+{
+  PetscFunctionBeginUser;
+  PetscCall(RollerContactPrimalDestroy(&((PCG *)s->data)->pr));
+  PetscFunctionReturn(0);
+}
+
+static const RollerContactSolverOps ops = {.setfromoptions = PCGSetFromOptions, .setup = PCGSetUp, .solve = PCGSolve, .destroy = PCGDestroy};
+
+PetscErrorCode RollerContactSolverCreate_PCG(RollerContactSolver s)
+{
+  PCG *pcg;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(&pcg));
+  pcg->rtol   = 1e-12;
+  pcg->max_it = 100000;
+  s->data     = pcg;
+  *s->ops     = ops;
   PetscFunctionReturn(0);
 }

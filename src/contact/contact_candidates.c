@@ -1,0 +1,88 @@
+/* The step's data: the contact basis and bounds at t_k, the candidate set (the nodes that carry a bound) and
+   the nodes it gains when a solution penetrates outside it (docs/contact.md, "the candidate set"). */
+#include "contact_impl.h"
+
+/* theta^k, n^k = (sin theta, cos theta), t^k = (cos theta, -sin theta), g^k and the bounds
+   q_n >= g^k - x_n . n^k of every node (docs/model.md sections 1-2). */
+PetscErrorCode RollerContactSetTime(Roller ctx, RollerContact c, PetscReal t)
+{
+  RollerContactStep *st = &c->step;
+
+  PetscFunctionBeginUser;
+  st->t = t;
+  RollerTheta(ctx, t, &st->theta, NULL, NULL);
+  st->normal[0]  = PetscSinReal(st->theta);
+  st->normal[1]  = PetscCosReal(st->theta);
+  st->tangent[0] = PetscCosReal(st->theta);
+  st->tangent[1] = -PetscSinReal(st->theta);
+  st->g          = RollerObstacleHeight(ctx, t);
+  for (PetscInt i = 0; i < c->nodes.nc; ++i) st->lower[i] = st->g - (c->nodes.xc[2 * i] * st->normal[0] + c->nodes.xc[2 * i + 1] * st->normal[1]);
+  PetscFunctionReturn(0);
+}
+
+static void CandidateList(RollerContact c)
+{
+  c->step.ncand = 0;
+  for (PetscInt i = 0; i < c->nodes.nc; ++i)
+    if (c->step.is_cand[i]) c->step.cand[c->step.ncand++] = i;
+}
+
+/* The step at t = t_k from the state (xi^{k-1}, xi^{k-2}): basis, bounds, and the nodes the obstacle can reach
+   in this step: the gap of the extrapolated position x_n + 2 xi^{k-1}_n - xi^{k-2}_n against the obstacle at
+   t_k (its motion and the rotation of n^k are exact in this prediction) is below the reach: -contact_margin,
+   plus the obstacle's advance in one step, plus twice the largest displacement increment of a Gamma_C node
+   in the last step (a bound on the change of velocity a contact shock can bring). A node that still
+   penetrates is added after the solve (RollerContactAddPenetrating).
+   Also the nodes on the obstacle at the previous level t_{k-1} (gap^{k-1} <= tol with n^{k-1}, g^{k-1}): the
+   initial active set of the condensed solver. It is derived from xi^{k-1}, not remembered from the last
+   solve, so that the step is a function of the checkpointed state only and a restart repeats it exactly. */
+PetscErrorCode RollerContactSetUpStep(Roller ctx, RollerContact c, PetscReal t)
+{
+  RollerContactStep *st = &c->step;
+  const PetscScalar *u1, *u2;
+  const PetscReal    tol  = RollerContactGapTolerance(ctx);
+  const PetscReal   *xc   = c->nodes.xc;
+  PetscReal          dmax = 0.0, reach, theta1, n1[2], g1;
+
+  PetscFunctionBeginUser;
+  PetscCall(RollerContactSetTime(ctx, c, t));
+  st->resolves = 0;
+  PetscCall(RollerContactGather(c, ctx->state.cur, c->nodes.red1));
+  PetscCall(RollerContactGather(c, ctx->state.prev, c->nodes.red2));
+  PetscCall(VecGetArrayRead(c->nodes.red1, &u1));
+  PetscCall(VecGetArrayRead(c->nodes.red2, &u2));
+  for (PetscInt i = 0; i < c->nodes.nc; ++i) dmax = PetscMax(dmax, PetscSqrtReal(PetscSqr(PetscRealPart(u1[2 * i] - u2[2 * i])) + PetscSqr(PetscRealPart(u1[2 * i + 1] - u2[2 * i + 1]))));
+  reach = c->opt.margin + PetscAbsReal(st->g - RollerObstacleHeight(ctx, st->t - ctx->ts.dt)) + 2.0 * dmax;
+  RollerTheta(ctx, ctx->state.time, &theta1, NULL, NULL);
+  n1[0] = PetscSinReal(theta1);
+  n1[1] = PetscCosReal(theta1);
+  g1    = RollerObstacleHeight(ctx, ctx->state.time);
+  for (PetscInt i = 0; i < c->nodes.nc; ++i) {
+    const PetscReal p0 = PetscRealPart(2.0 * u1[2 * i] - u2[2 * i]), p1 = PetscRealPart(2.0 * u1[2 * i + 1] - u2[2 * i + 1]);
+    const PetscReal gap1 = (xc[2 * i] + PetscRealPart(u1[2 * i])) * n1[0] + (xc[2 * i + 1] + PetscRealPart(u1[2 * i + 1])) * n1[1] - g1;
+
+    st->is_cand[i]     = (p0 * st->normal[0] + p1 * st->normal[1] - st->lower[i] <= reach) ? PETSC_TRUE : PETSC_FALSE;
+    st->on_obstacle[i] = gap1 <= tol ? PETSC_TRUE : PETSC_FALSE;
+  }
+  PetscCall(VecRestoreArrayRead(c->nodes.red1, &u1));
+  PetscCall(VecRestoreArrayRead(c->nodes.red2, &u2));
+  CandidateList(c);
+  PetscFunctionReturn(0);
+}
+
+/* After a solve, with c->step.gap holding the gaps of ALL Gamma_C nodes: every non-candidate that penetrates
+   (gap < -tol) joins the candidate set; added = how many did. */
+PetscErrorCode RollerContactAddPenetrating(Roller ctx, RollerContact c, PetscInt *added)
+{
+  const PetscReal tol = RollerContactGapTolerance(ctx);
+
+  PetscFunctionBeginUser;
+  *added = 0;
+  for (PetscInt i = 0; i < c->nodes.nc; ++i)
+    if (!c->step.is_cand[i] && c->step.gap[i] < -tol) {
+      c->step.is_cand[i] = PETSC_TRUE;
+      (*added)++;
+    }
+  if (*added) CandidateList(c);
+  PetscFunctionReturn(0);
+}
