@@ -77,7 +77,7 @@ typedef struct {
   PetscReal speed, depth;
 } RollerObstacle;
 
-/* The discretization choices (model/discretization.c) */
+/* The discretization choices (model/fe.c) */
 typedef struct {
   PetscInt               degree;      /* Lagrange degree, 1 (the paper) or 2 */
   PetscBool              clamp_outer; /* xi = 0 on Gamma_C too (Theorem 1 setting) */
@@ -129,6 +129,7 @@ typedef struct {
   RollerInitialCondition type;
   PetscReal              amplitude;
   RollerMMSType          mms;
+  DM                     dm; /* the manufactured body force's own DM and DS (verify/mms.c) */
 } RollerInitial;
 
 struct _n_Roller {

@@ -1,18 +1,8 @@
 /* The command-line contract of docs/model.md section 6: every option read in one place, validated, listed by -help. */
 #include "integrate/integrate.h"
 
-const char *const RollerInitialConditions[]  = {"rest", "bump", "mms", "RollerInitialCondition", "ROLLER_IC_", NULL};
-const char *const RollerMMSTypes[]           = {"none", "linear", "sine", "RollerMMSType", "ROLLER_MMS_", NULL};
-const char *const RollerCoriolisVelocities[] = {"backward", "extrapolated", "centered", "RollerCoriolisVelocity", "ROLLER_CORIOLIS_", NULL};
-
-/* Plane-strain Lame constants (docs/model.md section 1). */
-PetscErrorCode RollerLameFromYoung(PetscReal young, PetscReal poisson, PetscReal *lambda, PetscReal *mu)
-{
-  PetscFunctionBeginUser;
-  *lambda = young * poisson / ((1.0 + poisson) * (1.0 - 2.0 * poisson));
-  *mu     = young / (2.0 * (1.0 + poisson));
-  PetscFunctionReturn(0);
-}
+const char *const RollerInitialConditions[] = {"rest", "bump", "mms", "RollerInitialCondition", "ROLLER_IC_", NULL};
+const char *const RollerMMSTypes[]          = {"none", "linear", "sine", "RollerMMSType", "ROLLER_MMS_", NULL};
 
 PetscErrorCode RollerCreate(MPI_Comm comm, Roller *roller)
 {
@@ -59,28 +49,14 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsBool("-partition_view", "Print the partition sizes and edge cut", NULL, ctx->mesh.partition_view, &ctx->mesh.partition_view, NULL));
   PetscOptionsEnd();
 
-  PetscOptionsBegin(ctx->comm, NULL, "Roller: discretization and material", NULL);
-  PetscCall(PetscOptionsInt("-degree", "Lagrange degree of the displacement (1 = the paper, 2)", NULL, ctx->disc.degree, &ctx->disc.degree, NULL));
-  ctx->mesh.curved = (PetscBool)(ctx->disc.degree == 2);
-  PetscCall(PetscOptionsBool("-mesh_curved", "Curved (isoparametric P2) boundary: mid-edge nodes of Gamma_D, Gamma_C on the circles (default: on with -degree 2)", NULL, ctx->mesh.curved, &ctx->mesh.curved, NULL));
-  PetscCall(PetscOptionsEnum("-coriolis_velocity", "Coriolis velocity: backward (the paper, explicit, 1st order), extrapolated (explicit, 2nd order), centered (implicit, 2nd order, stable)", "RollerCoriolisVelocity", RollerCoriolisVelocities,
-                             (PetscEnum)ctx->disc.coriolis, (PetscEnum *)&ctx->disc.coriolis, NULL));
-  PetscCall(PetscOptionsBool("-clamp_outer", "Also clamp Gamma_C (xi = 0 on the whole boundary, Theorem 1)", NULL, ctx->disc.clamp_outer, &ctx->disc.clamp_outer, NULL));
-  PetscCall(PetscOptionsReal("-young", "Young's modulus E", NULL, ctx->material.young, &ctx->material.young, NULL));
-  PetscCall(PetscOptionsReal("-poisson", "Poisson's ratio nu", NULL, ctx->material.poisson, &ctx->material.poisson, NULL));
-  PetscCall(PetscOptionsReal("-density", "Density rho", NULL, ctx->material.density, &ctx->material.density, NULL));
-  PetscOptionsEnd();
+  PetscCall(RollerDiscretizationSetFromOptions(ctx));
+  PetscCall(RollerMaterialSetFromOptions(ctx));
+  PetscCall(RollerRotationSetFromOptions(ctx));
 
-  PetscOptionsBegin(ctx->comm, NULL, "Roller: rotation theta(t) = omega t + a cos(b t), obstacle g(t) = min(speed t, depth) - r_outer", NULL);
-  PetscCall(PetscOptionsReal("-omega", "Angular velocity omega", NULL, ctx->rotation.omega, &ctx->rotation.omega, NULL));
-  PetscCall(PetscOptionsReal("-theta_a", "Amplitude a of the rotation perturbation", NULL, ctx->rotation.a, &ctx->rotation.a, NULL));
-  PetscCall(PetscOptionsReal("-theta_b", "Angular frequency b of the rotation perturbation", NULL, ctx->rotation.b, &ctx->rotation.b, NULL));
+  PetscOptionsBegin(ctx->comm, NULL, "Roller: obstacle g(t) = min(speed t, depth) - r_outer", NULL);
   PetscCall(PetscOptionsBool("-obstacle", "Enable the rigid flat obstacle", NULL, ctx->obstacle.on, &ctx->obstacle.on, NULL));
   PetscCall(PetscOptionsReal("-obstacle_speed", "Obstacle speed v", NULL, ctx->obstacle.speed, &ctx->obstacle.speed, NULL));
   PetscCall(PetscOptionsReal("-obstacle_depth", "Final indentation depth", NULL, ctx->obstacle.depth, &ctx->obstacle.depth, NULL));
-  PetscCall(PetscOptionsReal("-damping", "Damping eta of the DMF functional", NULL, ctx->disc.damping, &ctx->disc.damping, NULL));
-  PetscCall(PetscOptionsBool("-static", "Solve the static contact (Signorini) problem K xi = E N lambda at the obstacle of t = -ts_max_time in one step, the state a damped run with -omega 0 comes to rest in (docs/validation.md section 5)", NULL,
-                             ctx->disc.static_solve, &ctx->disc.static_solve, NULL));
   PetscOptionsEnd();
 
   PetscOptionsBegin(ctx->comm, NULL, "Roller: time stepping", NULL);
@@ -110,20 +86,13 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCheck(ctx->mesh.r_inner > 0 && ctx->mesh.r_inner < ctx->mesh.r_outer, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-r_inner %g and -r_outer %g must satisfy 0 < r_inner < r_outer", (double)ctx->mesh.r_inner, (double)ctx->mesh.r_outer);
   PetscCheck(ctx->mesh.file[0] || !ctx->mesh.h_set || ctx->mesh.h < ctx->mesh.r_outer - ctx->mesh.r_inner, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_h %g must be smaller than the annulus width r_outer - r_inner = %g", (double)ctx->mesh.h,
              (double)(ctx->mesh.r_outer - ctx->mesh.r_inner));
-  PetscCheck(ctx->disc.degree == 1 || ctx->disc.degree == 2, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-degree %" PetscInt_FMT " must be 1 or 2", ctx->disc.degree);
-  PetscCheck(!ctx->mesh.curved || ctx->disc.degree == 2, ctx->comm, PETSC_ERR_ARG_INCOMP, "-mesh_curved needs -degree 2 (a P1 field cannot see a curved edge), got -degree %" PetscInt_FMT, ctx->disc.degree);
-  PetscCheck(ctx->material.young > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-young %g must be > 0", (double)ctx->material.young);
-  PetscCheck(ctx->material.poisson > -1 && ctx->material.poisson < 0.5, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-poisson %g must lie in (-1, 0.5)", (double)ctx->material.poisson);
-  PetscCheck(ctx->material.density > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-density %g must be > 0", (double)ctx->material.density);
   PetscCheck(ctx->ts.dt >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_dt %g must be > 0 (or 0: chosen from -ts_phase_error)", (double)ctx->ts.dt);
   ctx->ts.dt_set = (PetscBool)(ctx->ts.dt > 0);
   PetscCheck(ctx->ts.max_time >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_max_time %g must be >= 0", (double)ctx->ts.max_time);
   PetscCheck(ctx->ts.max_steps >= -1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_max_steps %" PetscInt_FMT " must be >= 0 (or -1 for no cap)", ctx->ts.max_steps);
-  PetscCheck(ctx->disc.damping >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-damping %g must be >= 0", (double)ctx->disc.damping);
   PetscCheck(ctx->obstacle.speed > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-obstacle_speed %g must be > 0", (double)ctx->obstacle.speed);
   PetscCheck(ctx->obstacle.depth >= 0 && ctx->obstacle.depth < ctx->mesh.r_outer - ctx->mesh.r_inner, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-obstacle_depth %g must lie in [0, r_outer - r_inner = %g)", (double)ctx->obstacle.depth,
              (double)(ctx->mesh.r_outer - ctx->mesh.r_inner));
-  PetscCheck(ctx->rotation.b >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-theta_b %g must be >= 0", (double)ctx->rotation.b);
   PetscCheck(ctx->init.amplitude >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ic_amplitude %g must be >= 0", (double)ctx->init.amplitude);
   PetscCheck(ctx->init.type != ROLLER_IC_BUMP || ctx->disc.clamp_outer, ctx->comm, PETSC_ERR_ARG_INCOMP, "-initial_condition bump needs -clamp_outer (the bump vanishes on both circles)");
   PetscCheck(ctx->init.mms == ROLLER_MMS_NONE || (ctx->disc.clamp_outer && !ctx->obstacle.on), ctx->comm, PETSC_ERR_ARG_INCOMP, "-mms %s needs -clamp_outer and no -obstacle", RollerMMSTypes[ctx->init.mms]);
@@ -137,7 +106,6 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   }
   if (ctx->init.mms != ROLLER_MMS_NONE) ctx->init.type = ROLLER_IC_MMS;
   PetscCheck(ctx->init.type != ROLLER_IC_MMS || ctx->init.mms != ROLLER_MMS_NONE, ctx->comm, PETSC_ERR_ARG_INCOMP, "-initial_condition mms needs -mms linear or sine");
-  PetscCall(RollerLameFromYoung(ctx->material.young, ctx->material.poisson, &ctx->material.lambda, &ctx->material.mu));
   if (ctx->ck.restart[0]) PetscCall(RollerCheckpointDiscretization(ctx, ctx->ck.restart));
   PetscCall(RollerChooseMeshSize(ctx));
   PetscFunctionReturn(0);

@@ -54,6 +54,7 @@ PetscErrorCode RollerDestroy(Roller *roller)
   PetscCall(VecDestroy(&ctx->state.work));
   PetscCall(VecDestroy(&ctx->ops.w_R));
   PetscCall(VecDestroy(&ctx->ops.w_alpha));
+  PetscCall(DMDestroy(&ctx->init.dm));
   PetscCall(DMDestroy(&ctx->mesh.dm_view));
   PetscCall(DMDestroy(&ctx->mesh.dm));
   PetscCall(PetscFree(ctx));

@@ -16,17 +16,15 @@
 #include "output.h"
 #include "model/kernels.h"
 
-typedef void (*PointwiseFunc)(PetscInt, PetscInt, PetscInt, const PetscInt[], const PetscInt[], const PetscScalar[], const PetscScalar[], const PetscScalar[], const PetscInt[], const PetscInt[], const PetscScalar[], const PetscScalar[], const PetscScalar[], PetscReal, const PetscReal[], PetscInt, const PetscScalar[], PetscScalar[]);
-
 /* Projection kernels (DMProjectField evaluates them at the vertices). */
-static void f_pad_vector(PetscInt dim, PetscInt Nf, PetscInt NfAux, const PetscInt uOff[], const PetscInt uOff_x[], const PetscScalar u[], const PetscScalar u_t[], const PetscScalar u_x[], const PetscInt aOff[], const PetscInt aOff_x[], const PetscScalar a[], const PetscScalar a_t[], const PetscScalar a_x[], PetscReal t, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f[])
+static void f_pad_vector(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f[])
 {
   f[0] = u[0];
   f[1] = u[1];
   f[2] = 0.0;
 }
 
-static void f_one(PetscInt dim, PetscInt Nf, PetscInt NfAux, const PetscInt uOff[], const PetscInt uOff_x[], const PetscScalar u[], const PetscScalar u_t[], const PetscScalar u_x[], const PetscInt aOff[], const PetscInt aOff_x[], const PetscScalar a[], const PetscScalar a_t[], const PetscScalar a_x[], PetscReal t, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f[])
+static void f_one(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f[])
 {
   f[0] = 1.0;
 }
@@ -34,11 +32,11 @@ static void f_one(PetscInt dim, PetscInt Nf, PetscInt NfAux, const PetscInt uOff
 /* Evaluate a kernel of the field u (on ctx->mesh.dm) at the vertices of the output space of X. ADD_VALUES sums
    over the cells around each vertex (then divided by their number: a derivative such as sigma is
    discontinuous across cells and its vertex value is the mean of the cells' values). */
-static PetscErrorCode ProjectAtVertices(Roller ctx, Vec u, PointwiseFunc kernel, InsertMode mode, Vec X)
+static PetscErrorCode ProjectAtVertices(Roller ctx, Vec u, RollerPointFunc kernel, InsertMode mode, Vec X)
 {
-  PointwiseFunc funcs[1] = {kernel};
-  DM            dm;
-  Vec           ul, Xl;
+  RollerPointFunc funcs[1] = {kernel};
+  DM              dm;
+  Vec             ul, Xl;
 
   PetscFunctionBeginUser;
   PetscCall(VecGetDM(X, &dm));

@@ -1,6 +1,18 @@
-/* The prescribed motions: the driving rotation theta(t) and the obstacle height g(t) (docs/model.md sections 1, 5),
-   and the pointwise R(-pi/2) that the Euler and Coriolis terms of f apply. */
+/* The prescribed motions: the driving rotation theta(t) (its options) and the obstacle height g(t) (docs/model.md
+   sections 1, 5), and the pointwise R(-pi/2) that the Euler and Coriolis terms of f apply. */
 #include "model/model.h"
+
+PetscErrorCode RollerRotationSetFromOptions(Roller ctx)
+{
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(ctx->comm, NULL, "Roller: rotation theta(t) = omega t + a cos(b t)", NULL);
+  PetscCall(PetscOptionsReal("-omega", "Angular velocity omega", NULL, ctx->rotation.omega, &ctx->rotation.omega, NULL));
+  PetscCall(PetscOptionsReal("-theta_a", "Amplitude a of the rotation perturbation", NULL, ctx->rotation.a, &ctx->rotation.a, NULL));
+  PetscCall(PetscOptionsReal("-theta_b", "Angular frequency b of the rotation perturbation", NULL, ctx->rotation.b, &ctx->rotation.b, NULL));
+  PetscOptionsEnd();
+  PetscCheck(ctx->rotation.b >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-theta_b %g must be >= 0", (double)ctx->rotation.b);
+  PetscFunctionReturn(0);
+}
 
 /* theta(t) = omega t + a cos(b t) and its first two derivatives. */
 void RollerTheta(Roller ctx, PetscReal t, PetscReal *theta, PetscReal *theta_dot, PetscReal *theta_ddot)

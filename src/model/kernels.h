@@ -1,39 +1,34 @@
-/* Pointwise kernels for PetscFE (plane-strain linear elasticity, mass, loads), docs/model.md sections 1-3.
-   Constants (PetscDSSetConstants), see RollerConstant. */
+/* Pointwise kernels for PetscFE (plane-strain linear elasticity, mass, loads, boundary functionals),
+   docs/model.md sections 1-4. Every operator has a PetscDS of its own (model/operators.c), set once: the
+   kernels below read only the constants of their own DS, listed with each. */
 #ifndef ROLLER_KERNELS_H
 #define ROLLER_KERNELS_H
 
 #include <petscsys.h>
 
-typedef enum {
-  ROLLER_C_LAMBDA,
-  ROLLER_C_MU,
-  ROLLER_C_RHO,
-  ROLLER_C_TIME,       /* time at which a load kernel is evaluated */
-  ROLLER_C_THETA_DOT,  /* theta'(t)  */
-  ROLLER_C_THETA_DDOT, /* theta''(t) */
-  ROLLER_C_MMS,        /* RollerMMSType */
-  ROLLER_C_R_INNER,
-  ROLLER_C_R_OUTER,
-  ROLLER_C_MASS_WEIGHT,      /* the Jacobian kernels assemble c_M M + c_K K: a DS keeps every kernel */
-  ROLLER_C_STIFFNESS_WEIGHT, /* once set, so M and K are assembled with weights (1, 0) and (0, 1) */
-  ROLLER_C_GYRO_WEIGHT,      /* and the gyroscopic (R(-pi/2) u, v), i.e. R(-pi/2) M, with c_G */
-  ROLLER_C_MMS_AMPLITUDE,
-  ROLLER_NUM_CONSTANTS
-} RollerConstant;
-
+/* The arguments every PetscFE pointwise kernel begins with; a kernel then takes, after them,
+     residual, objective, projection:  const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f[]
+     Jacobian:                         PetscReal u_tShift, then the same
+     boundary residual and integral:   const PetscReal x[], const PetscReal n[], then the same */
 #define ROLLER_KERNEL_ARGS \
   PetscInt dim, PetscInt Nf, PetscInt NfAux, const PetscInt uOff[], const PetscInt uOff_x[], const PetscScalar u[], const PetscScalar u_t[], const PetscScalar u_x[], const PetscInt aOff[], const PetscInt aOff_x[], const PetscScalar a[], const PetscScalar a_t[], const PetscScalar a_x[], PetscReal t
 
-/* Plane-strain stress sigma = 2 mu eps + lambda tr(eps) I from the gradient u_x[c*dim+d] = d u_c / d x_d. */
+/* A residual, objective or projection kernel (DMProjectField, PetscDSSetResidual, PetscDSSetObjective). */
+typedef void (*RollerPointFunc)(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f[]);
+
+/* The material constants, set once at set-up (RollerMaterialSetConstants) on the DS of ctx->mesh.dm (the
+   output's stress projection) and of K, and never changed. */
+typedef enum { ROLLER_C_LAMBDA, ROLLER_C_MU, ROLLER_NUM_MATERIAL_CONSTANTS } RollerMaterialConstant;
+
 /* The position x as a field (DMProjectFunction), padded with zeros beyond the dimension (the 3-component
-   output vectors): the nodal coordinates of the step (discretization.c) and of the output (output.c). */
+   output vectors): the nodal coordinates of the step (operators.c) and of the output (output.c). */
 static inline PetscErrorCode RollerPosition(PetscInt dim, PetscReal time, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *ctx)
 {
   for (PetscInt c = 0; c < Nc; ++c) u[c] = c < dim ? x[c] : 0.0;
   return 0;
 }
 
+/* Plane-strain stress sigma = 2 mu eps + lambda tr(eps) I from the gradient u_x[c*dim+d] = d u_c / d x_d. */
 static inline void RollerStress(PetscReal lambda, PetscReal mu, const PetscScalar u_x[], PetscScalar sigma[])
 {
   const PetscScalar div = u_x[0] + u_x[3];
@@ -44,11 +39,10 @@ static inline void RollerStress(PetscReal lambda, PetscReal mu, const PetscScala
   sigma[3] = 2.0 * mu * u_x[3] + lambda * div;
 }
 
-/* K: a(u, v) = int sigma[u] : eps[v] (docs/model.md section 2). */
+/* K: a(u, v) = int sigma[u] : eps[v] (docs/model.md section 2). Constants: the material's. */
 static inline void g3_elastic(ROLLER_KERNEL_ARGS, PetscReal u_tShift, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar g3[])
 {
-  const PetscReal w      = PetscRealPart(constants[ROLLER_C_STIFFNESS_WEIGHT]);
-  const PetscReal lambda = w * PetscRealPart(constants[ROLLER_C_LAMBDA]), mu = w * PetscRealPart(constants[ROLLER_C_MU]);
+  const PetscReal lambda = PetscRealPart(constants[ROLLER_C_LAMBDA]), mu = PetscRealPart(constants[ROLLER_C_MU]);
 
   for (PetscInt c = 0; c < dim; ++c) {
     for (PetscInt d = 0; d < dim; ++d) {
@@ -59,33 +53,60 @@ static inline void g3_elastic(ROLLER_KERNEL_ARGS, PetscReal u_tShift, const Pets
   }
 }
 
-/* M: the L2 inner product (no density; A carries rho); G: (R(-pi/2) u, v), skew, the Coriolis operator. */
+/* M: the L2 inner product (u, v) (no density; A carries rho). No constants. */
 static inline void g0_mass(ROLLER_KERNEL_ARGS, PetscReal u_tShift, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar g0[])
 {
-  const PetscScalar cm = constants[ROLLER_C_MASS_WEIGHT], cg = constants[ROLLER_C_GYRO_WEIGHT];
-
-  g0[0] = cm;
-  g0[3] = cm;
-  g0[1] = cg; /* R(-pi/2)(a, b) = (b, -a) */
-  g0[2] = -cg;
+  g0[0] = 1.0;
+  g0[3] = 1.0;
 }
 
-/* Load of the rigid-body part of the centrifugal force: (x, v). */
+/* G: (R(-pi/2) u, v), skew, the Coriolis operator; R(-pi/2)(a, b) = (b, -a). No constants. */
+static inline void g0_gyro(ROLLER_KERNEL_ARGS, PetscReal u_tShift, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar g0[])
+{
+  g0[1] = 1.0;
+  g0[2] = -1.0;
+}
+
+/* Load of the rigid-body part of the centrifugal force: (x, v). No constants. */
 static inline void f0_centrifugal(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f0[])
 {
   f0[0] = x[0];
   f0[1] = x[1];
 }
 
-/* Load of the rigid-body part of the Euler force: (R(-pi/2) x, v), R(-pi/2)(a, b) = (b, -a). */
+/* Load of the rigid-body part of the Euler force: (R(-pi/2) x, v), R(-pi/2)(a, b) = (b, -a). No constants. */
 static inline void f0_euler(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f0[])
 {
   f0[0] = x[1];
   f0[1] = -x[0];
 }
 
-/* |sigma| = sqrt(sum_ij sigma_ij^2) (docs/model.md section 4), projected to a scalar field. */
-static inline void f_stress_norm(PetscInt dim, PetscInt Nf, PetscInt NfAux, const PetscInt uOff[], const PetscInt uOff_x[], const PetscScalar u[], const PetscScalar u_t[], const PetscScalar u_x[], const PetscInt aOff[], const PetscInt aOff_x[], const PetscScalar a[], const PetscScalar a_t[], const PetscScalar a_x[], PetscReal t, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f[])
+/* The boundary functionals on Gamma_C (docs/model.md section 4): w_R . v = int v . x/|x| ds,
+   w_alpha . v = int v . x_perp/|x| ds, x_perp = (-x_1, x_0), and |Gamma_C| = int 1 ds. No constants. */
+static inline void f0_bd_radial(ROLLER_KERNEL_ARGS, const PetscReal x[], const PetscReal n[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f0[])
+{
+  const PetscReal r = PetscSqrtReal(x[0] * x[0] + x[1] * x[1]);
+
+  f0[0] = x[0] / r;
+  f0[1] = x[1] / r;
+}
+
+static inline void f0_bd_angular(ROLLER_KERNEL_ARGS, const PetscReal x[], const PetscReal n[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f0[])
+{
+  const PetscReal r = PetscSqrtReal(x[0] * x[0] + x[1] * x[1]);
+
+  f0[0] = -x[1] / r;
+  f0[1] = x[0] / r;
+}
+
+static inline void f_bd_one(ROLLER_KERNEL_ARGS, const PetscReal x[], const PetscReal n[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f[])
+{
+  f[0] = 1.0;
+}
+
+/* |sigma| = sqrt(sum_ij sigma_ij^2) (docs/model.md section 4), projected to a scalar field. Constants: the
+   material's, those of the input DS (ctx->mesh.dm's). */
+static inline void f_stress_norm(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f[])
 {
   PetscScalar sigma[4];
 

@@ -1,28 +1,45 @@
-/* The model layer (docs/model.md sections 1-3, 6.2):
-     forcing.c         theta(t), the obstacle height g(t), R(-pi/2)
-     discretization.c  PetscFE spaces, Dirichlet boundary, the operators M, K, A, the loads, the factorization
-     accuracy.c        the default dt and h from -ts_phase_error
-     kernels.h         pointwise FE kernels */
+/* The model layer (docs/model.md sections 1-4, 6.2):
+     material.c     -young, -poisson, -density, the Lame constants, the material constants of the kernels
+     forcing.c      the rotation theta(t) (-omega, -theta_a, -theta_b), the obstacle height g(t), R(-pi/2)
+     fe.c           the discretization options, the PetscFE space and Dirichlet boundary, one DM per operator
+     operators.c    M, K, G, A, the rigid-body loads, the load assembly, the nodal positions
+     solver.c       the factorization of A and the defaults of every direct solve
+     functionals.c  w_R, w_alpha and |Gamma_C| (boundary integrals on Gamma_C)
+     accuracy.c     the default dt and h from -ts_phase_error
+     kernels.h      pointwise FE kernels, the one kernel signature, the material constants */
 #ifndef ROLLER_MODEL_H
 #define ROLLER_MODEL_H
 
 #include <roller_impl.h>
 #include "mesh/mesh.h"
 
+/* material.c */
+PETSC_INTERN PetscErrorCode RollerMaterialSetFromOptions(Roller);
 PETSC_INTERN PetscErrorCode RollerLameFromYoung(PetscReal, PetscReal, PetscReal *, PetscReal *);
-
-/* discretization.c */
-PETSC_INTERN PetscErrorCode RollerDiscretizationSetUp(Roller);
-PETSC_INTERN PetscErrorCode RollerDirectSolverDefaults(KSP, PCType); /* preonly + factorization: ND serial, MUMPS parallel */
-PETSC_INTERN PetscErrorCode RollerSetConstants(Roller, PetscReal, PetscReal, PetscReal, PetscReal);
-PETSC_INTERN PetscErrorCode RollerUpdateGyroscopic(Roller, PetscReal);
-PETSC_INTERN PetscErrorCode RollerOperatorsSetUp(Roller);
-PETSC_INTERN PetscErrorCode RollerComputeBoundaryFunctionals(Roller);
+PETSC_INTERN PetscErrorCode RollerMaterialSetConstants(Roller, PetscDS); /* (lambda, mu), set once */
 
 /* forcing.c: theta and its derivatives, the obstacle height, R(-pi/2) */
+PETSC_INTERN PetscErrorCode RollerRotationSetFromOptions(Roller);
 PETSC_INTERN void           RollerTheta(Roller, PetscReal, PetscReal *, PetscReal *, PetscReal *);
 PETSC_INTERN PetscReal      RollerObstacleHeight(Roller, PetscReal);
 PETSC_INTERN PetscErrorCode RollerApplyRotate90(Vec, Vec);
+
+/* fe.c */
+PETSC_INTERN PetscErrorCode RollerDiscretizationSetFromOptions(Roller);
+PETSC_INTERN PetscErrorCode RollerDiscretizationSetUp(Roller);
+PETSC_INTERN PetscErrorCode RollerOperatorDMCreate(Roller, PetscFE, DM *); /* a clone of ctx->mesh.dm with an empty DS of its own */
+
+/* operators.c */
+PETSC_INTERN PetscErrorCode RollerOperatorsSetUp(Roller);
+PETSC_INTERN PetscErrorCode RollerUpdateGyroscopic(Roller, PetscReal);
+PETSC_INTERN PetscErrorCode RollerAddLoad(DM, Vec); /* b += the residual kernel's load on an operator's DM */
+
+/* solver.c */
+PETSC_INTERN PetscErrorCode RollerStepSolverSetUp(Roller);
+PETSC_INTERN PetscErrorCode RollerDirectSolverDefaults(KSP, PCType); /* preonly + factorization: ND serial, MUMPS parallel */
+
+/* functionals.c */
+PETSC_INTERN PetscErrorCode RollerComputeBoundaryFunctionals(Roller);
 
 /* accuracy.c: the default -mesh_h and -ts_dt from the accuracy target -ts_phase_error */
 PETSC_INTERN PetscErrorCode RollerModeFrequencies(Roller, PetscReal *, PetscReal *);

@@ -46,16 +46,55 @@ static void MMSShape(PetscReal ri, PetscReal ro, const PetscReal x[], PetscReal 
   }
 }
 
-/* Body force F(x, t) at the constants' time (kernels.h), loaded as (F, v). */
+/* The constants of the MMS load and error functionals (their own DS each): the material and the
+   manufactured solution, and the time t, the functional's argument, set at every call. */
+typedef enum {
+  MMS_C_LAMBDA,
+  MMS_C_MU,
+  MMS_C_RHO,
+  MMS_C_TYPE, /* RollerMMSType */
+  MMS_C_AMPLITUDE,
+  MMS_C_R_INNER,
+  MMS_C_R_OUTER,
+  MMS_C_TIME,
+  MMS_C_THETA_DOT,  /* theta'(t)  */
+  MMS_C_THETA_DDOT, /* theta''(t) */
+  MMS_NUM_CONSTANTS
+} MMSConstant;
+
+static PetscErrorCode MMSSetConstants(Roller ctx, PetscReal t, DM dm)
+{
+  PetscDS     ds;
+  PetscScalar constants[MMS_NUM_CONSTANTS];
+  PetscReal   td, tdd;
+
+  PetscFunctionBeginUser;
+  RollerTheta(ctx, t, NULL, &td, &tdd);
+  constants[MMS_C_LAMBDA]     = ctx->material.lambda;
+  constants[MMS_C_MU]         = ctx->material.mu;
+  constants[MMS_C_RHO]        = ctx->material.density;
+  constants[MMS_C_TYPE]       = ctx->init.mms;
+  constants[MMS_C_AMPLITUDE]  = ctx->init.amplitude;
+  constants[MMS_C_R_INNER]    = ctx->mesh.r_inner;
+  constants[MMS_C_R_OUTER]    = ctx->mesh.r_outer;
+  constants[MMS_C_TIME]       = t;
+  constants[MMS_C_THETA_DOT]  = td;
+  constants[MMS_C_THETA_DDOT] = tdd;
+  PetscCall(DMGetDS(dm, &ds));
+  PetscCall(PetscDSSetConstants(ds, MMS_NUM_CONSTANTS, constants));
+  PetscFunctionReturn(0);
+}
+
+/* Body force F(x, t) at the constants' time, loaded as (F, v). */
 static void f0_mms(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f0[])
 {
-  const PetscReal lambda = PetscRealPart(constants[ROLLER_C_LAMBDA]), mu = PetscRealPart(constants[ROLLER_C_MU]), rho = PetscRealPart(constants[ROLLER_C_RHO]);
-  const PetscReal time = PetscRealPart(constants[ROLLER_C_TIME]), td = PetscRealPart(constants[ROLLER_C_THETA_DOT]), tdd = PetscRealPart(constants[ROLLER_C_THETA_DDOT]);
-  const PetscReal amp = PetscRealPart(constants[ROLLER_C_MMS_AMPLITUDE]);
+  const PetscReal lambda = PetscRealPart(constants[MMS_C_LAMBDA]), mu = PetscRealPart(constants[MMS_C_MU]), rho = PetscRealPart(constants[MMS_C_RHO]);
+  const PetscReal time = PetscRealPart(constants[MMS_C_TIME]), td = PetscRealPart(constants[MMS_C_THETA_DOT]), tdd = PetscRealPart(constants[MMS_C_THETA_DDOT]);
+  const PetscReal amp = PetscRealPart(constants[MMS_C_AMPLITUDE]);
   PetscReal       T[3], B, dB[2], H[4], ue[2], ut[2], utt[2], divsig[2], f[2];
 
-  MMSTime((PetscInt)PetscRealPart(constants[ROLLER_C_MMS]), time, T);
-  MMSShape(PetscRealPart(constants[ROLLER_C_R_INNER]), PetscRealPart(constants[ROLLER_C_R_OUTER]), x, &B, dB, H);
+  MMSTime((PetscInt)PetscRealPart(constants[MMS_C_TYPE]), time, T);
+  MMSShape(PetscRealPart(constants[MMS_C_R_INNER]), PetscRealPart(constants[MMS_C_R_OUTER]), x, &B, dB, H);
   for (PetscInt c = 0; c < 2; ++c) {
     ue[c]  = T[0] * amp * B * mms_c[c];
     ut[c]  = T[1] * amp * B * mms_c[c];
@@ -102,60 +141,61 @@ PetscErrorCode RollerMMSExact(Roller ctx, PetscReal t, Vec xi)
   PetscFunctionReturn(0);
 }
 
-/* b += (F(t), v): the manufactured body force at time t. */
+/* b += (F(t), v): the manufactured body force at time t, on the load's own DM (made at the first call, kept in
+   ctx->init.dm), whose DS holds f0_mms and its constants; only the time changes from call to call. */
 PetscErrorCode RollerAddMMSLoad(Roller ctx, PetscReal t, Vec b)
 {
-  PetscDS ds;
-  Vec     loc, locF;
-
   PetscFunctionBeginUser;
-  PetscCall(RollerSetConstants(ctx, t, 0.0, 0.0, 0.0));
-  PetscCall(DMGetDS(ctx->mesh.dm, &ds));
-  PetscCall(PetscDSSetResidual(ds, 0, f0_mms, NULL));
-  PetscCall(DMGetLocalVector(ctx->mesh.dm, &loc));
-  PetscCall(DMGetLocalVector(ctx->mesh.dm, &locF));
-  PetscCall(VecZeroEntries(loc));
-  PetscCall(VecZeroEntries(locF));
-  PetscCall(DMPlexSNESComputeResidualFEM(ctx->mesh.dm, loc, locF, NULL));
-  PetscCall(DMLocalToGlobal(ctx->mesh.dm, locF, ADD_VALUES, b));
-  PetscCall(DMRestoreLocalVector(ctx->mesh.dm, &loc));
-  PetscCall(DMRestoreLocalVector(ctx->mesh.dm, &locF));
+  if (!ctx->init.dm) {
+    PetscDS ds;
+
+    PetscCall(RollerOperatorDMCreate(ctx, NULL, &ctx->init.dm));
+    PetscCall(DMGetDS(ctx->init.dm, &ds));
+    PetscCall(PetscDSSetResidual(ds, 0, f0_mms, NULL));
+  }
+  PetscCall(MMSSetConstants(ctx, t, ctx->init.dm));
+  PetscCall(RollerAddLoad(ctx->init.dm, b));
   PetscFunctionReturn(0);
 }
 
 /* Squared L2 and H1-seminorm error densities against the manufactured solution at the constants' time. */
 static void f0_l2_error(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar obj[])
 {
-  const PetscReal amp = PetscRealPart(constants[ROLLER_C_MMS_AMPLITUDE]);
+  const PetscReal amp = PetscRealPart(constants[MMS_C_AMPLITUDE]);
   PetscReal       T[3], B;
 
-  MMSTime((PetscInt)PetscRealPart(constants[ROLLER_C_MMS]), PetscRealPart(constants[ROLLER_C_TIME]), T);
-  MMSShape(PetscRealPart(constants[ROLLER_C_R_INNER]), PetscRealPart(constants[ROLLER_C_R_OUTER]), x, &B, NULL, NULL);
+  MMSTime((PetscInt)PetscRealPart(constants[MMS_C_TYPE]), PetscRealPart(constants[MMS_C_TIME]), T);
+  MMSShape(PetscRealPart(constants[MMS_C_R_INNER]), PetscRealPart(constants[MMS_C_R_OUTER]), x, &B, NULL, NULL);
   obj[0] = 0.0;
   for (PetscInt c = 0; c < 2; ++c) obj[0] += PetscSqr(PetscRealPart(u[c]) - T[0] * amp * B * mms_c[c]);
 }
 
 static void f0_h1_error(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar obj[])
 {
-  const PetscReal amp = PetscRealPart(constants[ROLLER_C_MMS_AMPLITUDE]);
+  const PetscReal amp = PetscRealPart(constants[MMS_C_AMPLITUDE]);
   PetscReal       T[3], B, dB[2];
 
-  MMSTime((PetscInt)PetscRealPart(constants[ROLLER_C_MMS]), PetscRealPart(constants[ROLLER_C_TIME]), T);
-  MMSShape(PetscRealPart(constants[ROLLER_C_R_INNER]), PetscRealPart(constants[ROLLER_C_R_OUTER]), x, &B, dB, NULL);
+  MMSTime((PetscInt)PetscRealPart(constants[MMS_C_TYPE]), PetscRealPart(constants[MMS_C_TIME]), T);
+  MMSShape(PetscRealPart(constants[MMS_C_R_INNER]), PetscRealPart(constants[MMS_C_R_OUTER]), x, &B, dB, NULL);
   obj[0] = 0.0;
   for (PetscInt c = 0; c < 2; ++c)
     for (PetscInt d = 0; d < 2; ++d) obj[0] += PetscSqr(PetscRealPart(u_x[c * 2 + d]) - T[0] * amp * dB[d] * mms_c[c]);
 }
 
-static PetscErrorCode IntegrateError(Roller ctx, void (*f0)(ROLLER_KERNEL_ARGS, const PetscReal[], PetscInt, const PetscScalar[], PetscScalar[]), PetscReal *err)
+/* sqrt(int f0(xi^k)) at time t, the functional f0 on its own DM. */
+static PetscErrorCode IntegrateError(Roller ctx, RollerPointFunc f0, PetscReal t, PetscReal *err)
 {
+  DM          dm;
   PetscDS     ds;
   PetscScalar integral;
 
   PetscFunctionBeginUser;
-  PetscCall(DMGetDS(ctx->mesh.dm, &ds));
+  PetscCall(RollerOperatorDMCreate(ctx, NULL, &dm));
+  PetscCall(DMGetDS(dm, &ds));
   PetscCall(PetscDSSetObjective(ds, 0, f0));
-  PetscCall(DMPlexComputeIntegralFEM(ctx->mesh.dm, ctx->state.cur, &integral, NULL));
+  PetscCall(MMSSetConstants(ctx, t, dm));
+  PetscCall(DMPlexComputeIntegralFEM(dm, ctx->state.cur, &integral, NULL));
+  PetscCall(DMDestroy(&dm));
   *err = PetscSqrtReal(PetscRealPart(integral));
   PetscFunctionReturn(0);
 }
@@ -164,8 +204,7 @@ static PetscErrorCode IntegrateError(Roller ctx, void (*f0)(ROLLER_KERNEL_ARGS, 
 PetscErrorCode RollerComputeErrors(Roller ctx, PetscReal t, PetscReal *l2, PetscReal *h1)
 {
   PetscFunctionBeginUser;
-  PetscCall(RollerSetConstants(ctx, t, 0.0, 0.0, 0.0));
-  PetscCall(IntegrateError(ctx, f0_l2_error, l2));
-  PetscCall(IntegrateError(ctx, f0_h1_error, h1));
+  PetscCall(IntegrateError(ctx, f0_l2_error, t, l2));
+  PetscCall(IntegrateError(ctx, f0_h1_error, t, h1));
   PetscFunctionReturn(0);
 }
