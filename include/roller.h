@@ -1,6 +1,6 @@
 /* Roller: a rubber roller as an elastic annulus in the co-rotating frame, pressed by a moving flat
    obstacle, advanced by the energy-conserving discrete Morse flow (DMF). See docs/model.md.
-   This is the public face: create, configure from options, set up, solve, destroy. */
+   This is the public face: create, configure from options, set up, solve, destroy; observers of the run. */
 #ifndef ROLLER_H
 #define ROLLER_H
 
@@ -14,5 +14,15 @@ PETSC_EXTERN PetscErrorCode RollerSetFromOptions(Roller);
 PETSC_EXTERN PetscErrorCode RollerSetUp(Roller);
 PETSC_EXTERN PetscErrorCode RollerSolve(Roller);
 PETSC_EXTERN PetscErrorCode RollerDestroy(Roller *);
+
+/* Observers of the run (TSMonitorSet-style): RollerSolve calls every one, in the order they were set, at the
+   state the run starts from (step 0, or the step a restart continues), after every step, and once at the
+   successful end (where outputs are completed: files renamed into place). Set during set-up by each
+   component (CSV, HDF5 fields, the -ts_monitor and progress lines, the periodic checkpoint, the MMS errors). */
+typedef enum { ROLLER_MONITOR_INITIAL, ROLLER_MONITOR_STEP, ROLLER_MONITOR_FINAL } RollerMonitorEvent;
+PETSC_EXTERN const char *const RollerMonitorEvents[];
+
+PETSC_EXTERN PetscErrorCode RollerMonitorSet(Roller, PetscErrorCode (*)(Roller, RollerMonitorEvent, void *), void *, PetscErrorCode (*)(void **));
+PETSC_EXTERN PetscErrorCode RollerMonitorCancel(Roller);
 
 #endif

@@ -31,8 +31,8 @@ PETSC_EXTERN const char *const RollerMMSTypes[];
 typedef enum { ROLLER_CORIOLIS_BACKWARD, ROLLER_CORIOLIS_EXTRAPOLATED, ROLLER_CORIOLIS_CENTERED } RollerCoriolisVelocity;
 PETSC_EXTERN const char *const RollerCoriolisVelocities[];
 
-typedef struct _n_RollerContact *RollerContact;
-typedef struct _n_RollerOutput  *RollerOutput;
+typedef struct _n_RollerContact  *RollerContact;
+typedef struct _n_RollerMonitors *RollerMonitors; /* the observers of the run (integrate/monitor.c) */
 
 /* Indices into ctx->stage for -log_view. */
 enum { ROLLER_STAGE_SETUP, ROLLER_STAGE_STEP, ROLLER_STAGE_CONTACT, ROLLER_STAGE_DIAGNOSTICS, ROLLER_STAGE_OUTPUT, ROLLER_NUM_STAGES };
@@ -59,6 +59,9 @@ typedef struct {
   DM        dm;              /* the distributed mesh and the displacement space */
   DM        dm_view;         /* the straight-sided mesh written to HDF5/XDMF (dm itself unless curved) */
   PetscReal boundary_length; /* |Gamma_C| of the discrete (polygonal or curved) outer circle */
+  /* -r_inner, -r_outer given (checked against a mesh file's radii), -mesh_gmsh_verbose, -mesh_view_info (mesh/mesh.c);
+     h from the -restart checkpoint (integrate/checkpoint.c) */
+  PetscBool radii_set[2], gmsh_verbose, view_info, h_restart;
 } RollerMesh;
 
 /* Material (set once): plane-strain Lame constants from E, nu */
@@ -99,15 +102,22 @@ typedef struct {
   KSP ksp; /* the factorization of A, made once */
 } RollerOperators;
 
-/* Time stepping (integrate/driver.c) */
+/* Time stepping (integrate/timestep.c) */
 typedef struct {
   PetscReal dt, max_time;
-  PetscBool dt_set;      /* -ts_dt given; otherwise chosen from -ts_phase_error (model/accuracy.c) */
+  PetscBool dt_set;      /* -ts_dt given (or from the checkpoint); otherwise chosen from -ts_phase_error (model/accuracy.c) */
+  PetscBool dt_restart;  /* dt from the -restart checkpoint (integrate/checkpoint.c) */
   PetscReal phase_error; /* -ts_phase_error: the accuracy target that sets the default dt and h */
   PetscBool view;        /* -ts_view: print the chosen discretization and why */
   PetscInt  max_steps;
-  PetscBool quiet;
+  PetscBool quiet, monitor; /* -quiet: no progress line; -ts_monitor: a line every step */
 } RollerTimeParams;
+
+/* The lowest radial breathing and torsional angular frequencies of the annulus (model/accuracy.c) and the radii
+   they were computed for (0: not yet): computed once, shared by the default h and the default dt */
+typedef struct {
+  PetscReal r_inner, r_outer, breathing, torsion;
+} RollerModes;
 
 /* The integrator state: during a step, cur = xi^{k-1}, prev = xi^{k-2}, prev2 = xi^{k-3} (extrapolated Coriolis)
    and next receives xi^k; after it the levels move up one (next is then free, a scratch vector between steps).
@@ -124,12 +134,14 @@ typedef struct {
   PetscInt every;
 } RollerCheckpoint;
 
-/* Initial state and verification (integrate/step.c, verify/mms.c) */
+/* Initial state and verification (integrate/initial.c, verify/mms.c) */
 typedef struct {
   RollerInitialCondition type;
   PetscReal              amplitude;
   RollerMMSType          mms;
-  DM                     dm; /* the manufactured body force's own DM and DS (verify/mms.c) */
+  DM                     dm;       /* the manufactured body force's own DM and DS (verify/mms.c) */
+  PetscViewer            mms_view; /* -mms_view: where the errors at the end go (NULL: stdout) */
+  PetscViewerFormat      mms_format;
 } RollerInitial;
 
 struct _n_Roller {
@@ -141,11 +153,12 @@ struct _n_Roller {
   RollerDiscretization disc;
   RollerOperators      ops;
   RollerTimeParams     ts;
+  RollerModes          modes;
   RollerState          state;
   RollerCheckpoint     ck;
   RollerInitial        init;
   RollerContact        contact;
-  RollerOutput         output;
+  RollerMonitors       monitors;
   RollerStepInfo       info;
   PetscLogStage        stage[ROLLER_NUM_STAGES];
 };

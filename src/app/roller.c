@@ -1,4 +1,5 @@
-/* The life of a Roller context: set up every component in order, destroy them all. */
+/* The life of a Roller context: set up every component in order, each setting its observers of the run, and
+   destroy them all. */
 #include "integrate/integrate.h"
 
 PetscErrorCode RollerSetUp(Roller ctx)
@@ -22,7 +23,12 @@ PetscErrorCode RollerSetUp(Roller ctx)
     PetscCall(PetscOptionsHasHelp(NULL, &help));
     if (help) PetscCall(RollerContactHelp(ctx)); /* -help lists every option, the contact ones too */
   }
-  PetscCall(RollerOutputCreate(ctx, &ctx->output));
+  /* The observers, in the order they see every state: the console lines, the outputs (CSV, fields), the
+     periodic checkpoint (after the outputs: a restart continues after the CSV row of its step), the MMS errors */
+  PetscCall(RollerTimeStepMonitorSetUp(ctx));
+  PetscCall(RollerOutputSetUp(ctx));
+  PetscCall(RollerCheckpointMonitorSetUp(ctx));
+  PetscCall(RollerInitialMonitorSetUp(ctx));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }
@@ -33,7 +39,8 @@ PetscErrorCode RollerDestroy(Roller *roller)
 
   PetscFunctionBeginUser;
   if (!ctx) PetscFunctionReturn(0);
-  PetscCall(RollerOutputDestroy(ctx, &ctx->output));
+  PetscCall(RollerMonitorCancel(ctx));
+  PetscCall(PetscViewerDestroy(&ctx->init.mms_view));
   PetscCall(RollerContactDestroy(&ctx->contact));
   PetscCall(KSPDestroy(&ctx->ops.ksp));
   PetscCall(MatDestroy(&ctx->ops.M));

@@ -2,7 +2,7 @@
    k and its time; theta and the obstacle height are functions of time) in an HDF5 file, written to a
    temporary name and renamed so that a kill during a write never leaves a corrupt latest checkpoint.
    SIGTERM/SIGINT (what a batch scheduler sends before the kill) make the driver finish the step, write a
-   checkpoint and stop cleanly. */
+   checkpoint and stop cleanly. -checkpoint_every N is an observer of the run that writes it every N steps. */
 #include "integrate/integrate.h"
 #include <petscviewerhdf5.h>
 #include <signal.h>
@@ -24,6 +24,19 @@ static void History(Roller ctx, Vec v[3])
 }
 
 static const char *const history_names[3] = {"xi_k", "xi_k1", "xi_k2"};
+
+PetscErrorCode RollerCheckpointSetFromOptions(Roller ctx)
+{
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(ctx->comm, NULL, "Roller: checkpoint and restart", NULL);
+  PetscCall(PetscOptionsString("-checkpoint", "HDF5 file of the full state (written every N steps, on SIGTERM/SIGINT, and when a step fails)", NULL, ctx->ck.file, ctx->ck.file, sizeof(ctx->ck.file), NULL));
+  PetscCall(PetscOptionsInt("-checkpoint_every", "Write the checkpoint every N steps (0: only on a signal or a failed step)", NULL, ctx->ck.every, &ctx->ck.every, NULL));
+  PetscCall(PetscOptionsString("-restart", "Continue from this checkpoint (same mesh, -degree, -ts_dt and ranks)", NULL, ctx->ck.restart, ctx->ck.restart, sizeof(ctx->ck.restart), NULL));
+  PetscOptionsEnd();
+  PetscCheck(ctx->ck.every >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-checkpoint_every %" PetscInt_FMT " must be >= 0", ctx->ck.every);
+  PetscCheck(ctx->ck.file[0], ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-checkpoint needs a file name");
+  PetscFunctionReturn(0);
+}
 
 /* Through a plain MPI vector of the same layout, HDF5 writes a flat dataset by name, not the DM's fields.
    (VecLoad replaces a vector's array, so the load goes through a copy.) */
@@ -97,12 +110,14 @@ PetscErrorCode RollerCheckpointDiscretization(Roller ctx, const char *path)
   PetscCall(CheckpointOpen(ctx, path, &viewer));
   if (!ctx->ts.dt_set) {
     PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "dt", PETSC_REAL, NULL, &ctx->ts.dt));
-    ctx->ts.dt_set = PETSC_TRUE;
+    ctx->ts.dt_set     = PETSC_TRUE;
+    ctx->ts.dt_restart = PETSC_TRUE;
   }
   PetscCall(PetscViewerHDF5HasAttribute(viewer, "/", "mesh_h", &exists));
   if (!ctx->mesh.h_set && !ctx->mesh.file[0] && exists) {
     PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "mesh_h", PETSC_REAL, NULL, &ctx->mesh.h));
-    ctx->mesh.h_set = PETSC_TRUE;
+    ctx->mesh.h_set     = PETSC_TRUE;
+    ctx->mesh.h_restart = PETSC_TRUE;
   }
   PetscCall(PetscViewerDestroy(&viewer));
   PetscFunctionReturn(0);
@@ -132,6 +147,23 @@ PetscErrorCode RollerCheckpointRead(Roller ctx, const char *path)
   PetscCall(PetscViewerDestroy(&viewer));
   PetscCall(MatMult(ctx->ops.K, ctx->state.cur, ctx->state.Kcur));
   PetscCall(MatMult(ctx->ops.K, ctx->state.prev, ctx->state.Kprev));
+  PetscFunctionReturn(0);
+}
+
+/* -checkpoint_every N: after every N-th step, once the step's outputs are written (a restart continues after
+   the CSV row of its step, so that row must be on disk before the checkpoint that names it). */
+static PetscErrorCode MonitorCheckpoint(Roller ctx, RollerMonitorEvent event, void *mctx)
+{
+  PetscFunctionBeginUser;
+  if (event == ROLLER_MONITOR_STEP && ctx->state.step % ctx->ck.every == 0) PetscCall(RollerCheckpointWrite(ctx, ctx->ck.file));
+  PetscFunctionReturn(0);
+}
+
+/* Set after the outputs' observers (see MonitorCheckpoint). */
+PetscErrorCode RollerCheckpointMonitorSetUp(Roller ctx)
+{
+  PetscFunctionBeginUser;
+  if (ctx->ck.every) PetscCall(RollerMonitorSet(ctx, MonitorCheckpoint, NULL, NULL));
   PetscFunctionReturn(0);
 }
 

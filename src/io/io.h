@@ -1,6 +1,7 @@
-/* The output layer (docs/output.md):
-     output.c        the HDF5 fields and the output object's life
-     output_csv.c    the monitor CSV (docs/model.md section 6)
+/* The output layer (docs/output.md): every output is an observer of the run (RollerMonitorSet), set up by
+   RollerOutputSetUp from the "Roller: output" options.
+     output.c        the HDF5 fields and their observer; the output options
+     output_csv.c    the monitor CSV (docs/model.md section 6) and its observer
      output_xdmf.c   the HDF5 layout and the XDMF index
      series.c        the diagnostics time series in the HDF5 file
      output_files.c  .part files renamed on success, stale outputs, writable paths (also the checkpoint's) */
@@ -22,9 +23,17 @@ PETSC_INTERN PetscErrorCode     RollerSeriesAppend(Roller, RollerSeries *);
 PETSC_INTERN PetscErrorCode     RollerSeriesWrite(Roller, RollerSeries, PetscViewer);
 PETSC_INTERN PetscErrorCode     RollerSeriesDestroy(RollerSeries *);
 
-/* output.c, output_csv.c, output_xdmf.c */
-PETSC_INTERN PetscErrorCode RollerOutputCreate(Roller, RollerOutput *);
-PETSC_INTERN PetscErrorCode RollerOutputStep(Roller, RollerOutput);
-PETSC_INTERN PetscErrorCode RollerOutputDestroy(Roller, RollerOutput *);
+/* output_csv.c: the CSV writer (RollerCsvOpen's resume: the step a restart continues after, -1 for a new run;
+   RollerCsvClose: the successful end, F.part renamed to F) and its observer */
+typedef struct _n_RollerCsv *RollerCsv;
+PETSC_INTERN PetscErrorCode  RollerCsvOpen(MPI_Comm, const char[], PetscInt, RollerCsv *);
+PETSC_INTERN PetscErrorCode  RollerCsvRow(RollerCsv, PetscInt, PetscReal, const RollerStepInfo *, PetscReal);
+PETSC_INTERN PetscErrorCode  RollerCsvClose(RollerCsv);
+PETSC_INTERN PetscErrorCode  RollerCsvDestroy(RollerCsv *);
+PETSC_INTERN PetscErrorCode  RollerCsvMonitorSetUp(Roller, const char[]);
+
+/* output.c: the fields (HDF5 + XDMF index) and the output options; every output set as an observer */
+typedef struct _n_RollerOutput *RollerOutput;
+PETSC_INTERN PetscErrorCode     RollerOutputSetUp(Roller);
 
 #endif

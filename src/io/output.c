@@ -2,9 +2,10 @@
    fields every N steps to HDF5 with an XDMF index so ParaView opens it directly. Output is what was
    asked: without -monitor_csv no CSV, without -output no field is computed.
 
-   A run that fails must not leave output that looks complete: the files are written as F.part (CSV and
-   HDF5) and <base>.part.xmf (the index) and renamed to F and <base>.xmf by RollerOutputDestroy, which only
-   a successful run reaches. After every field write the HDF5 file is flushed and the new step appended to
+   Each output is an observer of the run (RollerMonitorSet), set up here from the options: the CSV
+   (output_csv.c) and the fields (this file). A run that fails must not leave output that looks complete:
+   the files are written as F.part (CSV and HDF5) and <base>.part.xmf (the index) and renamed to F and
+   <base>.xmf at the end of the run (ROLLER_MONITOR_FINAL), which only a successful run reaches. After every field write the HDF5 file is flushed and the new step appended to
    the index in place (XdmfAppend: written once, not rewritten, so N steps cost O(N)), so a killed run
    still has a readable F.part indexed up to its last written step; the final <base>.xmf is written whole
    once, at the end.
@@ -125,16 +126,16 @@ static PetscErrorCode FieldsCreate(Roller ctx, RollerOutput out)
   PetscCall(RollerXdmfPaths(out));
   PetscCall(RollerJoinPath(out->h5_part, sizeof(out->h5_part), out->h5_path, ".part", "-output"));
   PetscCall(RollerRemoveStale(ctx->comm, out->h5_path));
-  PetscCall(RollerRemoveStale(ctx->comm, out->xmf_path));
-  PetscCall(RollerRemoveStale(ctx->comm, out->xmf_part)); /* would index the new file before it has a step */
+  PetscCall(RollerRemoveStale(ctx->comm, out->xdmf.path));
+  PetscCall(RollerRemoveStale(ctx->comm, out->xdmf.part)); /* would index the new file before it has a step */
   PetscCall(RollerCheckWritable(ctx->comm, "-output", out->h5_part));
   PetscCall(PetscViewerHDF5Open(ctx->comm, out->h5_part, FILE_MODE_WRITE, &out->h5));
   PetscCall(DMView(ctx->mesh.dm_view, out->h5)); /* straight-sided: XDMF draws linear triangles */
   PetscCall(WriteParameters(ctx, out->h5));
   PetscCall(PetscViewerHDF5HasDataset(out->h5, "/viz/geometry/vertices", &has));
-  PetscCall(RollerDatasetQuery(out->h5, has ? "/viz/geometry/vertices" : "/geometry/vertices", &out->vertices));
-  PetscCall(RollerDatasetQuery(out->h5, "/viz/topology/cells", &out->cells));
-  PetscCheck(out->vertices.ndims == 2 && out->cells.ndims == 2, ctx->comm, PETSC_ERR_LIB, "Unexpected mesh layout in %s", out->h5_part);
+  PetscCall(RollerDatasetQuery(out->h5, has ? "/viz/geometry/vertices" : "/geometry/vertices", &out->xdmf.vertices));
+  PetscCall(RollerDatasetQuery(out->h5, "/viz/topology/cells", &out->xdmf.cells));
+  PetscCheck(out->xdmf.vertices.ndims == 2 && out->xdmf.cells.ndims == 2, ctx->comm, PETSC_ERR_LIB, "Unexpected mesh layout in %s", out->h5_part);
 
   PetscCall(OutputSpace(ctx, 3, "displacement", &out->vdm));
   PetscCall(OutputSpace(ctx, 1, "stress_norm", &out->sdm));
@@ -153,29 +154,6 @@ static PetscErrorCode FieldsCreate(Roller ctx, RollerOutput out)
   PetscCall(DMCreateGlobalVector(out->vdm, &out->position));
   PetscCall(DMProjectFunction(out->vdm, 0.0, position, NULL, INSERT_VALUES, out->position));
   PetscCall(ProjectAtVertices(ctx, ctx->state.cur, f_one, ADD_VALUES, out->count));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode RollerOutputCreate(Roller ctx, RollerOutput *output)
-{
-  RollerOutput out;
-  PetscBool    has_csv = PETSC_FALSE, has_h5 = PETSC_FALSE;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscNew(&out));
-  out->every  = 10;
-  out->xmf_fd = -1;
-  PetscOptionsBegin(ctx->comm, NULL, "Roller: output", NULL);
-  PetscCall(PetscOptionsString("-monitor_csv", "One CSV row per step: step,t,R,alpha,energy,contact_nodes,contact_force,gap_min,qp_iterations,kkt_residual,theta", NULL, out->csv_path, out->csv_path, sizeof(out->csv_path), &has_csv));
-  PetscCall(PetscOptionsString("-output", "Fields to this HDF5 file, with an XDMF index beside it (F.h5 -> F.xmf)", NULL, out->h5_path, out->h5_path, sizeof(out->h5_path), &has_h5));
-  PetscCall(PetscOptionsInt("-output_every", "Write fields every N steps", NULL, out->every, &out->every, NULL));
-  PetscOptionsEnd();
-  PetscCheck(out->every > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-output_every %" PetscInt_FMT " must be > 0", out->every);
-  PetscCheck(!has_csv || out->csv_path[0], ctx->comm, PETSC_ERR_ARG_WRONG, "-monitor_csv needs a file name");
-  PetscCheck(!has_h5 || out->h5_path[0], ctx->comm, PETSC_ERR_ARG_WRONG, "-output needs a file name");
-  if (out->csv_path[0]) PetscCall(RollerCsvOpen(ctx, out));
-  if (out->h5_path[0]) PetscCall(FieldsCreate(ctx, out));
-  *output = out;
   PetscFunctionReturn(0);
 }
 
@@ -225,48 +203,62 @@ static PetscErrorCode WriteFields(Roller ctx, RollerOutput out)
   /* multiplier / tributary length at the Gamma_C vertices (docs/contact.md) */
   if (out->nfields > FIELD_CONTACT_PRESSURE) PetscCall(RollerContactPressure(ctx, ctx->contact, out->field[FIELD_CONTACT_PRESSURE].vec));
 
-  PetscCall(DMSetOutputSequenceNumber(out->vdm, out->written, ctx->state.time));
-  PetscCall(DMSetOutputSequenceNumber(out->sdm, out->written, ctx->state.time));
-  if (out->pdm) PetscCall(DMSetOutputSequenceNumber(out->pdm, out->written, ctx->state.time));
+  PetscCall(DMSetOutputSequenceNumber(out->vdm, out->xdmf.written, ctx->state.time));
+  PetscCall(DMSetOutputSequenceNumber(out->sdm, out->xdmf.written, ctx->state.time));
+  if (out->pdm) PetscCall(DMSetOutputSequenceNumber(out->pdm, out->xdmf.written, ctx->state.time));
   for (PetscInt f = 0; f < out->nfields; ++f) PetscCall(VecView(out->field[f].vec, out->h5));
-  if (out->written == out->times_size) {
-    out->times_size = PetscMax(64, 2 * out->times_size);
-    PetscCall(PetscRealloc(sizeof(PetscReal) * out->times_size, &out->times));
+  if (out->xdmf.written == out->xdmf.size) {
+    out->xdmf.size = PetscMax(64, 2 * out->xdmf.size);
+    PetscCall(PetscRealloc(sizeof(PetscReal) * out->xdmf.size, &out->xdmf.times));
   }
-  out->times[out->written++] = ctx->state.time;
+  out->xdmf.times[out->xdmf.written++] = ctx->state.time;
   PetscCall(RollerLayoutUpdate(out));
   PetscCall(RollerXdmfAppend(ctx->comm, out));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode RollerOutputStep(Roller ctx, RollerOutput out)
+/* The successful end: the diagnostics series, the HDF5 file closed and renamed, the final index written. */
+static PetscErrorCode FieldsClose(Roller ctx, RollerOutput out)
 {
   PetscFunctionBeginUser;
+  PetscCall(RollerSeriesWrite(ctx, out->series, out->h5));
+  PetscCall(PetscViewerDestroy(&out->h5));
+  PetscCall(RollerXdmfClose(out));
+  PetscCall(RollerRenameFile(ctx->comm, out->h5_part, out->h5_path));
+  PetscCall(RollerXdmfWrite(ctx->comm, out, out->h5_path, out->xdmf.path));
+  PetscCall(RollerRemoveStale(ctx->comm, out->xdmf.part));
+  PetscCallMPI(MPI_Barrier(ctx->comm));
+  PetscFunctionReturn(0);
+}
+
+/* The observer: the diagnostics of every state, the fields every -output_every steps (a restart continues
+   after its step), the files completed at the end. */
+static PetscErrorCode MonitorFields(Roller ctx, RollerMonitorEvent event, void *mctx)
+{
+  RollerOutput out = (RollerOutput)mctx;
+
+  PetscFunctionBeginUser;
+  if (event == ROLLER_MONITOR_INITIAL && ctx->ck.restart[0]) PetscFunctionReturn(0);
+  if (event == ROLLER_MONITOR_FINAL) {
+    PetscCall(FieldsClose(ctx, out));
+    PetscFunctionReturn(0);
+  }
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_OUTPUT]));
-  if (out->csv_path[0]) PetscCall(RollerCsvRow(ctx, out));
-  if (out->h5) PetscCall(RollerSeriesAppend(ctx, &out->series));
-  if (out->h5 && ctx->state.step % out->every == 0) PetscCall(WriteFields(ctx, out));
+  PetscCall(RollerSeriesAppend(ctx, &out->series));
+  if (ctx->state.step % out->every == 0) PetscCall(WriteFields(ctx, out));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }
 
-/* The successful end: close the files, rename them to their final names, index the final HDF5 file. */
-PetscErrorCode RollerOutputDestroy(Roller ctx, RollerOutput *output)
+/* Frees the fields output; files a run did not complete stay F.part (the viewer closes the HDF5 file). */
+static PetscErrorCode MonitorFieldsDestroy(void **mctx)
 {
-  RollerOutput out = *output;
+  RollerOutput out = (RollerOutput)*mctx;
 
   PetscFunctionBeginUser;
   if (!out) PetscFunctionReturn(0);
-  if (out->csv_path[0]) PetscCall(RollerCsvClose(ctx, out));
-  if (out->h5) {
-    PetscCall(RollerSeriesWrite(ctx, out->series, out->h5));
-    PetscCall(PetscViewerDestroy(&out->h5));
-    PetscCall(RollerXdmfClose(out));
-    PetscCall(RollerRenameFile(ctx->comm, out->h5_part, out->h5_path));
-    PetscCall(RollerXdmfWrite(ctx->comm, out, out->h5_path, out->xmf_path));
-    PetscCall(RollerRemoveStale(ctx->comm, out->xmf_part));
-    PetscCallMPI(MPI_Barrier(ctx->comm));
-  }
+  PetscCall(PetscViewerDestroy(&out->h5));
+  PetscCall(RollerXdmfClose(out));
   for (PetscInt f = 0; f < out->nfields; ++f) PetscCall(VecDestroy(&out->field[f].vec));
   PetscCall(VecDestroy(&out->velocity));
   PetscCall(VecDestroy(&out->count));
@@ -274,9 +266,40 @@ PetscErrorCode RollerOutputDestroy(Roller ctx, RollerOutput *output)
   PetscCall(DMDestroy(&out->vdm));
   PetscCall(DMDestroy(&out->sdm));
   PetscCall(DMDestroy(&out->pdm));
-  PetscCall(PetscFree(out->times));
+  PetscCall(PetscFree(out->xdmf.times));
   PetscCall(RollerSeriesDestroy(&out->series));
   PetscCall(PetscFree(out));
-  *output = NULL;
+  *mctx = NULL;
+  PetscFunctionReturn(0);
+}
+
+/* The outputs the options ask for, each set as an observer of the run: -monitor_csv F (output_csv.c),
+   -output F.h5 every -output_every steps. After a restart has read its step, so that the CSV continues it. */
+PetscErrorCode RollerOutputSetUp(Roller ctx)
+{
+  char      csv[PETSC_MAX_PATH_LEN] = "", h5[PETSC_MAX_PATH_LEN] = "";
+  PetscInt  every   = 10;
+  PetscBool has_csv = PETSC_FALSE, has_h5 = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(ctx->comm, NULL, "Roller: output", NULL);
+  PetscCall(PetscOptionsString("-monitor_csv", "One CSV row per step: step,t,R,alpha,energy,contact_nodes,contact_force,gap_min,qp_iterations,kkt_residual,theta", NULL, csv, csv, sizeof(csv), &has_csv));
+  PetscCall(PetscOptionsString("-output", "Fields to this HDF5 file, with an XDMF index beside it (F.h5 -> F.xmf)", NULL, h5, h5, sizeof(h5), &has_h5));
+  PetscCall(PetscOptionsInt("-output_every", "Write fields every N steps", NULL, every, &every, NULL));
+  PetscOptionsEnd();
+  PetscCheck(every > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-output_every %" PetscInt_FMT " must be > 0", every);
+  PetscCheck(!has_csv || csv[0], ctx->comm, PETSC_ERR_ARG_WRONG, "-monitor_csv needs a file name");
+  PetscCheck(!has_h5 || h5[0], ctx->comm, PETSC_ERR_ARG_WRONG, "-output needs a file name");
+  if (csv[0]) PetscCall(RollerCsvMonitorSetUp(ctx, csv));
+  if (h5[0]) {
+    RollerOutput out;
+
+    PetscCall(PetscNew(&out));
+    out->every   = every;
+    out->xdmf.fd = -1;
+    PetscCall(PetscStrncpy(out->h5_path, h5, sizeof(out->h5_path)));
+    PetscCall(RollerMonitorSet(ctx, MonitorFields, out, MonitorFieldsDestroy));
+    PetscCall(FieldsCreate(ctx, out));
+  }
   PetscFunctionReturn(0);
 }

@@ -1,7 +1,7 @@
-/* Private to the output*.c files: the output object (CSV, HDF5 fields, XDMF index) and the helpers the
-   files share. One concern a file: output.c the fields and the object's life, output_csv.c the CSV,
-   output_xdmf.c the HDF5 layout and the XDMF index (the file handling they share with the
-   checkpoint is output_files.c, declared in roller_impl.h). */
+/* Private to the output*.c files: the fields output (HDF5 fields, XDMF index) and the helpers the files
+   share. One concern a file: output.c the fields and their observer, output_csv.c the CSV and its observer,
+   output_xdmf.c the HDF5 layout and the XDMF index (the file handling they share with the checkpoint is
+   output_files.c, declared in io.h). */
 #ifndef ROLLER_IO_OUTPUT_H
 #define ROLLER_IO_OUTPUT_H
 
@@ -32,20 +32,24 @@ typedef struct {
    at the end, and out->nfields counts those in use: the index and the checks follow the table. */
 enum { FIELD_DISPLACEMENT, FIELD_LAB, FIELD_VELOCITY, FIELD_STRESS, FIELD_CONTACT_PRESSURE, MAX_FIELDS };
 
-struct _n_RollerOutput {
-  /* CSV: written to csv_part, renamed to csv_path at the end */
-  char  csv_path[PETSC_MAX_PATH_LEN], csv_part[PETSC_MAX_PATH_LEN], csv_old[PETSC_MAX_PATH_LEN];
-  FILE *csv; /* rank 0 only */
+/* The XDMF index of the HDF5 file: path (written as part, grown in place by RollerXdmfAppend), the steps
+   written so far and their times, the mesh datasets every step's grid refers to. */
+typedef struct {
+  char       path[PETSC_MAX_PATH_LEN], part[PETSC_MAX_PATH_LEN];
+  int        fd;   /* rank 0: the open part, grown in place by RollerXdmfAppend (-1: not yet created) */
+  off_t      tail; /* where its closing tags start */
+  PetscInt   written, size;
+  PetscReal *times; /* t of every written step, the XDMF time values (size allocated) */
+  Dataset    vertices, cells;
+} RollerXdmf;
 
-  /* HDF5 h5_path (written as h5_part) and its index xmf_path (written as xmf_part) */
+/* The fields output (-output F.h5): the observer's context. */
+struct _n_RollerOutput {
+  /* HDF5 h5_path (written as h5_part) and its index */
   char        h5_path[PETSC_MAX_PATH_LEN], h5_part[PETSC_MAX_PATH_LEN];
-  char        xmf_path[PETSC_MAX_PATH_LEN], xmf_part[PETSC_MAX_PATH_LEN];
   PetscViewer h5;
-  int         xmf_fd;   /* rank 0: the open xmf_part, grown in place by XdmfAppend (-1: not yet created) */
-  off_t       xmf_tail; /* where its closing tags start */
-  PetscInt    every, written, times_size;
-  PetscReal  *times; /* t of every written step, the XDMF time values */
-  Dataset     vertices, cells;
+  PetscInt    every;
+  RollerXdmf  xdmf;
 
   /* Output spaces on the same mesh: vdm P1 with 3 components, sdm and pdm (contact pressure) P1 scalar */
   DM           vdm, sdm, pdm;
@@ -64,10 +68,5 @@ PETSC_INTERN PetscErrorCode RollerLayoutUpdate(RollerOutput);
 PETSC_INTERN PetscErrorCode RollerXdmfWrite(MPI_Comm, RollerOutput, const char[], const char[]);
 PETSC_INTERN PetscErrorCode RollerXdmfAppend(MPI_Comm, RollerOutput);
 PETSC_INTERN PetscErrorCode RollerXdmfClose(RollerOutput);
-
-/* output_csv.c */
-PETSC_INTERN PetscErrorCode RollerCsvOpen(Roller, RollerOutput);
-PETSC_INTERN PetscErrorCode RollerCsvRow(Roller, RollerOutput);
-PETSC_INTERN PetscErrorCode RollerCsvClose(Roller, RollerOutput);
 
 #endif

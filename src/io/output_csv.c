@@ -1,79 +1,142 @@
 /* The monitor CSV (docs/model.md section 6.1): one row per step, %.17g so that it round-trips; written as
-   F.part and renamed at the end; a restart continues the rows of the run it restarts. Rank 0 writes. */
+   F.part and renamed at the successful end; a restart continues the rows of the run it restarts. Rank 0
+   writes. -monitor_csv F makes it an observer of the run (RollerCsvMonitorSetUp). */
 #include "output.h"
+
+struct _n_RollerCsv {
+  MPI_Comm  comm;
+  char      path[PETSC_MAX_PATH_LEN], part[PETSC_MAX_PATH_LEN], old[PETSC_MAX_PATH_LEN];
+  FILE     *fp;   /* rank 0 only */
+  PetscBool open; /* until RollerCsvClose */
+};
 
 /* A restart continues the CSV of the run it restarts: the rows up to its step are copied from the
    earlier file (complete, or .part if that run was killed) into the new .part, so that an interrupted and
    restarted run ends with the same rows as an uninterrupted one. Rank 0 reads and writes. */
-static PetscErrorCode CsvResume(Roller ctx, RollerOutput out)
+static PetscErrorCode CsvResume(RollerCsv csv, PetscInt step)
 {
   PetscMPIInt rank;
   char        line[4096];
   FILE       *src;
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
+  PetscCallMPI(MPI_Comm_rank(csv->comm, &rank));
   if (rank) PetscFunctionReturn(0);
-  src = fopen(out->csv_old, "r");
+  src = fopen(csv->old, "r");
   if (!src) {
-    PetscCall(PetscInfo(NULL, "-restart: no earlier %s to continue; the CSV starts after step %" PetscInt_FMT "\n", out->csv_path, ctx->state.step));
+    PetscCall(PetscInfo(NULL, "-restart: no earlier %s to continue; the CSV starts after step %" PetscInt_FMT "\n", csv->path, step));
     PetscFunctionReturn(0);
   }
-  PetscCheck(fgets(line, sizeof(line), src), PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-monitor_csv %s: empty file, cannot continue it after -restart", out->csv_path);
+  PetscCheck(fgets(line, sizeof(line), src), PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-monitor_csv %s: empty file, cannot continue it after -restart", csv->path);
   while (fgets(line, sizeof(line), src)) {
-    if (atol(line) > (long)ctx->state.step) break;
-    PetscCheck(fputs(line, out->csv) >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s: %s", out->csv_part, strerror(errno));
+    if (atol(line) > (long)step) break;
+    PetscCheck(fputs(line, csv->fp) >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s: %s", csv->part, strerror(errno));
   }
   fclose(src);
-  PetscCheck(remove(out->csv_old) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot remove %s: %s", out->csv_old, strerror(errno));
+  PetscCheck(remove(csv->old) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot remove %s: %s", csv->old, strerror(errno));
   PetscFunctionReturn(0);
 }
 
 /* Before a restart truncates the CSV: keep the earlier run's rows (complete file, or .part if it was killed). */
-static PetscErrorCode CsvKeepOld(MPI_Comm comm, RollerOutput out)
+static PetscErrorCode CsvKeepOld(RollerCsv csv)
 {
   PetscMPIInt rank;
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0 && (rename(out->csv_path, out->csv_old) == 0 || rename(out->csv_part, out->csv_old) == 0)) PetscCall(PetscInfo(NULL, "-restart: continuing %s\n", out->csv_path));
-  PetscCallMPI(MPI_Barrier(comm));
+  PetscCallMPI(MPI_Comm_rank(csv->comm, &rank));
+  if (rank == 0 && (rename(csv->path, csv->old) == 0 || rename(csv->part, csv->old) == 0)) PetscCall(PetscInfo(NULL, "-restart: continuing %s\n", csv->path));
+  PetscCallMPI(MPI_Barrier(csv->comm));
   PetscFunctionReturn(0);
 }
 
-/* -monitor_csv F: F.part opened with the header (after keeping the rows a restart continues). */
-PetscErrorCode RollerCsvOpen(Roller ctx, RollerOutput out)
+/* -monitor_csv path: path.part opened with the header; a restart from step resume (>= 0) first copies the earlier
+   run's rows up to that step (resume < 0: a new run). */
+PetscErrorCode RollerCsvOpen(MPI_Comm comm, const char path[], PetscInt resume, RollerCsv *csv_out)
 {
+  RollerCsv csv;
+
   PetscFunctionBeginUser;
-  PetscCall(RollerJoinPath(out->csv_part, sizeof(out->csv_part), out->csv_path, ".part", "-monitor_csv"));
-  PetscCall(RollerJoinPath(out->csv_old, sizeof(out->csv_old), out->csv_path, ".old", "-monitor_csv"));
-  if (ctx->ck.restart[0]) PetscCall(CsvKeepOld(ctx->comm, out));
-  PetscCall(RollerRemoveStale(ctx->comm, out->csv_path));
-  PetscCall(PetscFOpen(ctx->comm, out->csv_part, "w", &out->csv));
-  PetscCall(PetscFPrintf(ctx->comm, out->csv, "step,t,R,alpha,energy,contact_nodes,contact_force,gap_min,qp_iterations,kkt_residual,theta\n"));
-  if (ctx->ck.restart[0]) PetscCall(CsvResume(ctx, out));
+  PetscCall(PetscNew(&csv));
+  *csv_out  = csv;
+  csv->comm = comm;
+  PetscCall(PetscStrncpy(csv->path, path, sizeof(csv->path)));
+  PetscCall(RollerJoinPath(csv->part, sizeof(csv->part), path, ".part", "-monitor_csv"));
+  PetscCall(RollerJoinPath(csv->old, sizeof(csv->old), path, ".old", "-monitor_csv"));
+  if (resume >= 0) PetscCall(CsvKeepOld(csv));
+  PetscCall(RollerRemoveStale(comm, csv->path));
+  PetscCall(PetscFOpen(comm, csv->part, "w", &csv->fp));
+  csv->open = PETSC_TRUE;
+  PetscCall(PetscFPrintf(comm, csv->fp, "step,t,R,alpha,energy,contact_nodes,contact_force,gap_min,qp_iterations,kkt_residual,theta\n"));
+  if (resume >= 0) PetscCall(CsvResume(csv, resume));
   PetscFunctionReturn(0);
 }
 
-/* The row of the current step, flushed: a killed run keeps every row it printed. */
-PetscErrorCode RollerCsvRow(Roller ctx, RollerOutput out)
+/* The row of one step, flushed: a killed run keeps every row it printed. */
+PetscErrorCode RollerCsvRow(RollerCsv csv, PetscInt step, PetscReal t, const RollerStepInfo *info, PetscReal theta)
 {
-  const RollerStepInfo *info = &ctx->info;
-  PetscReal             theta;
-
   PetscFunctionBeginUser;
-  RollerTheta(ctx, ctx->state.time, &theta, NULL, NULL);
-  PetscCall(PetscFPrintf(ctx->comm, out->csv, "%" PetscInt_FMT ",%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%.17g,%.17g,%" PetscInt_FMT ",%.17g,%.17g\n", ctx->state.step, (double)ctx->state.time, (double)info->R, (double)info->alpha, (double)info->energy,
-                         info->contact_nodes, (double)info->contact_force, (double)info->gap_min, info->qp_iterations, (double)info->kkt_residual, (double)theta));
-  if (out->csv) PetscCheck(fflush(out->csv) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s: %s", out->csv_part, strerror(errno));
+  PetscCheck(csv->open, csv->comm, PETSC_ERR_ARG_WRONGSTATE, "-monitor_csv %s: a row after the file was closed", csv->path);
+  PetscCall(PetscFPrintf(csv->comm, csv->fp, "%" PetscInt_FMT ",%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%.17g,%.17g,%" PetscInt_FMT ",%.17g,%.17g\n", step, (double)t, (double)info->R, (double)info->alpha, (double)info->energy, info->contact_nodes,
+                         (double)info->contact_force, (double)info->gap_min, info->qp_iterations, (double)info->kkt_residual, (double)theta));
+  if (csv->fp) PetscCheck(fflush(csv->fp) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s: %s", csv->part, strerror(errno));
   PetscFunctionReturn(0);
 }
 
 /* The successful end: F.part becomes F. */
-PetscErrorCode RollerCsvClose(Roller ctx, RollerOutput out)
+PetscErrorCode RollerCsvClose(RollerCsv csv)
 {
   PetscFunctionBeginUser;
-  PetscCall(PetscFClose(ctx->comm, out->csv));
-  PetscCall(RollerRenameFile(ctx->comm, out->csv_part, out->csv_path));
+  if (!csv->open) PetscFunctionReturn(0);
+  PetscCall(PetscFClose(csv->comm, csv->fp));
+  csv->fp   = NULL;
+  csv->open = PETSC_FALSE;
+  PetscCall(RollerRenameFile(csv->comm, csv->part, csv->path));
+  PetscFunctionReturn(0);
+}
+
+/* Frees the writer; a file not closed by RollerCsvClose (a run that did not end) stays F.part. */
+PetscErrorCode RollerCsvDestroy(RollerCsv *csv)
+{
+  PetscFunctionBeginUser;
+  if (!*csv) PetscFunctionReturn(0);
+  if ((*csv)->open) PetscCall(PetscFClose((*csv)->comm, (*csv)->fp));
+  PetscCall(PetscFree(*csv));
+  PetscFunctionReturn(0);
+}
+
+/* The observer: a row for every state (a restart continues after its row), the rename at the end. */
+static PetscErrorCode MonitorCsv(Roller ctx, RollerMonitorEvent event, void *mctx)
+{
+  RollerCsv csv = (RollerCsv)mctx;
+  PetscReal theta;
+
+  PetscFunctionBeginUser;
+  if (event == ROLLER_MONITOR_INITIAL && ctx->ck.restart[0]) PetscFunctionReturn(0);
+  if (event == ROLLER_MONITOR_FINAL) {
+    PetscCall(RollerCsvClose(csv));
+    PetscFunctionReturn(0);
+  }
+  PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_OUTPUT]));
+  RollerTheta(ctx, ctx->state.time, &theta, NULL, NULL);
+  PetscCall(RollerCsvRow(csv, ctx->state.step, ctx->state.time, &ctx->info, theta));
+  PetscCall(PetscLogStagePop());
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode MonitorCsvDestroy(void **mctx)
+{
+  PetscFunctionBeginUser;
+  PetscCall(RollerCsvDestroy((RollerCsv *)mctx));
+  PetscFunctionReturn(0);
+}
+
+/* -monitor_csv path: opened now (after a restart has read its step), a row for every state from then on. */
+PetscErrorCode RollerCsvMonitorSetUp(Roller ctx, const char path[])
+{
+  RollerCsv csv;
+
+  PetscFunctionBeginUser;
+  PetscCall(RollerCsvOpen(ctx->comm, path, ctx->ck.restart[0] ? ctx->state.step : -1, &csv));
+  PetscCall(RollerMonitorSet(ctx, MonitorCsv, csv, MonitorCsvDestroy));
   PetscFunctionReturn(0);
 }

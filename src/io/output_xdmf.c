@@ -17,9 +17,9 @@ PetscErrorCode RollerXdmfPaths(RollerOutput out)
   slash = strrchr(base, '/');
   dot   = strrchr(base, '.');
   if (dot && dot > (slash ? slash + 1 : base)) base[dot - base] = '\0';
-  PetscCall(RollerJoinPath(out->xmf_path, sizeof(out->xmf_path), base, ".xmf", "-output"));
-  PetscCall(RollerJoinPath(out->xmf_part, sizeof(out->xmf_part), base, ".part.xmf", "-output"));
-  PetscCheck(strcmp(out->xmf_path, out->h5_path), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "-output %s: the fields and their XDMF index would have the same name; use F.h5", out->h5_path);
+  PetscCall(RollerJoinPath(out->xdmf.path, sizeof(out->xdmf.path), base, ".xmf", "-output"));
+  PetscCall(RollerJoinPath(out->xdmf.part, sizeof(out->xdmf.part), base, ".part.xmf", "-output"));
+  PetscCheck(strcmp(out->xdmf.path, out->h5_path), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "-output %s: the fields and their XDMF index would have the same name; use F.h5", out->h5_path);
   PetscFunctionReturn(0);
 }
 
@@ -58,7 +58,8 @@ PetscErrorCode RollerLayoutUpdate(RollerOutput out)
     Dataset *d = &out->field[f].data;
 
     PetscCall(RollerDatasetQuery(out->h5, d->path, d));
-    PetscCheck(d->ndims >= 2 && d->dims[0] == (hsize_t)out->written && d->dims[1] == out->vertices.dims[0], PETSC_COMM_SELF, PETSC_ERR_LIB, "Dataset %s does not have %" PetscInt_FMT " steps of %d vertices", d->path, out->written, (int)out->vertices.dims[0]);
+    PetscCheck(d->ndims >= 2 && d->dims[0] == (hsize_t)out->xdmf.written && d->dims[1] == out->xdmf.vertices.dims[0], PETSC_COMM_SELF, PETSC_ERR_LIB, "Dataset %s does not have %" PetscInt_FMT " steps of %d vertices", d->path, out->xdmf.written,
+               (int)out->xdmf.vertices.dims[0]);
   }
   PetscFunctionReturn(0);
 }
@@ -114,9 +115,9 @@ static PetscErrorCode XdmfHead(FILE *fp, RollerOutput out, const char h5_name[])
 {
   PetscFunctionBeginUser;
   PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"2.0\">\n  <Domain Name=\"roller\">\n    "));
-  PetscCall(XmlDataItem(fp, h5_name, &out->cells, " Name=\"cells\""));
+  PetscCall(XmlDataItem(fp, h5_name, &out->xdmf.cells, " Name=\"cells\""));
   PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "    "));
-  PetscCall(XmlDataItem(fp, h5_name, &out->vertices, " Name=\"vertices\""));
+  PetscCall(XmlDataItem(fp, h5_name, &out->xdmf.vertices, " Name=\"vertices\""));
   PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "    <Grid Name=\"roller\" GridType=\"Collection\" CollectionType=\"Temporal\">\n"));
   PetscFunctionReturn(0);
 }
@@ -127,7 +128,7 @@ static PetscErrorCode XdmfGrid(FILE *fp, RollerOutput out, const char h5_name[],
   const char *corners;
 
   PetscFunctionBeginUser;
-  switch (out->cells.dims[1]) {
+  switch (out->xdmf.cells.dims[1]) {
   case 3:
     corners = "Triangle";
     break;
@@ -135,11 +136,11 @@ static PetscErrorCode XdmfGrid(FILE *fp, RollerOutput out, const char h5_name[],
     corners = "Quadrilateral";
     break;
   default:
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_SUP, "Cells with %d corners in %s", (int)out->cells.dims[1], out->cells.path);
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_SUP, "Cells with %d corners in %s", (int)out->xdmf.cells.dims[1], out->xdmf.cells.path);
   }
-  PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "      <Grid Name=\"step %" PetscInt_FMT "\" GridType=\"Uniform\">\n        <Time Value=\"%.17g\"/>\n", k, (double)out->times[k]));
-  PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "        <Topology TopologyType=\"%s\" NumberOfElements=\"%llu\"><DataItem Reference=\"XML\">/Xdmf/Domain/DataItem[@Name=\"cells\"]</DataItem></Topology>\n", corners, (unsigned long long)out->cells.dims[0]));
-  PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "        <Geometry GeometryType=\"%s\"><DataItem Reference=\"XML\">/Xdmf/Domain/DataItem[@Name=\"vertices\"]</DataItem></Geometry>\n", out->vertices.dims[1] == 3 ? "XYZ" : "XY"));
+  PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "      <Grid Name=\"step %" PetscInt_FMT "\" GridType=\"Uniform\">\n        <Time Value=\"%.17g\"/>\n", k, (double)out->xdmf.times[k]));
+  PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "        <Topology TopologyType=\"%s\" NumberOfElements=\"%llu\"><DataItem Reference=\"XML\">/Xdmf/Domain/DataItem[@Name=\"cells\"]</DataItem></Topology>\n", corners, (unsigned long long)out->xdmf.cells.dims[0]));
+  PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "        <Geometry GeometryType=\"%s\"><DataItem Reference=\"XML\">/Xdmf/Domain/DataItem[@Name=\"vertices\"]</DataItem></Geometry>\n", out->xdmf.vertices.dims[1] == 3 ? "XYZ" : "XY"));
   for (PetscInt f = 0; f < out->nfields; ++f) {
     const char *name;
 
@@ -166,7 +167,7 @@ PetscErrorCode RollerXdmfWrite(MPI_Comm comm, RollerOutput out, const char h5_fi
   PetscCall(RollerJoinPath(tmp, sizeof(tmp), xmf, ".tmp", "-output"));
   PetscCall(PetscFOpen(PETSC_COMM_SELF, tmp, "w", &fp));
   PetscCall(XdmfHead(fp, out, h5_name));
-  for (PetscInt k = 0; k < out->written; ++k) PetscCall(XdmfGrid(fp, out, h5_name, k));
+  for (PetscInt k = 0; k < out->xdmf.written; ++k) PetscCall(XdmfGrid(fp, out, h5_name, k));
   PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%s", xdmf_tail));
   PetscCall(PetscFClose(PETSC_COMM_SELF, fp));
   PetscCheck(rename(tmp, xmf) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot rename %s to %s: %s", tmp, xmf, strerror(errno));
@@ -192,7 +193,7 @@ static PetscErrorCode WriteAt(int fd, const char path[], const char *buf, size_t
 /* After every field write, the running index of the .part HDF5 file grows by the new step in place, so
    writing N steps costs O(N), not O(N^2) as rewriting it would. The first step creates it whole under a
    temporary name and renames it (no reader sees it empty); it stays open on rank 0, and every later step
-   overwrites the fixed tail (the closing tags, at out->xmf_tail) with its Grid followed by the tail, in
+   overwrites the fixed tail (the closing tags, at out->xdmf.tail) with its Grid followed by the tail, in
    one write, so the file is a complete index after every step. Each Grid states the datasets' shapes as
    they were when it was written (the steps dimension grows; readers take its HyperSlab, inside them). */
 PetscErrorCode RollerXdmfAppend(MPI_Comm comm, RollerOutput out)
@@ -208,24 +209,24 @@ PetscErrorCode RollerXdmfAppend(MPI_Comm comm, RollerOutput out)
   if (rank) PetscFunctionReturn(0);
   PetscCall(XdmfH5Name(out->h5_part, &h5_name));
   ms = open_memstream(&buf, &len);
-  PetscCheck(ms, PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot build the XDMF index %s in memory: %s", out->xmf_part, strerror(errno));
-  if (out->xmf_fd < 0) {
+  PetscCheck(ms, PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot build the XDMF index %s in memory: %s", out->xdmf.part, strerror(errno));
+  if (out->xdmf.fd < 0) {
     PetscCall(XdmfHead(ms, out, h5_name));
-    for (PetscInt k = 0; k < out->written; ++k) PetscCall(XdmfGrid(ms, out, h5_name, k));
-  } else PetscCall(XdmfGrid(ms, out, h5_name, out->written - 1));
+    for (PetscInt k = 0; k < out->xdmf.written; ++k) PetscCall(XdmfGrid(ms, out, h5_name, k));
+  } else PetscCall(XdmfGrid(ms, out, h5_name, out->xdmf.written - 1));
   PetscCall(PetscFPrintf(PETSC_COMM_SELF, ms, "%s", xdmf_tail));
-  PetscCheck(fclose(ms) == 0 && buf, PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot build the XDMF index %s in memory", out->xmf_part);
-  if (out->xmf_fd < 0) {
+  PetscCheck(fclose(ms) == 0 && buf, PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot build the XDMF index %s in memory", out->xdmf.part);
+  if (out->xdmf.fd < 0) {
     char tmp[PETSC_MAX_PATH_LEN];
 
-    PetscCall(RollerJoinPath(tmp, sizeof(tmp), out->xmf_part, ".tmp", "-output"));
-    out->xmf_fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0666);
-    PetscCheck(out->xmf_fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot create the XDMF index %s: %s", tmp, strerror(errno));
-    PetscCall(WriteAt(out->xmf_fd, tmp, buf, len, 0));
-    PetscCheck(rename(tmp, out->xmf_part) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot rename %s to %s: %s", tmp, out->xmf_part, strerror(errno));
-    out->xmf_tail = 0;
-  } else PetscCall(WriteAt(out->xmf_fd, out->xmf_part, buf, len, out->xmf_tail));
-  out->xmf_tail += (off_t)(len - strlen(xdmf_tail));
+    PetscCall(RollerJoinPath(tmp, sizeof(tmp), out->xdmf.part, ".tmp", "-output"));
+    out->xdmf.fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0666);
+    PetscCheck(out->xdmf.fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot create the XDMF index %s: %s", tmp, strerror(errno));
+    PetscCall(WriteAt(out->xdmf.fd, tmp, buf, len, 0));
+    PetscCheck(rename(tmp, out->xdmf.part) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot rename %s to %s: %s", tmp, out->xdmf.part, strerror(errno));
+    out->xdmf.tail = 0;
+  } else PetscCall(WriteAt(out->xdmf.fd, out->xdmf.part, buf, len, out->xdmf.tail));
+  out->xdmf.tail += (off_t)(len - strlen(xdmf_tail));
   free(buf); /* open_memstream's, from malloc */
   PetscFunctionReturn(0);
 }
@@ -234,7 +235,7 @@ PetscErrorCode RollerXdmfAppend(MPI_Comm comm, RollerOutput out)
 PetscErrorCode RollerXdmfClose(RollerOutput out)
 {
   PetscFunctionBeginUser;
-  if (out->xmf_fd >= 0) PetscCheck(close(out->xmf_fd) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot close the XDMF index %s: %s", out->xmf_part, strerror(errno));
-  out->xmf_fd = -1;
+  if (out->xdmf.fd >= 0) PetscCheck(close(out->xdmf.fd) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot close the XDMF index %s: %s", out->xdmf.part, strerror(errno));
+  out->xdmf.fd = -1;
   PetscFunctionReturn(0);
 }

@@ -1,6 +1,6 @@
 /* The annulus mesh (docs/model.md section 3): gmsh, either in-process through its C API or a user's .msh file, read
    into DMPlex; the labels "inner" (Gamma_D) and "outer" (Gamma_C); the checks that the mesh really is a
-   triangulated annulus about the origin; the measures of the distributed mesh. */
+   triangulated annulus about the origin; the measures of the distributed mesh; the mesh options. */
 #include "mesh/mesh.h"
 #include <gmshc.h>
 
@@ -72,6 +72,28 @@ static PetscErrorCode RollerMeshCheckGroups(Roller ctx, const char *what, const 
   for (int g = 0; g < ROLLER_NUM_GROUPS; ++g)
     PetscCheck(groups->tags[g] >= 0, ctx->comm, PETSC_ERR_FILE_UNEXPECTED, "%s: no %s physical group named \"%s\" (physical groups found: %s); Roller needs curves \"inner\" and \"outer\" and surface \"body\"", what, roller_group_dims[g] == 1 ? "curve" : "surface", roller_group_names[g],
                groups->found[0] ? groups->found : "none");
+  PetscFunctionReturn(0);
+}
+
+/* The mesh options, one block for the mesh layer (the partition's and the measures' too). */
+PetscErrorCode RollerMeshSetFromOptions(Roller ctx)
+{
+  RollerMesh *mesh = &ctx->mesh;
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(ctx->comm, NULL, "Roller: geometry and mesh", NULL);
+  PetscCall(PetscOptionsReal("-mesh_h", "Edge length of the gmsh annulus mesh (0: chosen from -ts_phase_error)", NULL, mesh->h, &mesh->h, &mesh->h_set));
+  PetscCall(PetscOptionsString("-dm_plex_filename", "gmsh mesh file (physical groups inner, outer, body) instead of -mesh_h", NULL, mesh->file, mesh->file, sizeof(mesh->file), NULL));
+  PetscCall(PetscOptionsReal("-r_inner", "Inner radius r_D (Gamma_D, driven)", NULL, mesh->r_inner, &mesh->r_inner, &mesh->radii_set[0]));
+  PetscCall(PetscOptionsReal("-r_outer", "Outer radius r_C (Gamma_C, contact)", NULL, mesh->r_outer, &mesh->r_outer, &mesh->radii_set[1]));
+  PetscCall(PetscOptionsBool("-partition_view", "Print the partition sizes and edge cut", NULL, mesh->partition_view, &mesh->partition_view, NULL));
+  PetscCall(PetscOptionsBool("-mesh_gmsh_verbose", "Let gmsh print its progress (in-process mesh, no -dm_plex_filename)", NULL, mesh->gmsh_verbose, &mesh->gmsh_verbose, NULL));
+  PetscCall(PetscOptionsBool("-mesh_view_info", "Print the global vertex, cell and boundary counts, area and boundary lengths", NULL, mesh->view_info, &mesh->view_info, NULL));
+  PetscOptionsEnd();
+  PetscCheck(mesh->h >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_h %g must be > 0 (or 0: chosen from -ts_phase_error)", (double)mesh->h);
+  mesh->h_set = (PetscBool)(mesh->h > 0);
+  PetscCheck(mesh->r_inner > 0 && mesh->r_inner < mesh->r_outer, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-r_inner %g and -r_outer %g must satisfy 0 < r_inner < r_outer", (double)mesh->r_inner, (double)mesh->r_outer);
+  PetscCheck(mesh->file[0] || !mesh->h_set || mesh->h < mesh->r_outer - mesh->r_inner, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_h %g must be smaller than the annulus width r_outer - r_inner = %g", (double)mesh->h, (double)(mesh->r_outer - mesh->r_inner));
   PetscFunctionReturn(0);
 }
 
@@ -229,14 +251,11 @@ static PetscErrorCode RollerMeshCheckAnnulus(Roller ctx, const char *what)
 
   PetscFunctionBeginUser;
   for (int i = 0; i < 2; ++i) {
-    PetscBool set;
-
     PetscCall(RollerMeshRadii(ctx, names[i], &r_min, &r_max));
     radius[i] = 0.5 * (r_min + r_max);
     PetscCheck(r_max - r_min <= ROLLER_MESH_RTOL * radius[i], ctx->comm, PETSC_ERR_FILE_UNEXPECTED, "%s: the \"%s\" vertices are not on one circle about the origin: |x| ranges over [%.10g, %.10g], relative spread %g, allowed %g", what, names[i], (double)r_min, (double)r_max, (double)((r_max - r_min) / radius[i]), ROLLER_MESH_RTOL);
     if (!ctx->mesh.file[0]) continue;
-    PetscCall(PetscOptionsHasName(NULL, NULL, options[i], &set));
-    PetscCheck(!set || PetscAbsReal(*given[i] - radius[i]) <= ROLLER_MESH_RTOL * radius[i], ctx->comm, PETSC_ERR_ARG_INCOMP, "%s %g disagrees with the radius %.10g of the \"%s\" circle of %s (allowed relative difference %g); drop the option or fix the mesh", options[i], (double)*given[i], (double)radius[i], names[i], what, ROLLER_MESH_RTOL);
+    PetscCheck(!ctx->mesh.radii_set[i] || PetscAbsReal(*given[i] - radius[i]) <= ROLLER_MESH_RTOL * radius[i], ctx->comm, PETSC_ERR_ARG_INCOMP, "%s %g disagrees with the radius %.10g of the \"%s\" circle of %s (allowed relative difference %g); drop the option or fix the mesh", options[i], (double)*given[i], (double)radius[i], names[i], what, ROLLER_MESH_RTOL);
   }
   PetscCheck(radius[0] < radius[1], ctx->comm, PETSC_ERR_FILE_UNEXPECTED, "%s: the \"inner\" radius %g must be smaller than the \"outer\" radius %g", what, (double)radius[0], (double)radius[1]);
   PetscCall(RollerMeshRadii(ctx, NULL, &r_min, &r_max));
@@ -253,18 +272,14 @@ PetscErrorCode RollerMeshCreate(Roller ctx)
   char             dir[PETSC_MAX_PATH_LEN] = "", file[PETSC_MAX_PATH_LEN], what[PETSC_MAX_PATH_LEN + 64];
   RollerMeshGroups groups;
   PetscMPIInt      rank;
-  PetscBool        verbose = PETSC_FALSE;
 
   PetscFunctionBeginUser;
-  PetscOptionsBegin(ctx->comm, NULL, "Roller: mesh", NULL);
-  PetscCall(PetscOptionsBool("-mesh_gmsh_verbose", "Let gmsh print its progress (in-process mesh, no -dm_plex_filename)", NULL, verbose, &verbose, NULL));
-  PetscOptionsEnd();
   PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
   if (ctx->mesh.file[0]) {
     PetscCall(PetscStrncpy(file, ctx->mesh.file, sizeof(file)));
     PetscCall(PetscSNPrintf(what, sizeof(what), "-dm_plex_filename %s", ctx->mesh.file));
   } else {
-    PetscCall(RollerMeshGenerate(ctx, verbose, dir, file));
+    PetscCall(RollerMeshGenerate(ctx, ctx->mesh.gmsh_verbose, dir, file));
     PetscCall(PetscSNPrintf(what, sizeof(what), "gmsh annulus at -mesh_h %g", (double)ctx->mesh.h));
   }
   PetscCall(RollerMeshReadPhysicalNames(ctx, file, what, &groups));
@@ -302,17 +317,14 @@ PetscErrorCode RollerMeshOwnedMask(DM dm, PetscBool **owned)
    owner); -mesh_view_info prints them. */
 PetscErrorCode RollerMeshMeasure(Roller ctx)
 {
-  DM        dm = ctx->mesh.dm;
-  DMLabel   labels[2];
-  PetscBool view      = PETSC_FALSE, *owned;
-  PetscInt  counts[4] = {0, 0, 0, 0}, counts_global[4]; /* vertices, cells, inner vertices, outer vertices */
-  PetscReal sums[3]   = {0, 0, 0}, sums_global[3];      /* area, inner length, outer length */
-  PetscInt  p_start, p_end, v_start, v_end, f_start, f_end, c_start, c_end;
+  DM         dm = ctx->mesh.dm;
+  DMLabel    labels[2];
+  PetscBool *owned;
+  PetscInt   counts[4] = {0, 0, 0, 0}, counts_global[4]; /* vertices, cells, inner vertices, outer vertices */
+  PetscReal  sums[3]   = {0, 0, 0}, sums_global[3];      /* area, inner length, outer length */
+  PetscInt   p_start, p_end, v_start, v_end, f_start, f_end, c_start, c_end;
 
   PetscFunctionBeginUser;
-  PetscOptionsBegin(ctx->comm, NULL, "Roller: distributed mesh", NULL);
-  PetscCall(PetscOptionsBool("-mesh_view_info", "Print the global vertex, cell and boundary counts, area and boundary lengths", NULL, view, &view, NULL));
-  PetscOptionsEnd();
   PetscCall(DMGetLabel(dm, "inner", &labels[0]));
   PetscCall(DMGetLabel(dm, "outer", &labels[1]));
   PetscCheck(labels[0] && labels[1], ctx->comm, PETSC_ERR_ARG_WRONGSTATE, "The mesh has no \"inner\"/\"outer\" labels: call RollerMeshCreate first");
@@ -342,7 +354,7 @@ PetscErrorCode RollerMeshMeasure(Roller ctx)
   PetscCall(PetscFree(owned));
   PetscCall(MPIU_Allreduce(counts, counts_global, 4, MPIU_INT, MPI_SUM, ctx->comm));
   PetscCall(MPIU_Allreduce(sums, sums_global, 3, MPIU_REAL, MPI_SUM, ctx->comm));
-  if (view)
+  if (ctx->mesh.view_info)
     PetscCall(PetscPrintf(ctx->comm, "mesh: vertices %" PetscInt_FMT " cells %" PetscInt_FMT " inner_vertices %" PetscInt_FMT " outer_vertices %" PetscInt_FMT " area %.15g inner_length %.15g outer_length %.15g\n", counts_global[0], counts_global[1], counts_global[2], counts_global[3], (double)sums_global[0], (double)sums_global[1], (double)sums_global[2]));
   PetscFunctionReturn(0);
 }

@@ -1,7 +1,7 @@
 /* The mesh layer: ctx->mesh.dm becomes the distributed annulus with labels "inner" (Gamma_D) and "outer"
    (Gamma_C), each marking faces and their closure (vertices) with value 1. With a mesh file, r_inner and
    r_outer are measured from it.
-     mesh.c       gmsh annulus (C API or file), labels, validation, -mesh_* options
+     mesh.c       gmsh annulus (C API or file), labels, validation, the mesh options (-mesh_*, -r_*, -partition_view)
      partition.c  METIS partition of the cell graph, distribution
      geometry.c   curved (isoparametric P2) boundary */
 #ifndef ROLLER_MESH_H
@@ -9,6 +9,7 @@
 
 #include <roller_impl.h>
 
+PETSC_INTERN PetscErrorCode RollerMeshSetFromOptions(Roller);
 PETSC_INTERN PetscErrorCode RollerMeshCreate(Roller);
 PETSC_INTERN PetscErrorCode RollerMeshDistribute(Roller);
 PETSC_INTERN PetscErrorCode RollerMeshMeasure(Roller);

@@ -97,21 +97,34 @@ static PetscErrorCode RollerPartitionView(Roller ctx, const char *type, PetscInt
 }
 
 /* DMPlexDistribute answers its own -partition_view by printing the whole partition label, the migration SF
-   and the point renumbering (hundreds of thousands of lines on the paper's mesh). Roller's -partition_view
-   means the summary of RollerPartitionView, so the option is hidden from PETSc during the distribution. */
-static PetscErrorCode RollerDistributeQuietly(DM dm, DM *dm_dist)
+   and the point renumbering (hundreds of thousands of lines on the paper's mesh): it looks the option up
+   under the DM's options prefix, in the DM's options database (the label, the SF) and in the global one (the
+   renumbering). Roller's -partition_view (ctx->mesh.partition_view, read with the mesh options) means the
+   summary of RollerPartitionView, so with it the DM distributes under a private prefix and a private options
+   database that holds only what else DMPlexDistribute reads there, the partitioner graph's -dm_plex_csr_alg:
+   the options database itself is left as it is. */
+static PetscErrorCode RollerDistributeQuietly(Roller ctx, DM dm, DM *dm_dist)
 {
-  char      value[PETSC_MAX_PATH_LEN] = "";
-  PetscBool set;
+  const char   prefix[] = "roller_distribute_";
+  PetscOptions options;
+  char         alg[64], name[64];
+  PetscBool    set;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsGetString(NULL, NULL, "-partition_view", value, sizeof(value), &set));
-  if (set) PetscCall(PetscOptionsClearValue(NULL, "-partition_view"));
-  PetscCall(DMPlexDistribute(dm, 0, NULL, dm_dist));
-  if (set) {
-    PetscCall(PetscOptionsSetValue(NULL, "-partition_view", value[0] ? value : NULL));
-    PetscCall(PetscOptionsHasName(NULL, NULL, "-partition_view", &set)); /* marks it used for -options_left */
+  if (!ctx->mesh.partition_view) {
+    PetscCall(DMPlexDistribute(dm, 0, NULL, dm_dist));
+    PetscFunctionReturn(0);
   }
+  PetscCall(PetscOptionsCreate(&options));
+  PetscCall(PetscOptionsGetString(NULL, NULL, "-dm_plex_csr_alg", alg, sizeof(alg), &set));
+  PetscCall(PetscSNPrintf(name, sizeof(name), "-%sdm_plex_csr_alg", prefix));
+  if (set) PetscCall(PetscOptionsSetValue(options, name, alg));
+  PetscCall(PetscObjectSetOptions((PetscObject)dm, options));
+  PetscCall(PetscObjectSetOptionsPrefix((PetscObject)dm, prefix));
+  PetscCall(DMPlexDistribute(dm, 0, NULL, dm_dist));
+  PetscCall(PetscObjectSetOptionsPrefix((PetscObject)dm, NULL));
+  PetscCall(PetscObjectSetOptions((PetscObject)dm, NULL));
+  PetscCall(PetscOptionsDestroy(&options));
   PetscFunctionReturn(0);
 }
 
@@ -142,7 +155,7 @@ PetscErrorCode RollerMeshDistribute(Roller ctx)
     /* Copied: the partitioner may go with the serial DM below. */
     PetscCall(PetscPartitionerGetType(part, &part_type));
     PetscCall(PetscStrncpy(type, user_type ? part_type : "metis", sizeof(type)));
-    PetscCall(RollerDistributeQuietly(ctx->mesh.dm, &dm_dist));
+    PetscCall(RollerDistributeQuietly(ctx, ctx->mesh.dm, &dm_dist));
     if (dm_dist) {
       PetscCall(DMDestroy(&ctx->mesh.dm));
       ctx->mesh.dm = dm_dist;

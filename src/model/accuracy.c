@@ -10,7 +10,8 @@
             error accumulates: its phase error after T, calibrated on the exact axisymmetric reference, is
             C_k w_t T (h/L)^q_k with L = r_C - r_D; h makes it 0.7 P, which leaves 0.3 P for alpha's
             time error (measured <= 0.06 P) and the scatter of the calibration.
-   Both frequencies are Bessel-root problems of the annulus clamped at r_D and free at r_C. */
+   Both frequencies are Bessel-root problems of the annulus clamped at r_D and free at r_C, solved once for the
+   radii (ctx->modes): the h of the options' radii and the dt of the mesh's (a mesh file's own) share them. */
 #include "model/model.h"
 
 /* Calibration of the spatial phase error C_k w_t T (h/L)^q_k (docs/validation.md, "accurate defaults"):
@@ -70,18 +71,32 @@ static PetscErrorCode LowestRoot(Roller ctx, Determinant det, const char *what, 
   PetscFunctionReturn(0);
 }
 
-/* Angular frequencies of the breathing (P) and torsional (S) modes of the annulus at rest. */
+/* Angular frequencies of the breathing (P) and torsional (S) modes of the annulus at rest, computed when the
+   radii are not those of the last computation (the material is set once, before either). */
 PetscErrorCode RollerModeFrequencies(Roller ctx, PetscReal *w_breathing, PetscReal *w_torsion)
 {
   const PetscReal c_p = PetscSqrtReal((ctx->material.lambda + 2 * ctx->material.mu) / ctx->material.density), c_s = PetscSqrtReal(ctx->material.mu / ctx->material.density);
+  RollerModes    *modes = &ctx->modes;
   PetscReal       k;
 
   PetscFunctionBeginUser;
-  PetscCall(LowestRoot(ctx, BreathingDeterminant, "radial breathing", &k));
-  *w_breathing = k * c_p;
-  PetscCall(LowestRoot(ctx, TorsionDeterminant, "torsional", &k));
-  *w_torsion = k * c_s;
+  if (modes->r_inner != ctx->mesh.r_inner || modes->r_outer != ctx->mesh.r_outer) {
+    PetscCall(LowestRoot(ctx, BreathingDeterminant, "radial breathing", &k));
+    modes->breathing = k * c_p;
+    PetscCall(LowestRoot(ctx, TorsionDeterminant, "torsional", &k));
+    modes->torsion = k * c_s;
+    modes->r_inner = ctx->mesh.r_inner;
+    modes->r_outer = ctx->mesh.r_outer;
+  }
+  *w_breathing = modes->breathing;
+  *w_torsion   = modes->torsion;
   PetscFunctionReturn(0);
+}
+
+/* How a discretization parameter was chosen, for -ts_view and -info. */
+static const char *Source(PetscBool set, PetscBool restart)
+{
+  return restart ? "from the checkpoint" : (set ? "given" : "from -ts_phase_error");
 }
 
 /* The end time the error target refers to: -ts_max_time, at least one period of the fastest mode. */
@@ -127,13 +142,14 @@ PetscErrorCode RollerChooseTimeStep(Roller ctx)
   w = PetscMax(w_b, ctx->rotation.b);
   T = EndTime(ctx, w);
   if (!ctx->ts.dt_set) ctx->ts.dt = PetscSqrtReal(24.0 * ctx->ts.phase_error / (5.0 * w * w * w * T));
-  PetscCall(PetscInfo(NULL, "-ts_dt %g (%s): fastest excited mode w = %g (period %g, %s), T = %g, phase error target %g\n", (double)ctx->ts.dt, ctx->ts.dt_set ? "given" : "from -ts_phase_error", (double)w, (double)(2 * PETSC_PI / w),
-                      w_b >= ctx->rotation.b ? "radial breathing" : "forcing b", (double)T, (double)ctx->ts.phase_error));
+  PetscCall(PetscInfo(NULL, "-ts_dt %g (%s): fastest excited mode w = %g (period %g, %s), T = %g, phase error target %g\n", (double)ctx->ts.dt, Source(ctx->ts.dt_set, ctx->ts.dt_restart), (double)w, (double)(2 * PETSC_PI / w), w_b >= ctx->rotation.b ? "radial breathing" : "forcing b", (double)T,
+                      (double)ctx->ts.phase_error));
   if (ctx->ts.view) {
     const PetscReal phase = 5.0 * w * T * PetscSqr(w * ctx->ts.dt) / 24.0;
 
-    PetscCall(PetscPrintf(ctx->comm, "roller: P%" PetscInt_FMT "%s, %s -mesh_h %g, -ts_dt %g (%s), -coriolis_velocity %s\n", ctx->disc.degree, ctx->mesh.curved ? " curved" : "", ctx->mesh.file[0] ? "mesh file, not" : (ctx->mesh.h_set ? "given" : "from -ts_phase_error:"),
-                          (double)ctx->mesh.h, (double)ctx->ts.dt, ctx->ts.dt_set ? "given" : "from -ts_phase_error", RollerCoriolisVelocities[ctx->disc.coriolis]));
+    PetscCall(PetscPrintf(ctx->comm, "roller: P%" PetscInt_FMT "%s, %s -mesh_h %g, -ts_dt %g (%s), -coriolis_velocity %s\n", ctx->disc.degree, ctx->mesh.curved ? " curved" : "",
+                          ctx->mesh.file[0] ? "mesh file, not" : (ctx->mesh.h_set ? Source(PETSC_TRUE, ctx->mesh.h_restart) : "from -ts_phase_error:"), (double)ctx->mesh.h, (double)ctx->ts.dt, Source(ctx->ts.dt_set, ctx->ts.dt_restart),
+                          RollerCoriolisVelocities[ctx->disc.coriolis]));
     PetscCall(PetscPrintf(ctx->comm, "roller: fastest excited mode: %s, w = %g (period %g); torsional mode w_t = %g (period %g); end time %g; its phase error (5/24) w T (w dt)^2 = %.3g (target %g)\n", w_b >= ctx->rotation.b ? "radial breathing" : "the forcing b", (double)w, (double)(2 * PETSC_PI / w), (double)w_t, (double)(2 * PETSC_PI / w_t), (double)T, (double)phase,
                           (double)ctx->ts.phase_error));
   }

@@ -1,0 +1,104 @@
+/* Time stepping: its options (-ts_*, -quiet), the number of steps, and its observers on the console: the
+   -ts_monitor line of every step and the progress line (at most every 5 s, and at the last step). */
+#include "integrate/integrate.h"
+
+PetscErrorCode RollerTimeStepSetFromOptions(Roller ctx)
+{
+  PetscBool monitor_set;
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(ctx->comm, NULL, "Roller: time stepping", NULL);
+  PetscCall(PetscOptionsReal("-ts_dt", "Time step dt (0: chosen from -ts_phase_error)", NULL, ctx->ts.dt, &ctx->ts.dt, &ctx->ts.dt_set));
+  PetscCall(PetscOptionsReal("-ts_max_time", "End time", NULL, ctx->ts.max_time, &ctx->ts.max_time, NULL));
+  PetscCall(PetscOptionsReal("-ts_phase_error", "Accuracy target that sets the default -ts_dt and -mesh_h: phase error of the fastest excited mode at the end time", NULL, ctx->ts.phase_error, &ctx->ts.phase_error, NULL));
+  PetscCall(PetscOptionsBool("-ts_view", "Print the discretization (degree, h, dt, Coriolis velocity) and the rule that chose it (also with -ts_monitor)", NULL, ctx->ts.view, &ctx->ts.view, NULL));
+  PetscCall(PetscOptionsInt("-ts_max_steps", "Cap on the number of steps (-1: none)", NULL, ctx->ts.max_steps, &ctx->ts.max_steps, NULL));
+  PetscCall(PetscOptionsBool("-quiet", "Silence the progress line", NULL, ctx->ts.quiet, &ctx->ts.quiet, NULL));
+  PetscCall(PetscOptionsBool("-ts_monitor", "Print R, alpha, energy (and contact) every step", NULL, ctx->ts.monitor, &ctx->ts.monitor, &monitor_set));
+  PetscOptionsEnd();
+  if (monitor_set) ctx->ts.view = PETSC_TRUE; /* -ts_monitor in any form also views the discretization */
+  PetscCheck(ctx->ts.phase_error > 0 && ctx->ts.phase_error < 1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_phase_error %g must lie in (0, 1)", (double)ctx->ts.phase_error);
+  PetscCheck(ctx->ts.dt >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_dt %g must be > 0 (or 0: chosen from -ts_phase_error)", (double)ctx->ts.dt);
+  ctx->ts.dt_set = (PetscBool)(ctx->ts.dt > 0);
+  PetscCheck(ctx->ts.max_time >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_max_time %g must be >= 0", (double)ctx->ts.max_time);
+  PetscCheck(ctx->ts.max_steps >= -1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_max_steps %" PetscInt_FMT " must be >= 0 (or -1 for no cap)", ctx->ts.max_steps);
+  PetscFunctionReturn(0);
+}
+
+/* Number of steps: floor(max_time/dt) (to a rounding tolerance), capped by -ts_max_steps. None with -help, which
+   lists every option (with the solvers', which set-up has read): no need to run the scene. */
+PetscErrorCode RollerStepCount(Roller ctx, PetscInt *nsteps)
+{
+  PetscReal n = PetscFloorReal(ctx->ts.max_time / ctx->ts.dt + 1e-9);
+  PetscBool help;
+
+  PetscFunctionBeginUser;
+  if (ctx->ts.max_steps >= 0) n = PetscMin(n, (PetscReal)ctx->ts.max_steps);
+  *nsteps = (PetscInt)PetscMin(n, (PetscReal)PETSC_MAX_INT);
+  PetscCall(PetscOptionsHasHelp(NULL, &help));
+  if (help) *nsteps = 0;
+  PetscFunctionReturn(0);
+}
+
+/* -ts_monitor: the diagnostics of every state, the initial one too. */
+static PetscErrorCode MonitorLine(Roller ctx, RollerMonitorEvent event, void *mctx)
+{
+  const RollerStepInfo *info = &ctx->info;
+
+  PetscFunctionBeginUser;
+  if (event == ROLLER_MONITOR_FINAL) PetscFunctionReturn(0);
+  PetscCall(PetscPrintf(ctx->comm, "%5" PetscInt_FMT " t %-10.6g R %+.6e alpha %+.6e energy %.10e", ctx->state.step, (double)ctx->state.time, (double)info->R, (double)info->alpha, (double)info->energy));
+  if (ctx->contact)
+    PetscCall(PetscPrintf(ctx->comm, " contact %" PetscInt_FMT " force %.6e gap %+.3e its %" PetscInt_FMT " kkt %.2e", info->contact_nodes, (double)info->contact_force, (double)info->gap_min, info->qp_iterations, (double)info->kkt_residual));
+  PetscCall(PetscPrintf(ctx->comm, "\n"));
+  PetscFunctionReturn(0);
+}
+
+typedef struct {
+  PetscLogDouble start, last;
+} Progress;
+
+/* The progress line, unless -quiet: the clock starts at the initial state. */
+static PetscErrorCode MonitorProgress(Roller ctx, RollerMonitorEvent event, void *mctx)
+{
+  Progress      *p = (Progress *)mctx;
+  PetscInt       nsteps;
+  PetscLogDouble now;
+
+  PetscFunctionBeginUser;
+  PetscCall(RollerStepCount(ctx, &nsteps));
+  if (event == ROLLER_MONITOR_INITIAL) {
+    PetscCall(PetscTime(&p->start));
+    p->last = p->start;
+  }
+  if (event == ROLLER_MONITOR_FINAL || ctx->state.step == 0) PetscFunctionReturn(0);
+  PetscCall(PetscTime(&now));
+  if (now - p->last >= 5.0 || ctx->state.step == nsteps) {
+    const PetscLogDouble eta = (now - p->start) * (nsteps - ctx->state.step) / ctx->state.step;
+
+    PetscCall(PetscPrintf(ctx->comm, "roller: step %" PetscInt_FMT "/%" PetscInt_FMT " t = %g, %.1f s elapsed, ETA %.1f s\n", ctx->state.step, nsteps, (double)ctx->state.time, now - p->start, eta));
+    p->last = now;
+  }
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode ProgressDestroy(void **mctx)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(*mctx));
+  PetscFunctionReturn(0);
+}
+
+/* The console observers, first of all (their lines come before the step's files are written). */
+PetscErrorCode RollerTimeStepMonitorSetUp(Roller ctx)
+{
+  PetscFunctionBeginUser;
+  if (ctx->ts.monitor) PetscCall(RollerMonitorSet(ctx, MonitorLine, NULL, NULL));
+  if (!ctx->ts.quiet) {
+    Progress *p;
+
+    PetscCall(PetscNew(&p));
+    PetscCall(RollerMonitorSet(ctx, MonitorProgress, p, ProgressDestroy));
+  }
+  PetscFunctionReturn(0);
+}
