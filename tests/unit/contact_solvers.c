@@ -5,26 +5,28 @@ static const char help[] = "Unit test: every registered contact solver (contact/
                            "same with a shrunk candidate set (-contact_margin < 0): the re-solves end at it, without penetration.\n";
 
 #include "contact/contact_impl.h"
+#include "unit.h"
 
 /* The Roller with the obstacle in the static scene of docs/validation.md section 5 (depth 0.025 reached at
    t = 5, the one step of -static at t = 5), set up through the public API; -degree from the command line.
    (One per process: RollerCreate registers the log stages.) */
 static PetscErrorCode MakeRoller(Roller *ctx)
 {
+  /* -contact_pc_type: tao (tron)'s inner KSP (prefix contact_) preconditioned by a factorization. With the
+     default ILU, tron does not reach the 1e-12 tolerance on this stiff problem (A = K, no mass term) with P2: it
+     stops at 100000 iterations, with the code before the registry as well (-contact_solver tao -static -degree 2) */
+  const char *const scene[][2] = {
+    {"-mesh_h",          "0.1"     },
+    {"-obstacle",        NULL      },
+    {"-omega",           "0"       },
+    {"-static",          NULL      },
+    {"-ts_max_time",     "5"       },
+    {"-quiet",           NULL      },
+    {"-contact_pc_type", "cholesky"}
+  };
+
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsSetValue(NULL, "-mesh_h", "0.1"));
-  PetscCall(PetscOptionsSetValue(NULL, "-obstacle", NULL));
-  PetscCall(PetscOptionsSetValue(NULL, "-omega", "0"));
-  PetscCall(PetscOptionsSetValue(NULL, "-static", NULL));
-  PetscCall(PetscOptionsSetValue(NULL, "-ts_max_time", "5"));
-  PetscCall(PetscOptionsSetValue(NULL, "-quiet", NULL));
-  /* tao (tron): its inner KSP (prefix contact_) preconditioned by a factorization. With the default ILU,
-     tron does not reach the 1e-12 tolerance on this stiff problem (A = K, no mass term) with P2: it stops at
-     100000 iterations, with the code before the registry as well (-contact_solver tao -static -degree 2) */
-  PetscCall(PetscOptionsSetValue(NULL, "-contact_pc_type", "cholesky"));
-  PetscCall(RollerCreate(PETSC_COMM_WORLD, ctx));
-  PetscCall(RollerSetFromOptions(*ctx));
-  PetscCall(RollerSetUp(*ctx));
+  PetscCall(RollerUnitSetUp(scene, ROLLER_UNIT_COUNT(scene), ctx));
   PetscCheck((*ctx)->contact, PETSC_COMM_WORLD, PETSC_ERR_PLIB, "-obstacle did not create the contact layer");
   PetscFunctionReturn(0);
 }

@@ -4,12 +4,13 @@ static const char help[] = "Unit test: the curved (isoparametric P2) boundary of
                            "2 pi r_outer to O(h^4): relative error < 2e-3 (h/r_outer)^4 (run on two meshes, -mesh_h 0.1 and 0.05).\n";
 
 #include "model/model.h"
+#include "unit.h"
 
 /* The library's annulus with -degree 2, -mesh_h from the command line (one Roller per process: RollerCreate
    registers its log stages; the test runs on two meshes, two processes). */
 static PetscErrorCode Setup(Roller *ctx)
 {
-  const char *defaults[][2] = {
+  const char *const defaults[][2] = {
     {"-mesh_h", "0.1" },
     {"-ts_dt",  "0.01"},
     {"-omega",  "0"   }
@@ -17,15 +18,7 @@ static PetscErrorCode Setup(Roller *ctx)
 
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsSetValue(NULL, "-degree", "2"));
-  for (size_t i = 0; i < sizeof(defaults) / sizeof(defaults[0]); ++i) {
-    PetscBool set;
-
-    PetscCall(PetscOptionsHasName(NULL, NULL, defaults[i][0], &set));
-    if (!set) PetscCall(PetscOptionsSetValue(NULL, defaults[i][0], defaults[i][1]));
-  }
-  PetscCall(RollerCreate(PETSC_COMM_WORLD, ctx));
-  PetscCall(RollerSetFromOptions(*ctx));
-  PetscCall(RollerSetUp(*ctx));
+  PetscCall(RollerUnitSetUp(defaults, ROLLER_UNIT_COUNT(defaults), ctx));
   PetscFunctionReturn(0);
 }
 

@@ -7,6 +7,7 @@ static const char help[] = "Unit test of the output layer (src/io):\n"
 
 #include <roller.h>
 #include "io/io.h"
+#include "unit.h"
 #include <hdf5.h>
 #include <float.h>
 #include <math.h>
@@ -221,26 +222,26 @@ static PetscErrorCode ReadReals(hid_t file, const char path[], double v[], Petsc
 
 static PetscErrorCode TestFields(void)
 {
-  const char h5[] = "io_roundtrip.h5", xmf[] = "io_roundtrip.xmf";
-  const int  nsteps = 3;
-  Roller     roller;
-  PetscBool  exists;
-  FILE      *fp;
-  char      *text;
-  long       len;
-  hid_t      file, attr;
-  double     dt, times[16], t_series[16], t_data[16];
-  PetscInt   ntimes = 0, nseries, ndata, nitems = 0;
+  const char        h5[] = "io_roundtrip.h5", xmf[] = "io_roundtrip.xmf";
+  const char *const scene[][2] = {
+    {"-output",       h5   },
+    {"-output_every", "1"  },
+    {"-ts_max_steps", "3"  },
+    {"-mesh_h",       "0.1"},
+    {"-quiet",        NULL }
+  };
+  const int nsteps = 3;
+  Roller    roller;
+  PetscBool exists;
+  FILE     *fp;
+  char     *text;
+  long      len;
+  hid_t     file, attr;
+  double    dt, times[16], t_series[16], t_data[16];
+  PetscInt  ntimes = 0, nseries, ndata, nitems = 0;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsSetValue(NULL, "-output", h5));
-  PetscCall(PetscOptionsSetValue(NULL, "-output_every", "1"));
-  PetscCall(PetscOptionsSetValue(NULL, "-ts_max_steps", "3"));
-  PetscCall(PetscOptionsSetValue(NULL, "-mesh_h", "0.1"));
-  PetscCall(PetscOptionsSetValue(NULL, "-quiet", NULL));
-  PetscCall(RollerCreate(PETSC_COMM_WORLD, &roller));
-  PetscCall(RollerSetFromOptions(roller));
-  PetscCall(RollerSetUp(roller));
+  PetscCall(RollerUnitSetUp(scene, ROLLER_UNIT_COUNT(scene), &roller));
   PetscCall(RollerSolve(roller));
   PetscCall(RollerDestroy(&roller));
   PetscCall(PetscTestFile("io_roundtrip.h5.part", 'r', &exists));

@@ -5,6 +5,7 @@ static const char help[] = "Unit test: the elasticity and mass kernels on the li
                            "ctx->ops.M are the free-dof blocks of the same forms.\n";
 
 #include "model/model.h"
+#include "unit.h"
 #include "model/kernels.h"
 
 /* u = B x + c */
@@ -31,22 +32,14 @@ static void f_stress(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConsta
    RollerCreate registers its log stages). */
 static PetscErrorCode Setup(Roller *ctx)
 {
-  const char *defaults[][2] = {
+  const char *const defaults[][2] = {
     {"-mesh_h", "0.1" },
     {"-ts_dt",  "0.01"},
     {"-omega",  "0"   }
   };
 
   PetscFunctionBeginUser;
-  for (size_t i = 0; i < sizeof(defaults) / sizeof(defaults[0]); ++i) {
-    PetscBool set;
-
-    PetscCall(PetscOptionsHasName(NULL, NULL, defaults[i][0], &set));
-    if (!set) PetscCall(PetscOptionsSetValue(NULL, defaults[i][0], defaults[i][1]));
-  }
-  PetscCall(RollerCreate(PETSC_COMM_WORLD, ctx));
-  PetscCall(RollerSetFromOptions(*ctx));
-  PetscCall(RollerSetUp(*ctx));
+  PetscCall(RollerUnitSetUp(defaults, ROLLER_UNIT_COUNT(defaults), ctx));
   PetscFunctionReturn(0);
 }
 
