@@ -6,22 +6,6 @@ static const char help[] = "Unit test: the curved (isoparametric P2) boundary of
 #include "model/model.h"
 #include "unit.h"
 
-/* The library's annulus with -degree 2, -mesh_h from the command line (one Roller per process: RollerCreate
-   registers its log stages; the test runs on two meshes, two processes). */
-static PetscErrorCode Setup(Roller *ctx)
-{
-  const char *const defaults[][2] = {
-    {"-mesh_h", "0.1" },
-    {"-ts_dt",  "0.01"},
-    {"-omega",  "0"   }
-  };
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsSetValue(NULL, "-degree", "2"));
-  PetscCall(RollerUnitSetUp(defaults, ROLLER_UNIT_COUNT(defaults), ctx));
-  PetscFunctionReturn(0);
-}
-
 /* Every coordinate node of the points of label `name` (vertices and edges) at radius r. */
 static PetscErrorCode CheckCircle(Roller ctx, const char *name, PetscReal r)
 {
@@ -72,7 +56,8 @@ int main(int argc, char **argv)
   PetscReal exact, err, h, rel;
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
-  PetscCall(Setup(&ctx));
+  PetscCall(PetscOptionsSetValue(NULL, "-degree", "2"));
+  PetscCall(RollerUnitAnnulus(&ctx)); /* one Roller per process: RollerCreate registers the log stages */
   PetscCall(CheckCircle(ctx, "outer", ctx->mesh.r_outer));
   PetscCall(CheckCircle(ctx, "inner", ctx->mesh.r_inner));
   /* The P2 edge interpolates its arc at both ends and the middle: for an edge of angle theta the discrete length

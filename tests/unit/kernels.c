@@ -28,21 +28,6 @@ static void f_stress(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConsta
   RollerStress(PetscRealPart(constants[ROLLER_C_LAMBDA]), PetscRealPart(constants[ROLLER_C_MU]), u_x, f);
 }
 
-/* The library's annulus through its public life cycle; -degree from the command line (one Roller per process:
-   RollerCreate registers its log stages). */
-static PetscErrorCode Setup(Roller *ctx)
-{
-  const char *const defaults[][2] = {
-    {"-mesh_h", "0.1" },
-    {"-ts_dt",  "0.01"},
-    {"-omega",  "0"   }
-  };
-
-  PetscFunctionBeginUser;
-  PetscCall(RollerUnitSetUp(defaults, ROLLER_UNIT_COUNT(defaults), ctx));
-  PetscFunctionReturn(0);
-}
-
 /* A DM with ctx->mesh.dm's space and no Dirichlet boundary, and the form of one Jacobian kernel on it. */
 static PetscErrorCode FullForm(Roller ctx, PetscPointJac g0, PetscPointJac g3, DM *dm, Mat *J)
 {
@@ -306,7 +291,7 @@ int main(int argc, char **argv)
   Mat    K, M;
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
-  PetscCall(Setup(&ctx));
+  PetscCall(RollerUnitAnnulus(&ctx)); /* one Roller per process: RollerCreate registers the log stages */
   PetscCall(CheckStress(ctx, &linear));
   PetscCall(FullForm(ctx, NULL, g3_elastic, &dmK, &K));
   PetscCall(FullForm(ctx, g0_mass, NULL, &dmM, &M));

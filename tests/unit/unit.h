@@ -23,4 +23,19 @@ static inline PetscErrorCode RollerUnitSetUp(const char *const scene[][2], size_
 
 #define ROLLER_UNIT_COUNT(a) (sizeof(a) / sizeof((a)[0]))
 
+/* The free annulus at rest on a coarse mesh (-mesh_h 0.1, -ts_dt 0.01, -omega 0 unless given): the set-up the
+   kernel and geometry tests check. */
+static inline PetscErrorCode RollerUnitAnnulus(Roller *ctx)
+{
+  const char *const scene[][2] = {
+    {"-mesh_h", "0.1" },
+    {"-ts_dt",  "0.01"},
+    {"-omega",  "0"   }
+  };
+
+  PetscFunctionBeginUser;
+  PetscCall(RollerUnitSetUp(scene, ROLLER_UNIT_COUNT(scene), ctx));
+  PetscFunctionReturn(0);
+}
+
 #endif
