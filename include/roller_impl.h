@@ -44,6 +44,11 @@ typedef struct {
   PetscReal contact_force, gap_min;
   PetscInt  qp_iterations;
   PetscReal kkt_residual;
+  /* the discrete energy balance of the step (docs/model.md section 2, "Dampings and the energy balance"):
+     E^k - E^{k-1} = load_work + obstacle_work - contact_dissipation - damping_dissipation - viscous_dissipation */
+  PetscReal load_work, obstacle_work, contact_dissipation, damping_dissipation, viscous_dissipation;
+  PetscInt  contact_flips, contact_reversals; /* Gamma_C nodes whose state (on the obstacle or not) changed from
+                                                 t_{k-1} to t_k; of these, those back in their state of t_{k-2} */
 } RollerStepInfo;
 
 /* The context, split by lifetime and owner (docs/architecture.md). Each part is filled by the component
@@ -67,6 +72,7 @@ typedef struct {
 /* Material (set once): plane-strain Lame constants from E, nu */
 typedef struct {
   PetscReal young, poisson, density, lambda, mu;
+  PetscReal viscosity; /* tau of Kelvin-Voigt damping sigma = C:(eps + tau eps_t) */
 } RollerMaterial;
 
 /* The driving rotation theta(t) = omega t + a cos(b t) */
@@ -89,8 +95,8 @@ typedef struct {
   PetscBool              static_solve; /* -static: the rest state at the obstacle of t = max_time in one step, A = K */
 } RollerDiscretization;
 
-/* Operators fixed at set-up (model/operators.c): mass M, stiffness K, step matrix A = rho/dt^2 M + K/2
-   (+ eta/(2 dt) M), all on the free (non-Dirichlet) dofs; loads of the rigid-body parts of f: L_euler = M-load
+/* Operators fixed at set-up (model/operators.c): mass M, stiffness K, step matrix
+   A = rho/dt^2 M + (1/2 + tau/(2 dt)) K (+ eta/(2 dt) M), all on the free (non-Dirichlet) dofs; loads of the rigid-body parts of f: L_euler = M-load
    of R(-pi/2) x, L_centrifugal = M-load of x (exact integrals, docs/model.md section 2); the boundary
    functionals R = w_R . xi, alpha = w_alpha . xi. */
 typedef struct {
@@ -121,9 +127,10 @@ typedef struct {
 
 /* The integrator state: during a step, cur = xi^{k-1}, prev = xi^{k-2}, prev2 = xi^{k-3} (extrapolated Coriolis)
    and next receives xi^k; after it the levels move up one (next is then free, a scratch vector between steps).
-   K xi of the last two levels; the right-hand side and a work vector. */
+   K xi of the last three levels; the right-hand side, the external load F^{k-1} of the last step (its work
+   closes the energy balance, integrate/diagnostics.c) and a work vector. */
 typedef struct {
-  Vec       next, cur, prev, prev2, Kcur, Kprev, rhs, work;
+  Vec       next, cur, prev, prev2, Kcur, Kprev, Kprev2, rhs, load, work;
   PetscInt  step;
   PetscReal time;
 } RollerState;

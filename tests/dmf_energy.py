@@ -20,4 +20,23 @@ for degree in (1, 2):
 run(base + ["-ts_max_steps", 200, "-damping", 1, "-monitor_csv", "energy_damped.csv"])
 e = read_csv("energy_damped.csv")["energy"]
 c.check(all(e[1:] < e[:-1]) and e[-1] < 0.99 * e[0], f"damping 1: energy decreases at every step ({e[0]:.4e} -> {e[-1]:.4e})")
+
+run(base + ["-ts_max_steps", 200, "-viscosity", 0.01, "-monitor_csv", "energy_viscous.csv"])
+d = read_csv("energy_viscous.csv")
+e, dv = d["energy"], d["viscous_dissipation"]
+closure = max(abs(e[1:] - e[:-1] + dv[1:])) / e[0]
+c.check(all(e[1:] < e[:-1]) and all(dv[1:] > 0) and closure < 1e-12,
+        f"viscosity 0.01: energy decreases at every step ({e[0]:.4e} -> {e[-1]:.4e}) by the viscous dissipation (closure {closure:.1e} < 1e-12)")
+
+# rotation on (omega, theta_a: Euler, centrifugal and Coriolis loads), both dampings, every Coriolis velocity
+for coriolis in ("backward", "extrapolated", "centered"):
+    csv = f"energy_rot_{coriolis}.csv"
+    run(["-mesh_h", 0.05, "-ts_dt", 0.0125, "-theta_a", 0.1, "-theta_b", 2, "-damping", 0.3, "-viscosity", 0.005,
+         "-coriolis_velocity", coriolis, "-ts_max_steps", 300, "-quiet", "-monitor_csv", csv])
+    d = read_csv(csv)
+    e = d["energy"]
+    terms = d["load_work"] - d["damping_dissipation"] - d["viscous_dissipation"]
+    closure = max(abs(e[1:] - e[:-1] - terms[1:])) / max(e)
+    c.check(closure < 1e-12 and min(d["damping_dissipation"]) >= 0 and min(d["viscous_dissipation"]) >= 0,
+            f"rotating, {coriolis}: E^k - E^(k-1) = load_work - dissipations at every step (closure {closure:.1e} < 1e-12 of max E)")
 c.close()

@@ -1,6 +1,6 @@
 """Regression against golden outputs: the reference scenes (free, resonance, compression, rolling; P1 and P2;
 1 and 2 ranks) on a coarse mesh, short runs, must reproduce the CSV series stored in tests/data/golden/ to
-1e-12 relative (each column's difference relative to the column's max magnitude, or to its physical scale
+1e-12 relative (each golden column; columns appended later are not compared here; each column's difference relative to the column's max magnitude, or to its physical scale
 for the round-off columns kkt_residual and gap_min, and R and alpha on their common displacement scale). The goldens were written
 by this same script with --regenerate before the code's redesign; a refactoring that changes a result fails
 here. Usage: regression.py [--regenerate] [--nproc N] (N = 1 or 2; default: the cases of both)."""
@@ -59,7 +59,9 @@ for name, scene, degree, nproc in cases(nprocs):
         print(f"wrote {golden}")
         continue
     new, old = read_csv(csv), read_csv(golden)
-    same_columns = list(new) == list(old) and len(new["t"]) == len(old["t"])
+    # columns appended after the goldens were written (the contract allows appending) are checked by their own
+    # tests; every golden column must still come first, in its order
+    same_columns = list(new)[:len(old)] == list(old) and len(new["t"]) == len(old["t"])
     worst, where = 0.0, ""
     if same_columns:
         for q in old:

@@ -57,7 +57,9 @@ PetscErrorCode RollerDestroy(Roller *roller)
   PetscCall(VecDestroy(&ctx->state.prev2));
   PetscCall(VecDestroy(&ctx->state.Kcur));
   PetscCall(VecDestroy(&ctx->state.Kprev));
+  PetscCall(VecDestroy(&ctx->state.Kprev2));
   PetscCall(VecDestroy(&ctx->state.rhs));
+  PetscCall(VecDestroy(&ctx->state.load));
   PetscCall(VecDestroy(&ctx->state.work));
   PetscCall(VecDestroy(&ctx->ops.w_R));
   PetscCall(VecDestroy(&ctx->ops.w_alpha));

@@ -149,6 +149,9 @@ PETSC_INTERN PetscErrorCode RollerContactKKT(Roller, RollerContact, Vec, const P
 PETSC_INTERN PetscErrorCode RollerContactCheckStep(Roller, RollerContact, Vec, Vec);
 PETSC_INTERN PetscErrorCode RollerContactCheckSummary(RollerContact);
 
+/* contact_energy.c */
+PETSC_INTERN PetscErrorCode RollerContactEnergy(Roller, RollerContact, const PetscReal[], RollerStepInfo *);
+
 /* contact_primal.c: the rotated primal problem of vi, tao and pcg, each of which holds one in its data:
    xi = Q z, A_hat = Q^T A Q, b_hat = Q^T b, and the bound z_q >= lower at the normal component of every
    candidate. */

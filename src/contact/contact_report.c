@@ -153,6 +153,7 @@ PetscErrorCode RollerContactInfo(Roller ctx, RollerContact c, Vec xi, PetscReal 
   info->gap_min       = gap_min;
   info->qp_iterations = res->its;
   info->kkt_residual  = kkt;
+  PetscCall(RollerContactEnergy(ctx, c, res->lambda, info));
   if (c->opt.monitor) PetscCall(ContactMonitor(ctx, c, info));
   PetscFunctionReturn(0);
 }

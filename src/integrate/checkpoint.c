@@ -147,6 +147,7 @@ PetscErrorCode RollerCheckpointRead(Roller ctx, const char *path)
   PetscCall(PetscViewerDestroy(&viewer));
   PetscCall(MatMult(ctx->ops.K, ctx->state.cur, ctx->state.Kcur));
   PetscCall(MatMult(ctx->ops.K, ctx->state.prev, ctx->state.Kprev));
+  PetscCall(MatMult(ctx->ops.K, ctx->state.prev2, ctx->state.Kprev2));
   PetscFunctionReturn(0);
 }
 

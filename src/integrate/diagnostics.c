@@ -17,6 +17,36 @@ static PetscErrorCode Energy(Roller ctx, PetscReal *energy)
   PetscFunctionReturn(0);
 }
 
+/* The energy balance of the step from xi^{k-1} to xi^k (docs/model.md section 2, "Dampings and the energy balance"): with D = xi^k - xi^{k-2},
+   multiplying the step equation by D gives
+     E^k - E^{k-1} = 1/2 F^{k-1} . D + 1/2 (E N lambda^k) . D - eta/(4 dt) D^T M D - tau/(4 dt) D^T K D,
+   the load's work, the contact's (the obstacle's work minus the contact dissipation: contact layer), the
+   mass damping's and the Kelvin-Voigt dissipation (dt tau a(v, v), v = D/(2 dt)). Zero before the first step. */
+static PetscErrorCode EnergyBalance(Roller ctx, RollerStepInfo *info)
+{
+  const PetscReal dt = ctx->ts.dt;
+  Vec             D = ctx->state.work, MD = ctx->state.next; /* scratch between steps */
+  PetscScalar     dot;
+
+  PetscFunctionBeginUser;
+  info->load_work = info->damping_dissipation = info->viscous_dissipation = 0.0;
+  if (ctx->state.step == 0) PetscFunctionReturn(0);
+  PetscCall(VecWAXPY(D, -1.0, ctx->state.prev2, ctx->state.cur));
+  PetscCall(VecDot(ctx->state.load, D, &dot));
+  info->load_work = 0.5 * PetscRealPart(dot);
+  if (ctx->disc.damping > 0) {
+    PetscCall(MatMult(ctx->ops.M, D, MD));
+    PetscCall(VecDot(D, MD, &dot));
+    info->damping_dissipation = ctx->disc.damping / (4.0 * dt) * PetscRealPart(dot);
+  }
+  if (ctx->material.viscosity > 0) {
+    PetscCall(VecWAXPY(MD, -1.0, ctx->state.Kprev2, ctx->state.Kcur));
+    PetscCall(VecDot(D, MD, &dot));
+    info->viscous_dissipation = ctx->material.viscosity / (4.0 * dt) * PetscRealPart(dot);
+  }
+  PetscFunctionReturn(0);
+}
+
 /* Fill ctx->info for the newest level xi1 = xi^k at t = k dt. */
 PetscErrorCode RollerComputeStepInfo(Roller ctx)
 {
@@ -30,6 +60,7 @@ PetscErrorCode RollerComputeStepInfo(Roller ctx)
   info->R     = PetscRealPart(r) / ctx->mesh.boundary_length;
   info->alpha = PetscRealPart(a) / ctx->mesh.boundary_length;
   PetscCall(Energy(ctx, &info->energy));
+  PetscCall(EnergyBalance(ctx, info));
   if (ctx->contact) PetscCall(RollerContactInfo(ctx, ctx->contact, ctx->state.cur, ctx->state.time, info));
   else {
     /* no obstacle: no contact, and no gap to report (docs/output.md) */
@@ -38,6 +69,8 @@ PetscErrorCode RollerComputeStepInfo(Roller ctx)
     info->gap_min       = (PetscReal)NAN;
     info->qp_iterations = 0;
     info->kkt_residual  = 0.0;
+    info->obstacle_work = info->contact_dissipation = 0.0;
+    info->contact_flips = info->contact_reversals = 0;
   }
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);

@@ -30,7 +30,9 @@ PetscErrorCode RollerInitialState(Roller ctx)
   PetscCall(VecDuplicate(ctx->state.next, &ctx->state.prev2));
   PetscCall(VecDuplicate(ctx->state.next, &ctx->state.Kcur));
   PetscCall(VecDuplicate(ctx->state.next, &ctx->state.Kprev));
+  PetscCall(VecDuplicate(ctx->state.next, &ctx->state.Kprev2));
   PetscCall(VecDuplicate(ctx->state.next, &ctx->state.rhs));
+  PetscCall(VecDuplicate(ctx->state.next, &ctx->state.load));
   PetscCall(VecDuplicate(ctx->state.next, &ctx->state.work));
   switch (ctx->init.type) {
   case ROLLER_IC_REST:
@@ -51,6 +53,7 @@ PetscErrorCode RollerInitialState(Roller ctx)
   }
   PetscCall(MatMult(ctx->ops.K, ctx->state.cur, ctx->state.Kcur));
   PetscCall(MatMult(ctx->ops.K, ctx->state.prev, ctx->state.Kprev));
+  PetscCall(MatMult(ctx->ops.K, ctx->state.prev2, ctx->state.Kprev2));
   ctx->state.step = 0;
   ctx->state.time = 0.0;
   PetscFunctionReturn(0);

@@ -1,19 +1,23 @@
 /* One step of the "Crank-Nicolson" discrete Morse flow (docs/model.md section 2, paper (3.1)-(3.2)):
-     A xi^k = b^k,  A = rho/dt^2 M + K/2 (+ eta/(2 dt) M),
-     b^k = M w - K xi^{k-2}/2 + rho (theta'' L_euler + theta'^2 L_centrifugal),
-     w   = rho/dt^2 (2 xi^{k-1} - xi^{k-2}) (+ eta/(2 dt) xi^{k-2})
-           + rho (theta'' R(-pi/2) xi^{k-1} + theta'^2 xi^{k-1} + 2 theta' R(-pi/2) v^{k-1}),
+     A xi^k = b^k,  A = rho/dt^2 M + (1/2 + tau/(2 dt)) K (+ eta/(2 dt) M),
+     b^k = M w - (1/2 - tau/(2 dt)) K xi^{k-2} + F^{k-1},
+     w   = rho/dt^2 (2 xi^{k-1} - xi^{k-2}) (+ eta/(2 dt) xi^{k-2}),
+     F^{k-1} = rho M (theta'' R(-pi/2) xi^{k-1} + theta'^2 xi^{k-1} + 2 theta' R(-pi/2) v^{k-1})
+               + rho (theta'' L_euler + theta'^2 L_centrifugal),
      v^{k-1} = (xi^{k-1} - xi^{k-2})/dt (the paper) or (3 xi^{k-1} - 4 xi^{k-2} + xi^{k-3})/(2 dt),
    with theta', theta'' at t_{k-1}: the rigid part of rho (f^{k-1}, v) is loaded exactly (L_euler,
-   L_centrifugal), the part linear in xi through M since f^{k-1} is interpolated in the FE space. With the
-   obstacle, the same A and b define the bound-constrained QP that contact.c solves. */
+   L_centrifugal), the part linear in xi through M since f^{k-1} is interpolated in the FE space; tau K is the
+   Kelvin-Voigt damping tau K (xi^k - xi^{k-2})/(2 dt). F^{k-1} is kept (state.load): its work closes the energy
+   balance (diagnostics.c). With the centred Coriolis velocity its xi^k half is in A and the rest in w: that
+   force does no work on xi^k - xi^{k-2} (G is skew) and is not part of F. With the obstacle, the same A and b
+   define the bound-constrained QP that contact.c solves. */
 #include "integrate/integrate.h"
 
 static PetscErrorCode StepRightHandSide(Roller ctx, Vec b)
 {
   const PetscReal rho = ctx->material.density, dt = ctx->ts.dt, t1 = (ctx->state.step) * dt; /* t_{k-1} */
   PetscReal       td, tdd;
-  Vec             w = ctx->state.work;
+  Vec             w = ctx->state.work, F = ctx->state.load, scratch = ctx->state.next; /* next: free until the solve */
 
   PetscFunctionBeginUser;
   RollerTheta(ctx, t1, NULL, &td, &tdd);
@@ -31,11 +35,26 @@ static PetscErrorCode StepRightHandSide(Roller ctx, Vec b)
     break;
   }
   PetscCall(RollerApplyRotate90(b, w));
+  /* the external load F^{k-1} = M (rho (w + td^2 xi^{k-1})) + the rigid loads (+ the MMS load); the centred
+     Coriolis force does no work and is left out of F (the header) */
+  if (ctx->disc.coriolis == ROLLER_CORIOLIS_CENTERED) {
+    PetscCall(RollerApplyRotate90(ctx->state.cur, scratch));
+    PetscCall(VecAXPBYPCZ(F, rho * tdd, rho * td * td, 0.0, scratch, ctx->state.cur));
+  } else PetscCall(VecAXPBYPCZ(F, rho, rho * td * td, 0.0, w, ctx->state.cur));
+  PetscCall(MatMult(ctx->ops.M, F, scratch));
+  PetscCall(VecAXPBYPCZ(scratch, rho * tdd, rho * td * td, 1.0, ctx->ops.L_euler, ctx->ops.L_centrifugal));
+  PetscCall(VecSwap(scratch, F));
+  /* b = M w - (1/2 - tau/(2 dt)) K xi^{k-2} + the rigid loads, in this order (the golden outputs' arithmetic) */
   PetscCall(VecAXPBYPCZ(w, rho * (2.0 / (dt * dt) + td * td), -rho / (dt * dt) + ctx->disc.damping / (2.0 * dt), rho, ctx->state.cur, ctx->state.prev));
   PetscCall(MatMult(ctx->ops.M, w, b));
-  PetscCall(VecAXPY(b, -0.5, ctx->state.Kprev));
+  PetscCall(VecAXPY(b, -(0.5 - ctx->material.viscosity / (2.0 * dt)), ctx->state.Kprev));
   PetscCall(VecAXPBYPCZ(b, rho * tdd, rho * td * td, 1.0, ctx->ops.L_euler, ctx->ops.L_centrifugal));
-  if (ctx->init.mms != ROLLER_MMS_NONE) PetscCall(RollerAddMMSLoad(ctx, t1, b));
+  if (ctx->init.mms != ROLLER_MMS_NONE) {
+    PetscCall(VecZeroEntries(scratch));
+    PetscCall(RollerAddMMSLoad(ctx, t1, scratch));
+    PetscCall(VecAXPY(b, 1.0, scratch));
+    PetscCall(VecAXPY(F, 1.0, scratch));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -75,14 +94,15 @@ PetscErrorCode RollerStep(Roller ctx)
                ctx->ck.file);
   }
   /* rotate the history: xi3 <- xi2 <- xi1 <- xi, and K xi likewise */
-  tmp              = ctx->state.prev2;
-  ctx->state.prev2 = ctx->state.prev;
-  ctx->state.prev  = ctx->state.cur;
-  ctx->state.cur   = ctx->state.next;
-  ctx->state.next  = tmp;
-  tmp              = ctx->state.Kprev;
-  ctx->state.Kprev = ctx->state.Kcur;
-  ctx->state.Kcur  = tmp;
+  tmp               = ctx->state.prev2;
+  ctx->state.prev2  = ctx->state.prev;
+  ctx->state.prev   = ctx->state.cur;
+  ctx->state.cur    = ctx->state.next;
+  ctx->state.next   = tmp;
+  tmp               = ctx->state.Kprev2;
+  ctx->state.Kprev2 = ctx->state.Kprev;
+  ctx->state.Kprev  = ctx->state.Kcur;
+  ctx->state.Kcur   = tmp;
   PetscCall(MatMult(ctx->ops.K, ctx->state.cur, ctx->state.Kcur));
   ctx->state.step++;
   ctx->state.time = ctx->state.step * ctx->ts.dt;

@@ -1,5 +1,5 @@
 /* The constant operators of the DMF step (docs/model.md section 2): mass M, stiffness K, the gyroscopic G,
-   A = rho/dt^2 M + K/2 (+ eta/(2 dt) M) (- rho theta'/dt G), the loads of the rigid part of f, the nodal
+   A = rho/dt^2 M + (1/2 + tau/(2 dt)) K (+ eta/(2 dt) M) (- rho theta'/dt G), the loads of the rigid part of f, the nodal
    positions. Each bilinear form and load is assembled on a DM of its own (RollerOperatorDMCreate), whose
    PetscDS holds exactly its kernel and the constants that kernel reads, set once: no assembly changes what
    another computes. */
@@ -89,7 +89,8 @@ PetscErrorCode RollerOperatorsSetUp(Roller ctx)
   PetscCall(AssembleMatrix(ctx, "K", NULL, g3_elastic, &ctx->ops.K));
   PetscCall(MatDuplicate(ctx->ops.K, MAT_COPY_VALUES, &ctx->ops.A));
   if (!ctx->disc.static_solve) { /* -static: A = K, the step from rest is min 1/2 xi^T K xi over the admissible set */
-    PetscCall(MatScale(ctx->ops.A, 0.5));
+    /* Kelvin-Voigt: tau K (xi^k - xi^{k-2})/(2 dt), centred on t_{k-1} like the mass damping (docs/model.md section 2) */
+    PetscCall(MatScale(ctx->ops.A, 0.5 + ctx->material.viscosity / (2.0 * ctx->ts.dt)));
     PetscCall(MatAXPY(ctx->ops.A, shift, ctx->ops.M, SAME_NONZERO_PATTERN));
   }
   if (ctx->disc.coriolis == ROLLER_CORIOLIS_CENTERED) {

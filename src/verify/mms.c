@@ -2,7 +2,7 @@
    u(x, t) = T(t) A B(x) c, c = (1, 1/2), B = g(s)/g_max, s = |x|^2, g(s) = (s - r_i^2)^2 (r_o^2 - s)^2:
    u vanishes to second order on both circles, so the polygonal boundary of the mesh (chords at
    distance O(h^2) from the circle) costs only O(h^4) and does not spoil the P2 rates. With -clamp_outer
-   it satisfies the boundary conditions; the body force F = rho u_tt - div sigma[u] - rho f(t, x, u, u_t)
+   it satisfies the boundary conditions; the body force F = rho u_tt - div sigma[u + tau u_t] - rho f(t, x, u, u_t)
    (f of docs/model.md section 1, all of it) makes it a solution of (P) without obstacle.
    T(t) = 1 + t ("linear": the DMF scheme is exact in time, so the error is spatial only) or
    T(t) = sin(2 pi t) ("sine": the time error shows). */
@@ -59,6 +59,7 @@ typedef enum {
   MMS_C_TIME,
   MMS_C_THETA_DOT,  /* theta'(t)  */
   MMS_C_THETA_DDOT, /* theta''(t) */
+  MMS_C_VISCOSITY,  /* tau of Kelvin-Voigt damping */
   MMS_NUM_CONSTANTS
 } MMSConstant;
 
@@ -80,6 +81,7 @@ static PetscErrorCode MMSSetConstants(Roller ctx, PetscReal t, DM dm)
   constants[MMS_C_TIME]       = t;
   constants[MMS_C_THETA_DOT]  = td;
   constants[MMS_C_THETA_DDOT] = tdd;
+  constants[MMS_C_VISCOSITY]  = ctx->material.viscosity;
   PetscCall(DMGetDS(dm, &ds));
   PetscCall(PetscDSSetConstants(ds, MMS_NUM_CONSTANTS, constants));
   PetscFunctionReturn(0);
@@ -90,7 +92,7 @@ static void f0_mms(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstant
 {
   const PetscReal lambda = PetscRealPart(constants[MMS_C_LAMBDA]), mu = PetscRealPart(constants[MMS_C_MU]), rho = PetscRealPart(constants[MMS_C_RHO]);
   const PetscReal time = PetscRealPart(constants[MMS_C_TIME]), td = PetscRealPart(constants[MMS_C_THETA_DOT]), tdd = PetscRealPart(constants[MMS_C_THETA_DDOT]);
-  const PetscReal amp = PetscRealPart(constants[MMS_C_AMPLITUDE]);
+  const PetscReal amp = PetscRealPart(constants[MMS_C_AMPLITUDE]), tau = PetscRealPart(constants[MMS_C_VISCOSITY]);
   PetscReal       T[3], B, dB[2], H[4], ue[2], ut[2], utt[2], divsig[2], f[2];
 
   MMSTime((PetscInt)PetscRealPart(constants[MMS_C_TYPE]), time, T);
@@ -99,8 +101,8 @@ static void f0_mms(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstant
     ue[c]  = T[0] * amp * B * mms_c[c];
     ut[c]  = T[1] * amp * B * mms_c[c];
     utt[c] = T[2] * amp * B * mms_c[c];
-    /* div sigma[B c] = mu Lap(B) c + (lambda + mu) Hess(B) c */
-    divsig[c] = T[0] * amp * (mu * (H[0] + H[3]) * mms_c[c] + (lambda + mu) * (H[c * 2 + 0] * mms_c[0] + H[c * 2 + 1] * mms_c[1]));
+    /* div sigma[B c] = mu Lap(B) c + (lambda + mu) Hess(B) c; Kelvin-Voigt: sigma[u + tau u_t] */
+    divsig[c] = (T[0] + tau * T[1]) * amp * (mu * (H[0] + H[3]) * mms_c[c] + (lambda + mu) * (H[c * 2 + 0] * mms_c[0] + H[c * 2 + 1] * mms_c[1]));
   }
   /* f = theta'' R(-pi/2)(x + u) + theta'^2 (x + u) + 2 theta' R(-pi/2) u_t (docs/model.md section 1) */
   f[0] = tdd * (x[1] + ue[1]) + td * td * (x[0] + ue[0]) + 2.0 * td * ut[1];

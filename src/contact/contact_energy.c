@@ -1,0 +1,62 @@
+/* The contact's part of the step's energy balance and the contact-set changes (docs/model.md section 2, "Dampings and the energy balance",
+   docs/contact.md "Energy and chatter"). With D_n = xi^k_n - xi^{k-2}_n, lambda^k gap^k = 0 and the force
+   lambda_n n^k on node n, the contact's work 1/2 lambda . N^T D splits into
+     obstacle_work       W = 1/2 sum_n lambda^k_n [(g^k - g^{k-2}) - (x_n + xi^{k-2}_n) . (n^k - n^{k-2})]
+                             (the obstacle's motion relative to the frame: its approach and the rotation of
+                             its line, i.e. the work of the drive against the rolling resistance), and
+     contact_dissipation D = 1/2 sum_n lambda^k_n gap^{k-2}_n >= 0
+                             (a node arriving between t_{k-2} and t_k; xi^{k-2} is admissible at t_{k-2}).
+   The state "on the obstacle" of a node is gap <= tol at its level; flips count the nodes whose state at t_k
+   differs from t_{k-1}, reversals those of them back in their state of t_{k-2} (a contact set that chatters).
+   Both derive from the three checkpointed levels, so a restart reports the same. */
+#include "contact_impl.h"
+
+/* gap_n = (x_n + xi_n) . n(t) - g(t) of every node, xi gathered into red. */
+static PetscErrorCode GapsAt(Roller ctx, RollerContact c, Vec xi, PetscReal t, Vec red, PetscReal gap[], PetscReal normal[2], PetscReal *g)
+{
+  const PetscScalar *u;
+  const PetscReal   *xc = c->nodes.xc;
+  PetscReal          theta;
+
+  PetscFunctionBeginUser;
+  RollerTheta(ctx, t, &theta, NULL, NULL);
+  normal[0] = PetscSinReal(theta);
+  normal[1] = PetscCosReal(theta);
+  *g        = RollerObstacleHeight(ctx, t);
+  PetscCall(RollerContactGather(c, xi, red));
+  PetscCall(VecGetArrayRead(red, &u));
+  for (PetscInt i = 0; i < c->nodes.nc; ++i) gap[i] = (xc[2 * i] + PetscRealPart(u[2 * i])) * normal[0] + (xc[2 * i + 1] + PetscRealPart(u[2 * i + 1])) * normal[1] - *g;
+  PetscCall(VecRestoreArrayRead(red, &u));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerContactEnergy(Roller ctx, RollerContact c, const PetscReal lambda[], RollerStepInfo *info)
+{
+  const PetscReal    t = ctx->state.time, dt = ctx->ts.dt, tol = RollerContactGapTolerance(ctx);
+  PetscReal         *gap0, *gap1, *gap2, n0[2], n2[2], n1[2], g0, g1, g2;
+  const PetscScalar *u2;
+
+  PetscFunctionBeginUser;
+  info->obstacle_work = info->contact_dissipation = 0.0;
+  info->contact_flips = info->contact_reversals = 0;
+  if (ctx->state.step == 0) PetscFunctionReturn(0);
+  PetscCall(PetscMalloc3(c->nodes.nc, &gap0, c->nodes.nc, &gap1, c->nodes.nc, &gap2));
+  PetscCall(GapsAt(ctx, c, ctx->state.cur, t, c->nodes.red1, gap0, n0, &g0));
+  PetscCall(GapsAt(ctx, c, ctx->state.prev, t - dt, c->nodes.red1, gap1, n1, &g1));
+  PetscCall(GapsAt(ctx, c, ctx->state.prev2, t - 2.0 * dt, c->nodes.red2, gap2, n2, &g2));
+  PetscCall(VecGetArrayRead(c->nodes.red2, &u2));
+  for (PetscInt i = 0; i < c->nodes.nc; ++i) {
+    const PetscBool on0 = (PetscBool)(gap0[i] <= tol), on1 = (PetscBool)(gap1[i] <= tol), on2 = (PetscBool)(gap2[i] <= tol);
+
+    if (on0 != on1) {
+      info->contact_flips++;
+      if (on0 == on2) info->contact_reversals++;
+    }
+    if (lambda[i] <= 0.0) continue;
+    info->contact_dissipation += 0.5 * lambda[i] * gap2[i];
+    info->obstacle_work += 0.5 * lambda[i] * ((g0 - g2) - (c->nodes.xc[2 * i] + PetscRealPart(u2[2 * i])) * (n0[0] - n2[0]) - (c->nodes.xc[2 * i + 1] + PetscRealPart(u2[2 * i + 1])) * (n0[1] - n2[1]));
+  }
+  PetscCall(VecRestoreArrayRead(c->nodes.red2, &u2));
+  PetscCall(PetscFree3(gap0, gap1, gap2));
+  PetscFunctionReturn(0);
+}
