@@ -20,12 +20,18 @@ PetscErrorCode RollerMassSetFromOptions(Roller ctx)
   PetscFunctionReturn(0);
 }
 
-/* T for -contact_mass redistributed, NULL for the consistent mass */
+/* T for -contact_mass redistributed, NULL for the consistent mass; -log_view event RollerMassTransfer */
 PetscErrorCode RollerMassTransfer(Roller ctx, Mat *T)
 {
+  static PetscLogEvent event = -1;
+
   PetscFunctionBeginUser;
   *T = NULL;
-  if (ctx->disc.contact_mass == ROLLER_CONTACT_MASS_REDISTRIBUTED) PetscCall(RollerMassTransferCreate(ctx, T));
+  if (ctx->disc.contact_mass != ROLLER_CONTACT_MASS_REDISTRIBUTED) PetscFunctionReturn(0);
+  if (event < 0) PetscCall(PetscLogEventRegister("RollerMassTransfer", MAT_CLASSID, &event));
+  PetscCall(PetscLogEventBegin(event, 0, 0, 0, 0));
+  PetscCall(RollerMassTransferCreate(ctx, T));
+  PetscCall(PetscLogEventEnd(event, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
