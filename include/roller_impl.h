@@ -31,6 +31,11 @@ PETSC_EXTERN const char *const RollerMMSTypes[];
 typedef enum { ROLLER_CORIOLIS_BACKWARD, ROLLER_CORIOLIS_EXTRAPOLATED, ROLLER_CORIOLIS_CENTERED } RollerCoriolisVelocity;
 PETSC_EXTERN const char *const RollerCoriolisVelocities[];
 
+/* The mass of the Gamma_C dofs: the consistent FE mass M, or massless contact nodes M_red = T^T M T
+   (model/mass.c, docs/contact.md "Massless contact nodes"). */
+typedef enum { ROLLER_CONTACT_MASS_CONSISTENT, ROLLER_CONTACT_MASS_REDISTRIBUTED } RollerContactMass;
+PETSC_EXTERN const char *const RollerContactMasses[];
+
 typedef struct _n_RollerContact  *RollerContact;
 typedef struct _n_RollerMonitors *RollerMonitors; /* the observers of the run (integrate/monitor.c) */
 
@@ -93,12 +98,14 @@ typedef struct {
   RollerCoriolisVelocity coriolis;
   PetscReal              damping;      /* eta of the DMF functional */
   PetscBool              static_solve; /* -static: the rest state at the obstacle of t = max_time in one step, A = K */
+  RollerContactMass      contact_mass; /* -contact_mass (model/mass.c) */
 } RollerDiscretization;
 
 /* Operators fixed at set-up (model/operators.c): mass M, stiffness K, step matrix
    A = rho/dt^2 M + (1/2 + tau/(2 dt)) K (+ eta/(2 dt) M), all on the free (non-Dirichlet) dofs; loads of the rigid-body parts of f: L_euler = M-load
    of R(-pi/2) x, L_centrifugal = M-load of x (exact integrals, docs/model.md section 2); the boundary
-   functionals R = w_R . xi, alpha = w_alpha . xi. */
+   functionals R = w_R . xi, alpha = w_alpha . xi. With -contact_mass redistributed M is M_red = T^T M T, G is
+   T^T G T and the loads are T^T L (model/mass.c). */
 typedef struct {
   Mat M, K, A;
   Mat Gyro, A0; /* centred Coriolis only: the gyroscopic matrix and the symmetric part of A */

@@ -54,6 +54,7 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsReal("-obstacle_speed", "Obstacle speed v", NULL, ctx->obstacle.speed, &ctx->obstacle.speed, NULL));
   PetscCall(PetscOptionsReal("-obstacle_depth", "Final indentation depth", NULL, ctx->obstacle.depth, &ctx->obstacle.depth, NULL));
   PetscOptionsEnd();
+  PetscCall(RollerMassSetFromOptions(ctx));
 
   PetscCall(RollerTimeStepSetFromOptions(ctx));
   PetscCall(RollerInitialSetFromOptions(ctx));

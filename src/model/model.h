@@ -3,6 +3,8 @@
      forcing.c      the rotation theta(t) (-omega, -theta_a, -theta_b), the obstacle height g(t), R(-pi/2)
      fe.c           the discretization options, the PetscFE space and Dirichlet boundary, one DM per operator
      operators.c    M, K, G, A, the rigid-body loads, the load assembly, the nodal positions
+     mass.c         -contact_mass, the massless contact nodes M_red = T^T M T and their loads T^T L
+     mass_transfer.c, mass_layer.c  T: the weights of each Gamma_C node, from the cells around Gamma_C
      solver.c       the factorization of A and the defaults of every direct solve
      functionals.c  w_R, w_alpha and |Gamma_C| (boundary integrals on Gamma_C)
      accuracy.c     the default dt and h from -ts_phase_error
@@ -33,6 +35,14 @@ PETSC_INTERN PetscErrorCode RollerOperatorDMCreate(Roller, PetscFE, DM *); /* a 
 PETSC_INTERN PetscErrorCode RollerOperatorsSetUp(Roller);
 PETSC_INTERN PetscErrorCode RollerUpdateGyroscopic(Roller, PetscReal);
 PETSC_INTERN PetscErrorCode RollerAddLoad(DM, Vec); /* b += the residual kernel's load on an operator's DM */
+
+/* mass.c, mass_transfer.c */
+PETSC_INTERN PetscErrorCode RollerMassSetFromOptions(Roller);  /* after the obstacle's options: the default follows -obstacle */
+PETSC_INTERN PetscErrorCode RollerMassTransfer(Roller, Mat *); /* T, or NULL for -contact_mass consistent */
+PETSC_INTERN PetscErrorCode RollerMassTransferCreate(Roller, Mat *);
+PETSC_INTERN PetscErrorCode RollerMassReduce(Mat, PetscReal, Mat *);  /* B <- T^T B T, symmetric (+1) or skew (-1) */
+PETSC_INTERN PetscErrorCode RollerMassReduceLoad(Mat, Vec);           /* L <- T^T L */
+PETSC_INTERN PetscErrorCode RollerMassReducePattern(Mat, Mat, Mat *); /* G <- T^T G T (skew) on A's pattern, widened */
 
 /* solver.c */
 PETSC_INTERN PetscErrorCode RollerStepSolverSetUp(Roller);

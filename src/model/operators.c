@@ -1,6 +1,7 @@
 /* The constant operators of the DMF step (docs/model.md section 2): mass M, stiffness K, the gyroscopic G,
-   A = rho/dt^2 M + (1/2 + tau/(2 dt)) K (+ eta/(2 dt) M) (- rho theta'/dt G), the loads of the rigid part of f, the nodal
-   positions. Each bilinear form and load is assembled on a DM of its own (RollerOperatorDMCreate), whose
+   A = rho/dt^2 M + (1/2 + tau/(2 dt)) K (+ eta/(2 dt) M) (- rho theta'/dt G), the loads of the rigid part of f,
+   the nodal positions; with -contact_mass redistributed M, G and the loads are T^T M T, T^T G T, T^T L
+   (mass.c). Each bilinear form and load is assembled on a DM of its own (RollerOperatorDMCreate), whose
    PetscDS holds exactly its kernel and the constants that kernel reads, set once: no assembly changes what
    another computes. */
 #include "model/model.h"
@@ -83,19 +84,25 @@ PetscErrorCode RollerOperatorsSetUp(Roller ctx)
   PetscErrorCode (*position[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {RollerPosition};
 
   const PetscReal shift = ctx->material.density / (ctx->ts.dt * ctx->ts.dt) + ctx->disc.damping / (2.0 * ctx->ts.dt);
+  Mat             T; /* massless contact nodes: M <- T^T M T (model/mass.c); NULL with the consistent mass */
 
   PetscFunctionBeginUser;
+  PetscCall(DMCreateGlobalVector(ctx->mesh.dm, &ctx->ops.coordinates));
+  PetscCall(DMProjectFunction(ctx->mesh.dm, 0.0, position, NULL, INSERT_VALUES, ctx->ops.coordinates));
+  PetscCall(RollerMassTransfer(ctx, &T));
   PetscCall(AssembleMatrix(ctx, "M", g0_mass, NULL, &ctx->ops.M));
+  if (T) PetscCall(RollerMassReduce(T, 1.0, &ctx->ops.M));
   PetscCall(AssembleMatrix(ctx, "K", NULL, g3_elastic, &ctx->ops.K));
   PetscCall(MatDuplicate(ctx->ops.K, MAT_COPY_VALUES, &ctx->ops.A));
   if (!ctx->disc.static_solve) { /* -static: A = K, the step from rest is min 1/2 xi^T K xi over the admissible set */
     /* Kelvin-Voigt: tau K (xi^k - xi^{k-2})/(2 dt), centred on t_{k-1} like the mass damping (docs/model.md section 2) */
     PetscCall(MatScale(ctx->ops.A, 0.5 + ctx->material.viscosity / (2.0 * ctx->ts.dt)));
-    PetscCall(MatAXPY(ctx->ops.A, shift, ctx->ops.M, SAME_NONZERO_PATTERN));
+    PetscCall(MatAXPY(ctx->ops.A, shift, ctx->ops.M, T ? DIFFERENT_NONZERO_PATTERN : SAME_NONZERO_PATTERN)); /* T^T M T couples more nodes than K */
   }
   if (ctx->disc.coriolis == ROLLER_CORIOLIS_CENTERED) {
     /* A - rho theta'/dt G: no longer symmetric (G is skew), still positive definite */
     PetscCall(AssembleMatrix(ctx, "G", g0_gyro, NULL, &ctx->ops.Gyro));
+    if (T) PetscCall(RollerMassReducePattern(T, ctx->ops.A, &ctx->ops.Gyro)); /* T^T G T, on A's pattern */
     PetscCall(MatDuplicate(ctx->ops.A, MAT_COPY_VALUES, &ctx->ops.A0));
     PetscCall(RollerUpdateGyroscopic(ctx, 0.0));
   } else {
@@ -105,8 +112,11 @@ PetscErrorCode RollerOperatorsSetUp(Roller ctx)
   PetscCall(PetscObjectSetName((PetscObject)ctx->ops.A, "A"));
   PetscCall(AssembleLoad(ctx, f0_euler, &ctx->ops.L_euler));
   PetscCall(AssembleLoad(ctx, f0_centrifugal, &ctx->ops.L_centrifugal));
-  PetscCall(DMCreateGlobalVector(ctx->mesh.dm, &ctx->ops.coordinates));
-  PetscCall(DMProjectFunction(ctx->mesh.dm, 0.0, position, NULL, INSERT_VALUES, ctx->ops.coordinates));
+  if (T) { /* M_red x = T^T M x: the loads of M_red */
+    PetscCall(RollerMassReduceLoad(T, ctx->ops.L_euler));
+    PetscCall(RollerMassReduceLoad(T, ctx->ops.L_centrifugal));
+  }
+  PetscCall(MatDestroy(&T));
   PetscCall(RollerStepSolverSetUp(ctx));
   PetscFunctionReturn(0);
 }
