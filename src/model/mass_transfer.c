@@ -283,7 +283,7 @@ PetscErrorCode RollerMassTransferCreate(Roller ctx, Mat *T)
     {
       PetscReal xb[2];
       PetscInt  ring;
-      PetscBool fallback;
+      PetscBool fallback = PETSC_FALSE;
 
       xb[0] = PetscRealPart(x[goff - rstart]);
       xb[1] = PetscRealPart(x[goff - rstart + 1]);
