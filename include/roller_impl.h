@@ -62,7 +62,8 @@ typedef struct {
 /* Mesh (src/mesh): the annulus, its labels "inner" (Gamma_D) and "outer" (Gamma_C) */
 typedef struct {
   PetscReal r_inner, r_outer, h;
-  PetscBool h_set; /* -mesh_h given; otherwise chosen from -ts_phase_error (model/accuracy.c) */
+  PetscBool h_set;                    /* -mesh_h given; otherwise chosen from -ts_phase_error (model/accuracy.c) */
+  PetscReal h_contact, contact_layer; /* graded toward Gamma_C: edge h_c within distance L of it (0: uniform; mesh/generate.c) */
   char      file[PETSC_MAX_PATH_LEN];
   PetscBool partition_view;
   PetscBool curved;          /* P2 geometry with Gamma_D, Gamma_C on their circles (mesh/geometry.c) */
@@ -70,7 +71,7 @@ typedef struct {
   DM        dm_view;         /* the straight-sided mesh written to HDF5/XDMF (dm itself unless curved) */
   PetscReal boundary_length; /* |Gamma_C| of the discrete (polygonal or curved) outer circle */
   /* -r_inner, -r_outer given (checked against a mesh file's radii), -mesh_gmsh_verbose, -mesh_view_info (mesh/mesh.c);
-     h from the -restart checkpoint (integrate/checkpoint.c) */
+     h (and h_contact, contact_layer) from the -restart checkpoint (integrate/checkpoint.c) */
   PetscBool radii_set[2], gmsh_verbose, view_info, h_restart;
 } RollerMesh;
 

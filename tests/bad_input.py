@@ -7,7 +7,7 @@ file left behind that looks complete.
 velocity, default dt) on the coarse mesh -mesh_h 0.05 for at most 2 steps: what is checked is the refusal."""
 import os
 
-from rollertest import Checker, run
+from rollertest import SOURCE, Checker, run
 
 c = Checker("bad_input")
 cases = [
@@ -34,6 +34,12 @@ cases = [
     (["-stability_margin", "2"], "-stability_margin", "2"),
     (["-restart", "no-such-checkpoint.h5"], "no-such-checkpoint.h5", "-restart"),
     (["-initial_condition", "bump"], "-initial_condition bump", "-clamp_outer"),
+    (["-mesh_h_contact", "-0.01"], "-mesh_h_contact", "-0.01"),
+    (["-mesh_h_contact", "0.1"], "-mesh_h_contact", "0.1"),
+    (["-mesh_contact_layer", "0.05"], "-mesh_contact_layer", "0.05"),
+    (["-mesh_h_contact", "0.01", "-mesh_contact_layer", "0.3"], "-mesh_contact_layer", "0.3"),
+    (["-mesh_h_contact", "0.01", "-mesh_contact_layer", "0.005"], "-mesh_contact_layer", "0.005"),
+    (["-mesh_h_contact", "0.01", "-dm_plex_filename", os.path.join(SOURCE, "meshes", "annulus-h0.05-v41.msh")], "-mesh_h_contact", "-dm_plex_filename"),
 ]
 for args, name, value in cases:
     code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet"] + args if args[0] != "-mesh_h" else args + ["-ts_max_steps", "2"], check=False)

@@ -8,7 +8,7 @@ Discretization: the free and contact restarts run Roller's default (P2 curved, t
 velocity, which reads xi^{k-3} and so needs the full history from the checkpoint, dt from -ts_phase_error:
 0.00384 for t <= 4) on -mesh_h 0.05. The SIGTERM/SIGKILL runs (to t = 60 on -mesh_h 0.0125) pin what they
 were written with, P1, -ts_dt 0.0125, backward Coriolis velocity: 4800 steps, where the defaults would take
-about 60,000 P2 steps."""
+about 60,000 P2 steps. The graded-mesh restart (-mesh_h 0.05 -mesh_h_contact 0.025) restarts without mesh options."""
 import os
 import signal
 import subprocess
@@ -33,6 +33,15 @@ for scene, extra in (("free", []), ("contact", ["-obstacle", "-obstacle_speed", 
     run(base + ["-restart", f"{scene}.h5", "-monitor_csv", f"{scene}_cut.csv"])
     same = open(f"{scene}_full.csv").read() == open(f"{scene}_cut.csv").read()
     c.check(same, f"{scene}: stopped at step 150, restarted from the step-150 checkpoint: CSV identical to the uninterrupted run")
+
+# a graded mesh: the checkpoint holds -mesh_h with its -mesh_h_contact and -mesh_contact_layer, so a restart
+# that gives none of them rebuilds the same mesh (another would have other dofs and be refused)
+mesh = ["-mesh_h", "0.05", "-mesh_h_contact", "0.025", "-mesh_contact_layer", "0.03"]
+base = ["-ts_max_time", "4", "-quiet", "-obstacle", "-obstacle_speed", "0.05", "-obstacle_depth", "0.01", "-damping", "1"]
+run(base + mesh + ["-monitor_csv", "graded_full.csv"])
+run(base + mesh + ["-ts_max_steps", "150", "-checkpoint_every", "50", "-checkpoint", "graded.h5", "-monitor_csv", "graded_cut.csv"])
+run(base + ["-restart", "graded.h5", "-monitor_csv", "graded_cut.csv"])
+c.check(open("graded_full.csv").read() == open("graded_cut.csv").read(), "graded mesh: restarted without the mesh options (from the checkpoint's): CSV identical to the uninterrupted run")
 
 # SIGTERM: clean stop with a checkpoint, then a restart that ends where the uninterrupted run ends
 base = ["-mesh_h", "0.0125", "-degree", "1", "-ts_dt", "0.0125", "-coriolis_velocity", "backward", "-ts_max_time", "60", "-quiet"]

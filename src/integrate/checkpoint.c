@@ -80,6 +80,8 @@ PetscErrorCode RollerCheckpointWrite(Roller ctx, const char *path)
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "dofs", PETSC_INT, &N));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "degree", PETSC_INT, &ctx->disc.degree));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "mesh_h", PETSC_REAL, &ctx->mesh.h));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "mesh_h_contact", PETSC_REAL, &ctx->mesh.h_contact));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "mesh_contact_layer", PETSC_REAL, &ctx->mesh.contact_layer));
   PetscCall(PetscViewerDestroy(&viewer));
   PetscCall(RollerRenameFile(ctx->comm, tmp, path));
   PetscFunctionReturn(0);
@@ -100,7 +102,8 @@ static PetscErrorCode CheckpointOpen(Roller ctx, const char *path, PetscViewer *
 }
 
 /* The discretization a restart continues with where the options do not give it: the checkpoint's -ts_dt and
-   -mesh_h (the accurate defaults would follow the new -ts_max_time). Called before the mesh is built. */
+   -mesh_h (the accurate defaults would follow the new -ts_max_time), and with that -mesh_h its grading
+   (-mesh_h_contact, -mesh_contact_layer) unless -mesh_h_contact is given. Called before the mesh is built. */
 PetscErrorCode RollerCheckpointDiscretization(Roller ctx, const char *path)
 {
   PetscViewer viewer;
@@ -118,6 +121,12 @@ PetscErrorCode RollerCheckpointDiscretization(Roller ctx, const char *path)
     PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "mesh_h", PETSC_REAL, NULL, &ctx->mesh.h));
     ctx->mesh.h_set     = PETSC_TRUE;
     ctx->mesh.h_restart = PETSC_TRUE;
+  }
+  /* the grading with the h it was made for (checkpoints before the grading have none: uniform) */
+  PetscCall(PetscViewerHDF5HasAttribute(viewer, "/", "mesh_h_contact", &exists));
+  if (ctx->mesh.h_restart && ctx->mesh.h_contact == 0 && exists) {
+    PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "mesh_h_contact", PETSC_REAL, NULL, &ctx->mesh.h_contact));
+    PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "mesh_contact_layer", PETSC_REAL, NULL, &ctx->mesh.contact_layer));
   }
   PetscCall(PetscViewerDestroy(&viewer));
   PetscFunctionReturn(0);

@@ -152,6 +152,14 @@ PetscErrorCode RollerChooseTimeStep(Roller ctx)
                           RollerCoriolisVelocities[ctx->disc.coriolis]));
     PetscCall(PetscPrintf(ctx->comm, "roller: fastest excited mode: %s, w = %g (period %g); torsional mode w_t = %g (period %g); end time %g; its phase error (5/24) w T (w dt)^2 = %.3g (target %g)\n", w_b >= ctx->rotation.b ? "radial breathing" : "the forcing b", (double)w, (double)(2 * PETSC_PI / w), (double)w_t, (double)(2 * PETSC_PI / w_t), (double)T, (double)phase,
                           (double)ctx->ts.phase_error));
+    if (ctx->mesh.h_contact > 0) {
+      const PetscReal v = PetscAbsReal(ctx->rotation.omega) * ctx->mesh.r_outer; /* speed of Gamma_C past the obstacle */
+
+      PetscCall(PetscPrintf(ctx->comm, "roller: mesh graded toward Gamma_C: -mesh_h_contact %g within -mesh_contact_layer %g, -mesh_h %g in the bulk; dt is set by the bulk modes above, not by h_c", (double)ctx->mesh.h_contact, (double)ctx->mesh.contact_layer,
+                            (double)ctx->mesh.h));
+      if (v > 0) PetscCall(PetscPrintf(ctx->comm, "; element passing f_e = omega r_C / h_c = %g (period %g = %.1f steps)", (double)(v / ctx->mesh.h_contact), (double)(ctx->mesh.h_contact / v), (double)(ctx->mesh.h_contact / (v * ctx->ts.dt))));
+      PetscCall(PetscPrintf(ctx->comm, "\n"));
+    }
   }
   PetscFunctionReturn(0);
 }
