@@ -64,6 +64,7 @@ typedef struct {
   PetscReal r_inner, r_outer, h;
   PetscBool h_set;                    /* -mesh_h given; otherwise chosen from -ts_phase_error (model/accuracy.c) */
   PetscReal h_contact, contact_layer; /* graded toward Gamma_C: edge h_c within distance L of it (0: uniform; mesh/generate.c) */
+  PetscBool h_contact_set;            /* -mesh_h_contact given (0 then asks for a uniform mesh); otherwise chosen for contact scenes */
   char      file[PETSC_MAX_PATH_LEN];
   PetscBool partition_view;
   PetscBool curved;          /* P2 geometry with Gamma_D, Gamma_C on their circles (mesh/geometry.c) */

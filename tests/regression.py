@@ -2,8 +2,9 @@
 1 and 2 ranks) on a coarse mesh, short runs, must reproduce the CSV series stored in tests/data/golden/ to
 1e-12 relative (each golden column; columns appended later are not compared here; each column's difference relative to the column's max magnitude, or to its physical scale
 for the round-off columns kkt_residual and gap_min, and R and alpha on their common displacement scale). The goldens were written
-by this same script with --regenerate before the code's redesign; a refactoring that changes a result fails
-here. Usage: regression.py [--regenerate] [--nproc N] (N = 1 or 2; default: the cases of both)."""
+by this same script with --regenerate before the code's redesign (the compression and rolling ones again when
+those scenes changed their damping from eta = 1 to the rubber's Kelvin-Voigt damping, issue 13, after the
+code itself had reproduced the old ones at tau = 0); a refactoring that changes a result fails here. Usage: regression.py [--regenerate] [--nproc N] (N = 1 or 2; default: the cases of both)."""
 import argparse
 import os
 import shutil

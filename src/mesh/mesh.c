@@ -83,7 +83,7 @@ PetscErrorCode RollerMeshSetFromOptions(Roller ctx)
   PetscFunctionBeginUser;
   PetscOptionsBegin(ctx->comm, NULL, "Roller: geometry and mesh", NULL);
   PetscCall(PetscOptionsReal("-mesh_h", "Edge length of the gmsh annulus mesh (0: chosen from -ts_phase_error)", NULL, mesh->h, &mesh->h, &mesh->h_set));
-  PetscCall(PetscOptionsReal("-mesh_h_contact", "Edge length h_c on Gamma_C of a mesh graded toward it, <= -mesh_h (0: uniform mesh at -mesh_h)", NULL, mesh->h_contact, &mesh->h_contact, NULL));
+  PetscCall(PetscOptionsReal("-mesh_h_contact", "Edge length h_c on Gamma_C of a mesh graded toward it, <= -mesh_h (0: uniform; with -obstacle and no -mesh_h: sqrt(r_outer depth)/14)", NULL, mesh->h_contact, &mesh->h_contact, &mesh->h_contact_set));
   PetscCall(PetscOptionsReal("-mesh_contact_layer", "Thickness L of the layer of edge length h_c under Gamma_C, >= h_c; then growing to -mesh_h over 3 (h - h_c) (0: 2 h_c)", NULL, mesh->contact_layer, &mesh->contact_layer, &layer_set));
   PetscCall(PetscOptionsString("-dm_plex_filename", "gmsh mesh file (physical groups inner, outer, body) instead of -mesh_h", NULL, mesh->file, mesh->file, sizeof(mesh->file), NULL));
   PetscCall(PetscOptionsReal("-r_inner", "Inner radius r_D (Gamma_D, driven)", NULL, mesh->r_inner, &mesh->r_inner, &mesh->radii_set[0]));
