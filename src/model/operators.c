@@ -8,7 +8,7 @@
 #include "model/kernels.h"
 
 /* The bilinear form of one Jacobian kernel, g0 or g3, on its own DM; constants: the material's for K. */
-static PetscErrorCode AssembleMatrix(Roller ctx, const char *name, PetscPointJac g0, PetscPointJac g3, Mat *J)
+PetscErrorCode RollerAssembleMatrix(Roller ctx, const char *name, PetscPointJac g0, PetscPointJac g3, Mat *J)
 {
   DM      dm;
   PetscDS ds;
@@ -49,7 +49,7 @@ PetscErrorCode RollerAddLoad(DM dm, Vec b)
 }
 
 /* L = (f0, v), a load without constants, on its own DM. */
-static PetscErrorCode AssembleLoad(Roller ctx, RollerPointFunc f0, Vec *L)
+PetscErrorCode RollerAssembleLoad(Roller ctx, RollerPointFunc f0, Vec *L)
 {
   DM      dm;
   PetscDS ds;
@@ -90,9 +90,9 @@ PetscErrorCode RollerOperatorsSetUp(Roller ctx)
   PetscCall(DMCreateGlobalVector(ctx->mesh.dm, &ctx->ops.coordinates));
   PetscCall(DMProjectFunction(ctx->mesh.dm, 0.0, position, NULL, INSERT_VALUES, ctx->ops.coordinates));
   PetscCall(RollerMassTransfer(ctx, &T));
-  PetscCall(AssembleMatrix(ctx, "M", g0_mass, NULL, &ctx->ops.M));
+  PetscCall(RollerAssembleMatrix(ctx, "M", g0_mass, NULL, &ctx->ops.M));
   if (T) PetscCall(RollerMassReduce(T, 1.0, &ctx->ops.M));
-  PetscCall(AssembleMatrix(ctx, "K", NULL, g3_elastic, &ctx->ops.K));
+  PetscCall(RollerAssembleMatrix(ctx, "K", NULL, g3_elastic, &ctx->ops.K));
   PetscCall(MatDuplicate(ctx->ops.K, MAT_COPY_VALUES, &ctx->ops.A));
   if (!ctx->disc.static_solve) { /* -static: A = K, the step from rest is min 1/2 xi^T K xi over the admissible set */
     /* Kelvin-Voigt: tau K (xi^k - xi^{k-2})/(2 dt), centred on t_{k-1} like the mass damping (docs/model.md section 2) */
@@ -101,7 +101,7 @@ PetscErrorCode RollerOperatorsSetUp(Roller ctx)
   }
   if (ctx->disc.coriolis == ROLLER_CORIOLIS_CENTERED) {
     /* A - rho theta'/dt G: no longer symmetric (G is skew), still positive definite */
-    PetscCall(AssembleMatrix(ctx, "G", g0_gyro, NULL, &ctx->ops.Gyro));
+    PetscCall(RollerAssembleMatrix(ctx, "G", g0_gyro, NULL, &ctx->ops.Gyro));
     if (T) PetscCall(RollerMassReducePattern(T, ctx->ops.A, &ctx->ops.Gyro)); /* T^T G T, on A's pattern */
     PetscCall(MatDuplicate(ctx->ops.A, MAT_COPY_VALUES, &ctx->ops.A0));
     PetscCall(RollerUpdateGyroscopic(ctx, 0.0));
@@ -110,8 +110,8 @@ PetscErrorCode RollerOperatorsSetUp(Roller ctx)
     PetscCall(MatSetOption(ctx->ops.A, MAT_SPD_ETERNAL, PETSC_TRUE));
   }
   PetscCall(PetscObjectSetName((PetscObject)ctx->ops.A, "A"));
-  PetscCall(AssembleLoad(ctx, f0_euler, &ctx->ops.L_euler));
-  PetscCall(AssembleLoad(ctx, f0_centrifugal, &ctx->ops.L_centrifugal));
+  PetscCall(RollerAssembleLoad(ctx, f0_euler, &ctx->ops.L_euler));
+  PetscCall(RollerAssembleLoad(ctx, f0_centrifugal, &ctx->ops.L_centrifugal));
   if (T) { /* M_red x = T^T M x: the loads of M_red */
     PetscCall(RollerMassReduceLoad(T, ctx->ops.L_euler));
     PetscCall(RollerMassReduceLoad(T, ctx->ops.L_centrifugal));

@@ -89,24 +89,28 @@ static PetscErrorCode CheckCsv(const char path[], const char header[], const Row
       PetscCheck(end != p && (*end == (c < NCOLUMNS - 1 ? ',' : '\n')), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s row %" PetscInt_FMT ": column %s unreadable at \"%s\"", path, count, columns[c], p);
       p = end + 1;
     }
-    PetscCall(CheckValue(path, count, columns[0], (double)r->step, v[0]));
-    PetscCall(CheckValue(path, count, columns[1], (double)r->t, v[1]));
-    PetscCall(CheckValue(path, count, columns[2], (double)r->info.R, v[2]));
-    PetscCall(CheckValue(path, count, columns[3], (double)r->info.alpha, v[3]));
-    PetscCall(CheckValue(path, count, columns[4], (double)r->info.energy, v[4]));
-    PetscCall(CheckValue(path, count, columns[5], (double)r->info.contact_nodes, v[5]));
-    PetscCall(CheckValue(path, count, columns[6], (double)r->info.contact_force, v[6]));
-    PetscCall(CheckValue(path, count, columns[7], (double)r->info.gap_min, v[7]));
-    PetscCall(CheckValue(path, count, columns[8], (double)r->info.qp_iterations, v[8]));
-    PetscCall(CheckValue(path, count, columns[9], (double)r->info.kkt_residual, v[9]));
-    PetscCall(CheckValue(path, count, columns[10], (double)r->theta, v[10]));
-    PetscCall(CheckValue(path, count, columns[11], (double)r->info.load_work, v[11]));
-    PetscCall(CheckValue(path, count, columns[12], (double)r->info.obstacle_work, v[12]));
-    PetscCall(CheckValue(path, count, columns[13], (double)r->info.contact_dissipation, v[13]));
-    PetscCall(CheckValue(path, count, columns[14], (double)r->info.damping_dissipation, v[14]));
-    PetscCall(CheckValue(path, count, columns[15], (double)r->info.viscous_dissipation, v[15]));
-    PetscCall(CheckValue(path, count, columns[16], (double)r->info.contact_flips, v[16]));
-    PetscCall(CheckValue(path, count, columns[17], (double)r->info.contact_reversals, v[17]));
+    {
+      const double wrote[NCOLUMNS] = {(double)r->step,
+                                      (double)r->t,
+                                      (double)r->info.R,
+                                      (double)r->info.alpha,
+                                      (double)r->info.energy,
+                                      (double)r->info.contact_nodes,
+                                      (double)r->info.contact_force,
+                                      (double)r->info.gap_min,
+                                      (double)r->info.qp_iterations,
+                                      (double)r->info.kkt_residual,
+                                      (double)r->theta,
+                                      (double)r->info.load_work,
+                                      (double)r->info.obstacle_work,
+                                      (double)r->info.contact_dissipation,
+                                      (double)r->info.damping_dissipation,
+                                      (double)r->info.viscous_dissipation,
+                                      (double)r->info.contact_flips,
+                                      (double)r->info.contact_reversals};
+
+      for (int c = 0; c < NCOLUMNS; ++c) PetscCall(CheckValue(path, count, columns[c], wrote[c], v[c]));
+    }
     count++;
   }
   fclose(fp);

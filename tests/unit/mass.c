@@ -11,42 +11,6 @@ static const char help[] = "Unit test: the massless contact nodes M_red = T^T M 
 #include "unit.h"
 #include "model/kernels.h"
 
-/* The consistent mass of the free dofs, assembled as model/operators.c does */
-static PetscErrorCode ConsistentMass(Roller ctx, Mat *M)
-{
-  DM      dm;
-  PetscDS ds;
-  Vec     loc;
-
-  PetscFunctionBeginUser;
-  PetscCall(RollerOperatorDMCreate(ctx, NULL, &dm));
-  PetscCall(DMGetDS(dm, &ds));
-  PetscCall(PetscDSSetJacobian(ds, 0, 0, g0_mass, NULL, NULL, NULL));
-  PetscCall(DMCreateMatrix(dm, M));
-  PetscCall(DMGetLocalVector(dm, &loc));
-  PetscCall(VecZeroEntries(loc));
-  PetscCall(DMPlexSNESComputeJacobianFEM(dm, loc, *M, *M, NULL));
-  PetscCall(DMRestoreLocalVector(dm, &loc));
-  PetscCall(DMDestroy(&dm));
-  PetscFunctionReturn(0);
-}
-
-/* The consistent rigid load (f0, v) of the free dofs, as model/operators.c assembles it */
-static PetscErrorCode ConsistentLoad(Roller ctx, RollerPointFunc f0, Vec *L)
-{
-  DM      dm;
-  PetscDS ds;
-
-  PetscFunctionBeginUser;
-  PetscCall(RollerOperatorDMCreate(ctx, NULL, &dm));
-  PetscCall(DMGetDS(dm, &ds));
-  PetscCall(PetscDSSetResidual(ds, 0, f0, NULL));
-  PetscCall(DMCreateGlobalVector(ctx->mesh.dm, L));
-  PetscCall(RollerAddLoad(dm, *L));
-  PetscCall(DMDestroy(&dm));
-  PetscFunctionReturn(0);
-}
-
 static PetscErrorCode Form(Mat M, Vec u, Vec v, Vec work, PetscReal *value)
 {
   PetscScalar s;
@@ -92,7 +56,7 @@ static PetscErrorCode CheckAffine(Roller ctx, Mat M)
     Vec       L = k ? ctx->ops.L_euler : ctx->ops.L_centrifugal, u = k ? Rx : ctx->ops.coordinates, Lc, d;
     PetscReal nl;
 
-    PetscCall(ConsistentLoad(ctx, k ? f0_euler : f0_centrifugal, &Lc));
+    PetscCall(RollerAssembleLoad(ctx, k ? f0_euler : f0_centrifugal, &Lc));
     PetscCall(VecDuplicate(Lc, &d));
     PetscCall(VecNorm(Lc, NORM_INFINITY, &nl));
     PetscCall(MatMult(M, u, w));
@@ -230,7 +194,7 @@ int main(int argc, char **argv)
   PetscFunctionBeginUser;
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(RollerUnitSetUp(scene, ROLLER_UNIT_COUNT(scene), &ctx));
-  PetscCall(ConsistentMass(ctx, &M));
+  PetscCall(RollerAssembleMatrix(ctx, "M", g0_mass, NULL, &M));
   PetscCall(CheckAffine(ctx, M));
   PetscCall(CheckZeroRows(ctx));
   PetscCall(CheckDefinite(ctx));
