@@ -11,11 +11,9 @@ PetscErrorCode RollerContactSetTime(Roller ctx, RollerContact c, PetscReal t)
   PetscFunctionBeginUser;
   st->t = t;
   RollerTheta(ctx, t, &st->theta, NULL, NULL);
-  st->normal[0]  = PetscSinReal(st->theta);
-  st->normal[1]  = PetscCosReal(st->theta);
-  st->tangent[0] = PetscCosReal(st->theta);
-  st->tangent[1] = -PetscSinReal(st->theta);
-  st->g          = RollerObstacleHeight(ctx, t);
+  RollerContactObstacleAt(ctx, t, st->normal, &st->g);
+  st->tangent[0] = st->normal[1];
+  st->tangent[1] = -st->normal[0];
   for (PetscInt i = 0; i < c->nodes.nc; ++i) st->lower[i] = st->g - (c->nodes.xc[2 * i] * st->normal[0] + c->nodes.xc[2 * i + 1] * st->normal[1]);
   PetscFunctionReturn(0);
 }
@@ -41,8 +39,7 @@ PetscErrorCode RollerContactSetUpStep(Roller ctx, RollerContact c, PetscReal t)
   RollerContactStep *st = &c->step;
   const PetscScalar *u1, *u2;
   const PetscReal    tol  = RollerContactGapTolerance(ctx);
-  const PetscReal   *xc   = c->nodes.xc;
-  PetscReal          dmax = 0.0, reach, theta1, n1[2], g1;
+  PetscReal          dmax = 0.0, reach;
 
   PetscFunctionBeginUser;
   PetscCall(RollerContactSetTime(ctx, c, t));
@@ -53,16 +50,12 @@ PetscErrorCode RollerContactSetUpStep(Roller ctx, RollerContact c, PetscReal t)
   PetscCall(VecGetArrayRead(c->nodes.red2, &u2));
   for (PetscInt i = 0; i < c->nodes.nc; ++i) dmax = PetscMax(dmax, PetscSqrtReal(PetscSqr(PetscRealPart(u1[2 * i] - u2[2 * i])) + PetscSqr(PetscRealPart(u1[2 * i + 1] - u2[2 * i + 1]))));
   reach = c->opt.margin + PetscAbsReal(st->g - RollerObstacleHeight(ctx, st->t - ctx->ts.dt)) + 2.0 * dmax;
-  RollerTheta(ctx, ctx->state.time, &theta1, NULL, NULL);
-  n1[0] = PetscSinReal(theta1);
-  n1[1] = PetscCosReal(theta1);
-  g1    = RollerObstacleHeight(ctx, ctx->state.time);
+  PetscCall(RollerContactGapsAt(ctx, c, c->nodes.red1, ctx->state.time, st->gap)); /* gap^{k-1}; st->gap is scratch until the solve */
   for (PetscInt i = 0; i < c->nodes.nc; ++i) {
     const PetscReal p0 = PetscRealPart(2.0 * u1[2 * i] - u2[2 * i]), p1 = PetscRealPart(2.0 * u1[2 * i + 1] - u2[2 * i + 1]);
-    const PetscReal gap1 = (xc[2 * i] + PetscRealPart(u1[2 * i])) * n1[0] + (xc[2 * i + 1] + PetscRealPart(u1[2 * i + 1])) * n1[1] - g1;
 
     st->is_cand[i]     = (p0 * st->normal[0] + p1 * st->normal[1] - st->lower[i] <= reach) ? PETSC_TRUE : PETSC_FALSE;
-    st->on_obstacle[i] = gap1 <= tol ? PETSC_TRUE : PETSC_FALSE;
+    st->on_obstacle[i] = st->gap[i] <= tol ? PETSC_TRUE : PETSC_FALSE;
   }
   PetscCall(VecRestoreArrayRead(c->nodes.red1, &u1));
   PetscCall(VecRestoreArrayRead(c->nodes.red2, &u2));

@@ -11,39 +11,24 @@
    Both derive from the three checkpointed levels, so a restart reports the same. */
 #include "contact_impl.h"
 
-/* gap_n = (x_n + xi_n) . n(t) - g(t) of every node, xi gathered into red. */
-static PetscErrorCode GapsAt(Roller ctx, RollerContact c, Vec xi, PetscReal t, Vec red, PetscReal gap[], PetscReal normal[2], PetscReal *g)
-{
-  const PetscScalar *u;
-  const PetscReal   *xc = c->nodes.xc;
-  PetscReal          theta;
-
-  PetscFunctionBeginUser;
-  RollerTheta(ctx, t, &theta, NULL, NULL);
-  normal[0] = PetscSinReal(theta);
-  normal[1] = PetscCosReal(theta);
-  *g        = RollerObstacleHeight(ctx, t);
-  PetscCall(RollerContactGather(c, xi, red));
-  PetscCall(VecGetArrayRead(red, &u));
-  for (PetscInt i = 0; i < c->nodes.nc; ++i) gap[i] = (xc[2 * i] + PetscRealPart(u[2 * i])) * normal[0] + (xc[2 * i + 1] + PetscRealPart(u[2 * i + 1])) * normal[1] - *g;
-  PetscCall(VecRestoreArrayRead(red, &u));
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode RollerContactEnergy(Roller ctx, RollerContact c, const PetscReal lambda[], RollerStepInfo *info)
 {
   const PetscReal    t = ctx->state.time, dt = ctx->ts.dt, tol = RollerContactGapTolerance(ctx);
-  PetscReal         *gap0, *gap1, *gap2, n0[2], n2[2], n1[2], g0, g1, g2;
+  const PetscReal   *gap0 = c->step.gap; /* gap^k: the step's gaps of xi^k, computed by the caller (RollerContactInfo) */
+  PetscReal         *gap1, *gap2, n0[2], n2[2], g0, g2;
   const PetscScalar *u2;
 
   PetscFunctionBeginUser;
   info->obstacle_work = info->contact_dissipation = 0.0;
   info->contact_flips = info->contact_reversals = 0;
   if (ctx->state.step == 0) PetscFunctionReturn(0);
-  PetscCall(PetscMalloc3(c->nodes.nc, &gap0, c->nodes.nc, &gap1, c->nodes.nc, &gap2));
-  PetscCall(GapsAt(ctx, c, ctx->state.cur, t, c->nodes.red1, gap0, n0, &g0));
-  PetscCall(GapsAt(ctx, c, ctx->state.prev, t - dt, c->nodes.red1, gap1, n1, &g1));
-  PetscCall(GapsAt(ctx, c, ctx->state.prev2, t - 2.0 * dt, c->nodes.red2, gap2, n2, &g2));
+  PetscCall(PetscMalloc2(c->nodes.nc, &gap1, c->nodes.nc, &gap2));
+  RollerContactObstacleAt(ctx, t, n0, &g0);
+  RollerContactObstacleAt(ctx, t - 2.0 * dt, n2, &g2);
+  PetscCall(RollerContactGather(c, ctx->state.prev, c->nodes.red1));
+  PetscCall(RollerContactGapsAt(ctx, c, c->nodes.red1, t - dt, gap1));
+  PetscCall(RollerContactGather(c, ctx->state.prev2, c->nodes.red2));
+  PetscCall(RollerContactGapsAt(ctx, c, c->nodes.red2, t - 2.0 * dt, gap2));
   PetscCall(VecGetArrayRead(c->nodes.red2, &u2));
   for (PetscInt i = 0; i < c->nodes.nc; ++i) {
     const PetscBool on0 = (PetscBool)(gap0[i] <= tol), on1 = (PetscBool)(gap1[i] <= tol), on2 = (PetscBool)(gap2[i] <= tol);
@@ -57,6 +42,6 @@ PetscErrorCode RollerContactEnergy(Roller ctx, RollerContact c, const PetscReal 
     info->obstacle_work += 0.5 * lambda[i] * ((g0 - g2) - (c->nodes.xc[2 * i] + PetscRealPart(u2[2 * i])) * (n0[0] - n2[0]) - (c->nodes.xc[2 * i + 1] + PetscRealPart(u2[2 * i + 1])) * (n0[1] - n2[1]));
   }
   PetscCall(VecRestoreArrayRead(c->nodes.red2, &u2));
-  PetscCall(PetscFree3(gap0, gap1, gap2));
+  PetscCall(PetscFree2(gap1, gap2));
   PetscFunctionReturn(0);
 }

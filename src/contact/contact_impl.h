@@ -136,6 +136,8 @@ PETSC_INTERN PetscErrorCode RollerContactNodesCreate(Roller, RollerContact);
 PETSC_INTERN PetscErrorCode RollerContactNodesDestroy(RollerContact);
 PETSC_INTERN PetscErrorCode RollerContactGather(RollerContact, Vec, Vec);
 PETSC_INTERN PetscErrorCode RollerContactGaps(RollerContact, Vec, PetscReal[], PetscReal *);
+PETSC_INTERN void           RollerContactObstacleAt(Roller, PetscReal, PetscReal[2], PetscReal *);
+PETSC_INTERN PetscErrorCode RollerContactGapsAt(Roller, RollerContact, Vec, PetscReal, PetscReal[]);
 PETSC_INTERN PetscErrorCode RollerContactForce(RollerContact, const PetscReal[], Vec);
 PETSC_INTERN PetscReal      RollerContactGapTolerance(Roller);
 

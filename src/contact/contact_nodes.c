@@ -159,6 +159,33 @@ PetscErrorCode RollerContactForce(RollerContact c, const PetscReal lambda[], Vec
   PetscFunctionReturn(0);
 }
 
+/* The obstacle at time t in the rotating frame: its normal n(t) = (sin theta, cos theta) and height g(t). */
+void RollerContactObstacleAt(Roller ctx, PetscReal t, PetscReal normal[2], PetscReal *g)
+{
+  PetscReal theta;
+
+  RollerTheta(ctx, t, &theta, NULL, NULL);
+  normal[0] = PetscSinReal(theta);
+  normal[1] = PetscCosReal(theta);
+  *g        = RollerObstacleHeight(ctx, t);
+}
+
+/* gap_n = (x_n + xi_n) . n(t) - g(t) at every node from the gathered displacement red, against the obstacle
+   of time t (not necessarily the step's): the state of an earlier level (candidates, contact energy). */
+PetscErrorCode RollerContactGapsAt(Roller ctx, RollerContact c, Vec red, PetscReal t, PetscReal gap[])
+{
+  const PetscScalar *u;
+  const PetscReal   *xc = c->nodes.xc;
+  PetscReal          n[2], g;
+
+  PetscFunctionBeginUser;
+  RollerContactObstacleAt(ctx, t, n, &g);
+  PetscCall(VecGetArrayRead(red, &u));
+  for (PetscInt i = 0; i < c->nodes.nc; ++i) gap[i] = (xc[2 * i] + PetscRealPart(u[2 * i])) * n[0] + (xc[2 * i + 1] + PetscRealPart(u[2 * i + 1])) * n[1] - g;
+  PetscCall(VecRestoreArrayRead(red, &u));
+  PetscFunctionReturn(0);
+}
+
 /* gap_n = (x_n + xi_n) . n^k - g^k at every node from the gathered displacement; returns the least. */
 PetscErrorCode RollerContactGaps(RollerContact c, Vec red, PetscReal gap[], PetscReal *gap_min)
 {

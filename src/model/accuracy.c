@@ -129,7 +129,7 @@ PetscErrorCode RollerChooseMeshSize(Roller ctx)
        -mesh_h_contact 0: the uniform mesh with five elements across a (1 % in R, alpha and the averaged force). */
     const PetscReal a = PetscSqrtReal(ctx->mesh.r_outer * ctx->obstacle.depth);
 
-    if (!ctx->mesh.h_contact_set && !ctx->mesh.file[0]) {
+    if (!ctx->mesh.h_contact_set) { /* (a mesh file returned above) */
       if (a / ROLLER_CONTACT_ELEMENTS < ctx->mesh.h) {
         ctx->mesh.h_contact = a / ROLLER_CONTACT_ELEMENTS;
         if (ctx->mesh.contact_layer == 0) ctx->mesh.contact_layer = 2 * ctx->mesh.h_contact;
