@@ -42,6 +42,21 @@ typedef struct _n_RollerMonitors *RollerMonitors; /* the observers of the run (i
 /* Indices into ctx->stage for -log_view. */
 enum { ROLLER_STAGE_SETUP, ROLLER_STAGE_STEP, ROLLER_STAGE_CONTACT, ROLLER_STAGE_DIAGNOSTICS, ROLLER_STAGE_OUTPUT, ROLLER_NUM_STAGES };
 
+/* The friction and drive columns of a step (docs/friction.md): the tangential force of the sheet on the roller
+   along e1 (lab), the torque the shaft exerts, the contact nodes that stick and slip, the cumulative works of
+   the shaft and the sheet and the cumulative friction dissipation (E^k - E^0 = shaft_work + sheet_work -
+   friction_work - the other dissipations), the step's friction dissipation and the contact's parts of the step's
+   shaft and sheet works (the rotation and the motion of the sheet), the largest residual of the Coulomb law over
+   the contact nodes and the Coulomb fixed point's iterations. Zero without friction, except the torque and
+   the works. */
+typedef struct {
+  PetscReal force, torque;
+  PetscInt  stick, slip;
+  PetscReal shaft_work, sheet_work, work;
+  PetscReal dissipation, shaft_step, sheet_step, residual;
+  PetscInt  iterations;
+} RollerStepFriction;
+
 /* What the diagnostics of one step give (docs/model.md section 6, CSV columns and extras). */
 typedef struct {
   PetscReal R, alpha, energy;
@@ -51,9 +66,10 @@ typedef struct {
   PetscReal kkt_residual;
   /* the discrete energy balance of the step (docs/model.md section 2, "Dampings and the energy balance"):
      E^k - E^{k-1} = load_work + obstacle_work - contact_dissipation - damping_dissipation - viscous_dissipation */
-  PetscReal load_work, obstacle_work, contact_dissipation, damping_dissipation, viscous_dissipation;
-  PetscInt  contact_flips, contact_reversals; /* Gamma_C nodes whose state (on the obstacle or not) changed from
+  PetscReal          load_work, obstacle_work, contact_dissipation, damping_dissipation, viscous_dissipation;
+  PetscInt           contact_flips, contact_reversals; /* Gamma_C nodes whose state (on the obstacle or not) changed from
                                                  t_{k-1} to t_k; of these, those back in their state of t_{k-2} */
+  RollerStepFriction friction;
 } RollerStepInfo;
 
 /* The context, split by lifetime and owner (docs/architecture.md). Each part is filled by the component
@@ -82,15 +98,18 @@ typedef struct {
   PetscReal viscosity; /* tau of Kelvin-Voigt damping sigma = C:(eps + tau eps_t) */
 } RollerMaterial;
 
-/* The driving rotation theta(t) = omega t + a cos(b t) */
+/* The driving rotation theta(t) = omega (t - t0) + a cos(b (t - t0)) from t0 = -theta_start on, theta = a before */
 typedef struct {
-  PetscReal omega, a, b;
+  PetscReal omega, a, b, start;
 } RollerRotation;
 
-/* The obstacle g(t) = min(speed t, depth) - r_outer */
+/* The obstacle (the sheet): height g(t) = min(speed t, depth) - r_outer, lab-frame position X(t) = sheet_speed t
+   along e1, and Coulomb friction mu(v) = mu + (mu_s - mu) exp(-|v|/v_c) (friction = 0: frictionless; decay = 0:
+   constant mu) */
 typedef struct {
   PetscBool on;
-  PetscReal speed, depth;
+  PetscReal speed, depth, sheet_speed;
+  PetscReal friction, friction_static, friction_decay;
 } RollerObstacle;
 
 /* The discretization choices (model/fe.c) */
@@ -142,6 +161,10 @@ typedef struct {
   Vec       next, cur, prev, prev2, Kcur, Kprev, Kprev2, rhs, load, work;
   PetscInt  step;
   PetscReal time;
+  /* the cumulative works of the CSV (shaft, sheet, friction dissipation) up to step work_step (checkpointed),
+     and the angular momentum of level momentum_step (integrate/diagnostics.c) */
+  PetscReal works[3], momentum;
+  PetscInt  work_step, momentum_step;
 } RollerState;
 
 /* Checkpoint and restart (integrate/checkpoint.c) */

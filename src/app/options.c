@@ -49,11 +49,21 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCall(RollerMaterialSetFromOptions(ctx));
   PetscCall(RollerRotationSetFromOptions(ctx));
 
-  PetscOptionsBegin(ctx->comm, NULL, "Roller: obstacle g(t) = min(speed t, depth) - r_outer", NULL);
+  PetscOptionsBegin(ctx->comm, NULL, "Roller: obstacle (the sheet) g(t) = min(speed t, depth) - r_outer, X(t) = sheet_speed t; friction (docs/friction.md)", NULL);
   PetscCall(PetscOptionsBool("-obstacle", "Enable the rigid flat obstacle", NULL, ctx->obstacle.on, &ctx->obstacle.on, NULL));
   PetscCall(PetscOptionsReal("-obstacle_speed", "Obstacle speed v", NULL, ctx->obstacle.speed, &ctx->obstacle.speed, NULL));
   PetscCall(PetscOptionsReal("-obstacle_depth", "Final indentation depth", NULL, ctx->obstacle.depth, &ctx->obstacle.depth, NULL));
+  PetscCall(PetscOptionsReal("-sheet_speed", "Lab-frame speed V of the sheet along e1", NULL, ctx->obstacle.sheet_speed, &ctx->obstacle.sheet_speed, NULL));
+  PetscCall(PetscOptionsReal("-friction", "Coulomb friction coefficient mu (kinetic); 0: frictionless, no friction machinery", NULL, ctx->obstacle.friction, &ctx->obstacle.friction, NULL));
+  ctx->obstacle.friction_static = ctx->obstacle.friction;
+  PetscCall(PetscOptionsReal("-friction_static", "Static coefficient mu_s of mu(v) = mu + (mu_s - mu) exp(-|v|/v_c) (default: mu)", NULL, ctx->obstacle.friction_static, &ctx->obstacle.friction_static, NULL));
+  PetscCall(PetscOptionsReal("-friction_decay", "Slip speed v_c of the velocity weakening (0: none, constant mu)", NULL, ctx->obstacle.friction_decay, &ctx->obstacle.friction_decay, NULL));
   PetscOptionsEnd();
+  PetscCheck(ctx->obstacle.friction >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-friction %g must be >= 0", (double)ctx->obstacle.friction);
+  PetscCheck(ctx->obstacle.friction_static >= ctx->obstacle.friction, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-friction_static %g must be >= -friction %g", (double)ctx->obstacle.friction_static, (double)ctx->obstacle.friction);
+  PetscCheck(ctx->obstacle.friction_decay >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-friction_decay %g must be >= 0 (0: no velocity weakening)", (double)ctx->obstacle.friction_decay);
+  PetscCheck(ctx->obstacle.friction_static == ctx->obstacle.friction || ctx->obstacle.friction_decay > 0, ctx->comm, PETSC_ERR_ARG_INCOMP, "-friction_static %g differs from -friction %g: give the slip speed of the weakening, -friction_decay v_c > 0",
+             (double)ctx->obstacle.friction_static, (double)ctx->obstacle.friction);
   PetscCall(RollerMassSetFromOptions(ctx));
 
   PetscCall(RollerTimeStepSetFromOptions(ctx));
@@ -63,6 +73,7 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
 
   PetscCheck(ctx->obstacle.speed > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-obstacle_speed %g must be > 0", (double)ctx->obstacle.speed);
   /* cross-component checks */
+  PetscCheck(ctx->obstacle.on || (ctx->obstacle.friction == 0 && ctx->obstacle.sheet_speed == 0), ctx->comm, PETSC_ERR_ARG_INCOMP, "-friction %g and -sheet_speed %g need -obstacle (the sheet)", (double)ctx->obstacle.friction, (double)ctx->obstacle.sheet_speed);
   PetscCheck(ctx->obstacle.depth >= 0 && ctx->obstacle.depth < ctx->mesh.r_outer - ctx->mesh.r_inner, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-obstacle_depth %g must lie in [0, r_outer - r_inner = %g)", (double)ctx->obstacle.depth,
              (double)(ctx->mesh.r_outer - ctx->mesh.r_inner));
   PetscCheck(ctx->init.type != ROLLER_IC_BUMP || ctx->disc.clamp_outer, ctx->comm, PETSC_ERR_ARG_INCOMP, "-initial_condition bump needs -clamp_outer (the bump vanishes on both circles)");

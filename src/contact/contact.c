@@ -56,10 +56,13 @@ static PetscErrorCode ContactSetFromOptions(Roller ctx, RollerContact c, char mo
   PetscCall(PetscFree(names));
 
   PetscCall(PetscStrncpy(c->opt.solver, "condensed", sizeof(c->opt.solver)));
-  c->opt.margin       = 2e-3 * ctx->mesh.r_outer;
-  c->opt.rtol         = 1e-12;
-  c->opt.max_resolves = 20;
-  monitor[0]          = 0;
+  c->opt.margin          = 2e-3 * ctx->mesh.r_outer;
+  c->opt.rtol            = 1e-12;
+  c->opt.max_resolves    = 20;
+  c->opt.friction_qp     = ROLLER_BOXQP_ACTIVESET;
+  c->opt.friction_rtol   = 1e-10;
+  c->opt.friction_max_it = 50;
+  monitor[0]             = 0;
   PetscOptionsBegin(ctx->comm, NULL, "Roller: contact QP (docs/contact.md)", NULL);
   PetscCall(PetscOptionsFList("-contact_solver", "Per-step QP solver: condensed (Schur complement on Gamma_C, fast), vi (SNES VI), tao (TAO), pcg (the paper's projected CG)", "RollerContactSolverRegister", RollerContactSolverList, "condensed", c->opt.solver,
                               sizeof(c->opt.solver), NULL));
@@ -68,9 +71,14 @@ static PetscErrorCode ContactSetFromOptions(Roller ctx, RollerContact c, char mo
   PetscCall(PetscOptionsReal("-contact_margin", "Reach of the candidate set beyond the predicted gap (length; < 0 shrinks it, to test the penetration check)", NULL, c->opt.margin, &c->opt.margin, NULL));
   PetscCall(PetscOptionsReal("-contact_rtol", "Relative tolerance of vi, tao (-contact_tao_type, default tron) and the condensed TAO", NULL, c->opt.rtol, &c->opt.rtol, NULL));
   PetscCall(PetscOptionsInt("-contact_max_resolves", "Re-solves allowed per step when a node outside the candidate set penetrates", NULL, c->opt.max_resolves, &c->opt.max_resolves, NULL));
+  PetscCall(PetscOptionsEnum("-contact_friction_qp", "With -friction: solver of each Tresca step's box QP (activeset, tao, vi), or lemke: Coulomb as one LCP", NULL, RollerBoxQPTypes, (PetscEnum)c->opt.friction_qp, (PetscEnum *)&c->opt.friction_qp, NULL));
+  PetscCall(PetscOptionsReal("-contact_friction_rtol", "With -friction: relative tolerance of the Coulomb fixed point on lambda_N and mu(v)", NULL, c->opt.friction_rtol, &c->opt.friction_rtol, NULL));
+  PetscCall(PetscOptionsInt("-contact_friction_max_it", "With -friction: Tresca steps of the fixed point before Lemke's method takes over", NULL, c->opt.friction_max_it, &c->opt.friction_max_it, NULL));
   for (PetscInt k = 0; k < c->nsolvers; ++k)
     if (c->solvers[k]->ops->setfromoptions) PetscCall((*c->solvers[k]->ops->setfromoptions)(c->solvers[k], PetscOptionsObject));
   PetscOptionsEnd();
+  PetscCheck(c->opt.friction_rtol > 0 && c->opt.friction_rtol < 1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_friction_rtol %g must lie in (0, 1)", (double)c->opt.friction_rtol);
+  PetscCheck(c->opt.friction_max_it >= 1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_friction_max_it %" PetscInt_FMT " must be >= 1", c->opt.friction_max_it);
   PetscCheck(c->opt.margin > -ctx->mesh.r_outer, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_margin %g must be > -r_outer", (double)c->opt.margin);
   PetscCheck(c->opt.rtol > 0 && c->opt.rtol < 1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_rtol %g must lie in (0, 1)", (double)c->opt.rtol);
   PetscCheck(c->opt.max_resolves >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_max_resolves %" PetscInt_FMT " must be >= 0", c->opt.max_resolves);
@@ -131,6 +139,7 @@ PetscErrorCode RollerContactCreate(Roller ctx, RollerContact *contact)
   /* the step's solver is set up now, in the set-up stage (the condensed S: 2 N_C solves); -contact_check's
      others when first used */
   PetscCall(RollerContactSolverSetUp(c->solver, ctx, c));
+  if (ctx->obstacle.friction > 0) PetscCall(RollerContactFrictionCreate(ctx, c)); /* none at -friction 0 */
   PetscCall(PetscInfo(NULL, "Contact: %" PetscInt_FMT " Gamma_C nodes (%" PetscInt_FMT " on this rank), solver %s\n", nc, c->nodes.nown, c->solver->name));
   *contact = c;
   PetscFunctionReturn(0);
@@ -182,6 +191,8 @@ PetscErrorCode RollerContactDestroy(RollerContact *contact)
   if (!c) PetscFunctionReturn(0);
   PetscCall(RollerContactCheckSummary(c));
   PetscCall(ContactSolversDestroy(c));
+  PetscCall(RollerContactFrictionDestroy(&c->friction));
+  PetscCall(PetscFree(c->acc.result.lambda_t));
   PetscCall(PetscViewerDestroy(&c->opt.monitor));
   PetscCall(RollerContactNodesDestroy(c));
   PetscCall(VecDestroy(&c->acc.b));

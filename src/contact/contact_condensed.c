@@ -142,11 +142,14 @@ static PetscErrorCode CondensedSolve(RollerContactSolver s, Roller ctx, RollerCo
       res->lambda[cand[a]] = lcp->lam[a];
       any                  = PETSC_TRUE;
     }
+  /* with friction: the Coulomb multipliers from these (contact_friction.c; c->nodes.red still holds xi_f) */
+  if (c->friction && any) PetscCall(RollerContactFrictionSolve(ctx, c, cd->S, lcp, res));
+  else if (c->friction) PetscCall(PetscArrayzero(res->lambda_t, c->nodes.nc));
   if (!any) {
     PetscCall(VecCopy(cd->xf, xi));
     PetscFunctionReturn(0);
   }
-  PetscCall(RollerContactForce(c, res->lambda, cd->f));
+  PetscCall(RollerContactForce(c, res->lambda, res->lambda_t, cd->f));
   PetscCall(KSPSolve(ctx->ops.ksp, cd->f, cd->corr));
   PetscCall(KSPGetConvergedReason(ctx->ops.ksp, &reason));
   PetscCheck(reason > 0, ctx->comm, PETSC_ERR_NOT_CONVERGED, "The contact correction solve at t = %g diverged: %s", (double)c->step.t, KSPConvergedReasons[reason]);

@@ -6,10 +6,34 @@
                              its line, i.e. the work of the drive against the rolling resistance), and
      contact_dissipation D = 1/2 sum_n lambda^k_n gap^{k-2}_n >= 0
                              (a node arriving between t_{k-2} and t_k; xi^{k-2} is admissible at t_{k-2}).
+   The obstacle's work splits further into the sheet's (its approach, 1/2 lambda (g^k - g^{k-2})) and the shaft's
+   (the rest: the rotation of the sheet's line in the rotating frame), the contact's parts of the CSV's
+   sheet_work and shaft_work; and the contact forces' moment about the axis, sum_n (x_n + xi^k_n) x f_n, enters
+   the shaft torque (with the opposite sign: the torque the shaft must add). Friction adds its parts
+   (contact_friction.c).
    The state "on the obstacle" of a node is gap <= tol at its level; flips count the nodes whose state at t_k
    differs from t_{k-1}, reversals those of them back in their state of t_{k-2} (a contact set that chatters).
    Both derive from the three checkpointed levels, so a restart reports the same. */
 #include "contact_impl.h"
+
+/* torque = -sum_n p_n x f_n, p_n = x_n + xi^k_n (gathered in c->nodes.red), f_n = lambda_n n^k + lambda_t,n t^k. */
+static PetscErrorCode ContactMoment(RollerContact c, const PetscReal lambda[], RollerStepInfo *info)
+{
+  const PetscReal   *lt = c->acc.result.lambda_t, *nr = c->step.normal, *tg = c->step.tangent;
+  const PetscScalar *u;
+
+  PetscFunctionBeginUser;
+  info->friction.torque = 0.0;
+  PetscCall(VecGetArrayRead(c->nodes.red, &u));
+  for (PetscInt i = 0; i < c->nodes.nc; ++i) {
+    const PetscReal p0 = c->nodes.xc[2 * i] + PetscRealPart(u[2 * i]), p1 = c->nodes.xc[2 * i + 1] + PetscRealPart(u[2 * i + 1]);
+    const PetscReal f0 = lambda[i] * nr[0] + (lt ? lt[i] * tg[0] : 0.0), f1 = lambda[i] * nr[1] + (lt ? lt[i] * tg[1] : 0.0);
+
+    info->friction.torque -= p0 * f1 - p1 * f0;
+  }
+  PetscCall(VecRestoreArrayRead(c->nodes.red, &u));
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode RollerContactEnergy(Roller ctx, RollerContact c, const PetscReal lambda[], RollerStepInfo *info)
 {
@@ -21,6 +45,8 @@ PetscErrorCode RollerContactEnergy(Roller ctx, RollerContact c, const PetscReal 
   PetscFunctionBeginUser;
   info->obstacle_work = info->contact_dissipation = 0.0;
   info->contact_flips = info->contact_reversals = 0;
+  info->friction.shaft_step = info->friction.sheet_step = 0.0;
+  PetscCall(ContactMoment(c, lambda, info));
   if (ctx->state.step == 0) PetscFunctionReturn(0);
   PetscCall(PetscMalloc2(c->nodes.nc, &gap1, c->nodes.nc, &gap2));
   RollerContactObstacleAt(ctx, t, n0, &g0);
@@ -40,6 +66,8 @@ PetscErrorCode RollerContactEnergy(Roller ctx, RollerContact c, const PetscReal 
     if (lambda[i] <= 0.0) continue;
     info->contact_dissipation += 0.5 * lambda[i] * gap2[i];
     info->obstacle_work += 0.5 * lambda[i] * ((g0 - g2) - (c->nodes.xc[2 * i] + PetscRealPart(u2[2 * i])) * (n0[0] - n2[0]) - (c->nodes.xc[2 * i + 1] + PetscRealPart(u2[2 * i + 1])) * (n0[1] - n2[1]));
+    info->friction.sheet_step += 0.5 * lambda[i] * (g0 - g2);
+    info->friction.shaft_step -= 0.5 * lambda[i] * ((c->nodes.xc[2 * i] + PetscRealPart(u2[2 * i])) * (n0[0] - n2[0]) + (c->nodes.xc[2 * i + 1] + PetscRealPart(u2[2 * i + 1])) * (n0[1] - n2[1]));
   }
   PetscCall(VecRestoreArrayRead(c->nodes.red2, &u2));
   PetscCall(PetscFree2(gap1, gap2));

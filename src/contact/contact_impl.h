@@ -7,7 +7,11 @@
    contact_nodes.c       the Gamma_C nodes (gathered redundantly on every rank, in angle order), gaps, force
    contact_candidates.c  the step's basis and bounds, the candidate set, the penetrating nodes it gains
    contact_report.c      KKT residual, -contact_check, -contact_monitor, the CSV's contact columns
-   contact_pressure.c    the contact pressure output field
+   contact_pressure.c    the contact pressure and friction traction output fields
+   Friction (only with -friction > 0; docs/friction.md), a part of the condensed solver:
+   contact_friction.c    the Coulomb law, the slip, the fixed point of Tresca steps, the law's residual
+   contact_boxqp.c       the Tresca step's dual: a small dense box-constrained QP (active set, TAO, SNES VI)
+   contact_lemke.c       Coulomb as one LCP, Lemke's method (the fallback)
    The registry and the solvers (each file one solver, using the core):
    contact_registry.c    RollerContactSolverRegister, RegisterAll, the solver object's create/setup/destroy
    contact_condensed.c   the default: the QP condensed onto the multipliers of the candidates with
@@ -28,8 +32,16 @@
    candidate set) and its iteration count. */
 typedef struct {
   PetscReal *lambda;
+  PetscReal *lambda_t; /* with friction: the tangential multipliers (force lambda_t t^k), NULL otherwise */
   PetscInt   its;
 } RollerContactResult;
+
+typedef struct _n_RollerContactFriction *RollerContactFriction;
+
+/* The solvers of a Tresca step's box QP (contact_boxqp.c), and lemke: Coulomb as one LCP (contact_lemke.c) */
+typedef enum { ROLLER_BOXQP_ACTIVESET, ROLLER_BOXQP_TAO, ROLLER_BOXQP_VI, ROLLER_BOXQP_LEMKE } RollerBoxQPType;
+PETSC_INTERN const char *const RollerBoxQPTypes[];
+
 
 /* A solver's operations. setfromoptions (optional) reads its own options inside the contact options block;
    setup (optional) is called once before its first solve, when the Gamma_C nodes are known; solve finds the
@@ -63,6 +75,9 @@ typedef struct {
   PetscViewer       monitor; /* -contact_monitor, NULL when off */
   PetscViewerFormat monitor_format;
   PetscBool         monitor_header; /* the CSV header line is written */
+  RollerBoxQPType   friction_qp;    /* -contact_friction_qp: the Tresca QP solver, or lemke (Coulomb as one LCP) */
+  PetscReal         friction_rtol;  /* the Coulomb fixed point's tolerance on lambda_N and mu(v) */
+  PetscInt          friction_max_it;
 } RollerContactOptions;
 
 /* Gamma_C nodes (contact_nodes.c), fixed at creation, the same on every rank, sorted by angle: node i has its
@@ -121,6 +136,7 @@ struct _n_RollerContact {
   PetscInt              nsolvers;
   RollerContactSolver  *solvers; /* every registered solver, in registration order (set up when first used) */
   RollerContactSolver   solver;  /* the one of -contact_solver */
+  RollerContactFriction friction; /* NULL without friction (-friction 0) */
 };
 
 /* contact.c */
@@ -138,7 +154,7 @@ PETSC_INTERN PetscErrorCode RollerContactGather(RollerContact, Vec, Vec);
 PETSC_INTERN PetscErrorCode RollerContactGaps(RollerContact, Vec, PetscReal[], PetscReal *);
 PETSC_INTERN void           RollerContactObstacleAt(Roller, PetscReal, PetscReal[2], PetscReal *);
 PETSC_INTERN PetscErrorCode RollerContactGapsAt(Roller, RollerContact, Vec, PetscReal, PetscReal[]);
-PETSC_INTERN PetscErrorCode RollerContactForce(RollerContact, const PetscReal[], Vec);
+PETSC_INTERN PetscErrorCode RollerContactForce(RollerContact, const PetscReal[], const PetscReal[], Vec);
 PETSC_INTERN PetscReal      RollerContactGapTolerance(Roller);
 
 /* contact_candidates.c */
@@ -182,13 +198,17 @@ typedef struct {
 PETSC_INTERN PetscErrorCode RollerContactTaoQPObjective(Tao, Vec, PetscReal *, Vec, void *);
 PETSC_INTERN PetscErrorCode RollerContactTaoQPHessian(Tao, Vec, Mat, Mat, void *);
 
-/* contact_lcp.c: the small dense LCP of the condensed solver, its arrays sized for nc */
+/* contact_lcp.c: the small dense LCP of the condensed solver, its arrays sized for nc; with lo and up (the
+   friction's box QP, contact_boxqp.c) the bounds lo <= lam <= up instead of lam >= 0 */
 typedef struct {
   PetscReal *G, *Gff, *d, *lam, *mu, *mu2, *w;
+  PetscReal *lo, *up;
   PetscInt  *F;
   PetscBool *act;
-  /* -contact_condensed_qp tao: a sequential TAO on the same problem, rebuilt when its size changes */
+  /* -contact_condensed_qp tao: a sequential TAO on the same problem (the friction's box QP also a SNES VI),
+     on work objects rebuilt when the size changes */
   Tao                tao;
+  SNES               snes;
   Mat                tG;
   Vec                tx, tlb, tub, td;
   PetscInt           tao_m;
@@ -199,6 +219,26 @@ PETSC_INTERN PetscErrorCode RollerContactLCPCreate(PetscInt, RollerContactLCP *)
 PETSC_INTERN PetscErrorCode RollerContactLCPActiveSet(RollerContactLCP *, PetscInt, PetscReal, PetscBool[], PetscReal[], PetscInt *);
 PETSC_INTERN PetscErrorCode RollerContactLCPTao(RollerContactLCP *, PetscInt, PetscReal, PetscReal, PetscReal[], PetscInt *);
 PETSC_INTERN PetscErrorCode RollerContactLCPDestroy(RollerContactLCP *);
+PETSC_INTERN PetscErrorCode RollerContactLCPWork(RollerContactLCP *, PetscInt);
+PETSC_INTERN void           RollerContactLCPSlack(RollerContactLCP *, PetscInt, const PetscReal[], PetscReal[]);
+PETSC_INTERN PetscErrorCode RollerContactDenseSolve(const PetscReal[], PetscInt, const PetscInt[], PetscInt, PetscReal[], PetscReal[], PetscReal[]);
+
+/* contact_boxqp.c: min 1/2 x^T G x + d^T x over lo <= x <= up on the arrays of a RollerContactLCP created with
+   RollerContactBoxQPCreate (size n); state[] (-1 at lo, 0 free, 1 at up) warm-starts the active set */
+PETSC_INTERN PetscErrorCode    RollerContactBoxQPCreate(PetscInt, RollerContactLCP *);
+PETSC_INTERN PetscErrorCode    RollerContactBoxQPSolve(RollerContactLCP *, RollerBoxQPType, PetscInt, PetscReal, PetscReal, PetscInt[], PetscReal[], PetscInt *);
+PETSC_INTERN PetscErrorCode    RollerContactBoxQPDestroy(RollerContactLCP *);
+
+/* contact_lemke.c: the LCP w = M z + q >= 0, z >= 0, z . w = 0 (M n x n column-major) by Lemke's method;
+   *solved false on a secondary ray (no solution found) */
+PETSC_INTERN PetscErrorCode RollerContactLemke(PetscInt, const PetscReal[], const PetscReal[], PetscReal[], PetscInt *, PetscBool *);
+
+/* contact_friction.c */
+PETSC_INTERN PetscErrorCode RollerContactFrictionCreate(Roller, RollerContact);
+PETSC_INTERN PetscErrorCode RollerContactFrictionSolve(Roller, RollerContact, const PetscReal[], RollerContactLCP *, RollerContactResult *);
+PETSC_INTERN PetscErrorCode RollerContactFrictionInfo(Roller, RollerContact, const PetscReal[], RollerStepInfo *);
+PETSC_INTERN PetscErrorCode RollerContactFrictionState(RollerContact, PetscReal[]);
+PETSC_INTERN PetscErrorCode RollerContactFrictionDestroy(RollerContactFriction *);
 
 /* The solvers' create functions, for RollerContactSolversRegisterAll */
 PETSC_INTERN PetscErrorCode RollerContactSolverCreate_Condensed(RollerContactSolver);

@@ -14,12 +14,32 @@ PetscErrorCode RollerContactLCPCreate(PetscInt nc, RollerContactLCP *cd)
   PetscFunctionReturn(0);
 }
 
-/* lam_F = -G_FF^{-1} d_F on the free set F = {act}, lam = 0 elsewhere (dense Cholesky, LAPACK potrf). */
+/* y = G_FF^{-1} r on the index set F (nf of the m x m column-major G) by dense Cholesky (LAPACK potrf); Gff is
+   scratch of nf^2 entries. */
+PetscErrorCode RollerContactDenseSolve(const PetscReal G[], PetscInt m, const PetscInt F[], PetscInt nf, PetscReal Gff[], PetscReal r[], PetscReal y[])
+{
+  Mat Mff;
+  Vec rhs, sol;
+
+  PetscFunctionBeginUser;
+  for (PetscInt q = 0; q < nf; ++q)
+    for (PetscInt p = 0; p < nf; ++p) Gff[p + (size_t)q * nf] = G[F[p] + (size_t)F[q] * m];
+  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, nf, nf, Gff, &Mff));
+  PetscCall(MatSetOption(Mff, MAT_SPD, PETSC_TRUE));
+  PetscCall(MatCholeskyFactor(Mff, NULL, NULL));
+  PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, nf, r, &rhs));
+  PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, nf, y, &sol));
+  PetscCall(MatSolve(Mff, rhs, sol));
+  PetscCall(VecDestroy(&rhs));
+  PetscCall(VecDestroy(&sol));
+  PetscCall(MatDestroy(&Mff));
+  PetscFunctionReturn(0);
+}
+
+/* lam_F = -G_FF^{-1} d_F on the free set F = {act}, lam = 0 elsewhere. */
 static PetscErrorCode SolveFreeSet(RollerContactLCP *cd, PetscInt m, const PetscBool act[], PetscReal lam[])
 {
   PetscInt nf = 0;
-  Mat      Gff;
-  Vec      rhs, sol;
 
   PetscFunctionBeginUser;
   for (PetscInt a = 0; a < m; ++a) {
@@ -27,25 +47,14 @@ static PetscErrorCode SolveFreeSet(RollerContactLCP *cd, PetscInt m, const Petsc
     if (act[a]) cd->F[nf++] = a;
   }
   if (!nf) PetscFunctionReturn(0);
-  for (PetscInt q = 0; q < nf; ++q) {
-    for (PetscInt p = 0; p < nf; ++p) cd->Gff[p + (size_t)q * nf] = cd->G[cd->F[p] + (size_t)cd->F[q] * m];
-    cd->w[q] = -cd->d[cd->F[q]];
-  }
-  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, nf, nf, cd->Gff, &Gff));
-  PetscCall(MatSetOption(Gff, MAT_SPD, PETSC_TRUE));
-  PetscCall(MatCholeskyFactor(Gff, NULL, NULL));
-  PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, nf, cd->w, &rhs));
-  PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, nf, cd->mu2, &sol));
-  PetscCall(MatSolve(Gff, rhs, sol));
-  PetscCall(VecDestroy(&rhs));
-  PetscCall(VecDestroy(&sol));
-  PetscCall(MatDestroy(&Gff));
+  for (PetscInt q = 0; q < nf; ++q) cd->w[q] = -cd->d[cd->F[q]];
+  PetscCall(RollerContactDenseSolve(cd->G, m, cd->F, nf, cd->Gff, cd->w, cd->mu2));
   for (PetscInt q = 0; q < nf; ++q) lam[cd->F[q]] = cd->mu2[q];
   PetscFunctionReturn(0);
 }
 
 /* w = G lam + d */
-static void Slack(RollerContactLCP *cd, PetscInt m, const PetscReal lam[], PetscReal w[])
+void RollerContactLCPSlack(RollerContactLCP *cd, PetscInt m, const PetscReal lam[], PetscReal w[])
 {
   for (PetscInt a = 0; a < m; ++a) w[a] = cd->d[a];
   for (PetscInt b = 0; b < m; ++b)
@@ -69,7 +78,7 @@ PetscErrorCode RollerContactLCPActiveSet(RollerContactLCP *cd, PetscInt m, Petsc
     PetscInt changed = 0;
 
     PetscCall(SolveFreeSet(cd, m, act, lam));
-    Slack(cd, m, lam, cd->w);
+    RollerContactLCPSlack(cd, m, lam, cd->w);
     for (PetscInt a = 0; a < m; ++a) {
       const PetscBool next = act[a] ? (lam[a] > 0.0 ? PETSC_TRUE : PETSC_FALSE) : (cd->w[a] < -tol ? PETSC_TRUE : PETSC_FALSE);
 
@@ -114,7 +123,7 @@ PetscErrorCode RollerContactLCPActiveSet(RollerContactLCP *cd, PetscInt m, Petsc
       PetscInt  amin = -1;
       PetscReal wmin = -tol;
 
-      Slack(cd, m, lam, cd->w);
+      RollerContactLCPSlack(cd, m, lam, cd->w);
       for (PetscInt a = 0; a < m; ++a)
         if (!act[a] && cd->w[a] < wmin) {
           wmin = cd->w[a];
@@ -132,39 +141,71 @@ PetscErrorCode RollerContactLCPActiveSet(RollerContactLCP *cd, PetscInt m, Petsc
   SETERRQ(PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED, "Condensed contact QP: the active-set method did not terminate in %" PetscInt_FMT " iterations", it);
 }
 
-/* The TAO solver and its work objects, sized for one number of candidates. */
-static PetscErrorCode TaoWorkDestroy(RollerContactLCP *cd)
+/* The work objects sized for one problem size m (the dense matrix, solution, bounds, linear term), and the TAO
+   and SNES that use them: rebuilt when the size changes. */
+static PetscErrorCode WorkDestroy(RollerContactLCP *cd)
 {
   PetscFunctionBeginUser;
   PetscCall(TaoDestroy(&cd->tao));
+  PetscCall(SNESDestroy(&cd->snes));
   PetscCall(MatDestroy(&cd->tG));
   PetscCall(VecDestroy(&cd->tx));
   PetscCall(VecDestroy(&cd->tlb));
   PetscCall(VecDestroy(&cd->tub));
   PetscCall(VecDestroy(&cd->td));
+  cd->tao_m = 0;
   PetscFunctionReturn(0);
 }
 
-/* -contact_condensed_qp tao: the same small problem with a TAO bound-constrained solver (prefix
-   contact_condensed_, default gpcg, the TAO method for bound-constrained QPs), from lam = 0, to the absolute
-   tolerance gatol of the gradient G lam + d (a gap); t is the step's time, for the error message. */
-PetscErrorCode RollerContactLCPTao(RollerContactLCP *cd, PetscInt m, PetscReal gatol, PetscReal t, PetscReal lam[], PetscInt *its)
+/* The work objects for size m, filled with G, d and the bounds (lo, up if set, else 0 and +inf). */
+PetscErrorCode RollerContactLCPWork(RollerContactLCP *cd, PetscInt m)
 {
-  PetscScalar       *a;
-  const PetscScalar *x;
-  TaoType            ttype;
-  TaoConvergedReason reason;
+  PetscScalar *a;
 
   PetscFunctionBeginUser;
   if (cd->tao_m != m) {
-    PetscCall(TaoWorkDestroy(cd));
+    PetscCall(WorkDestroy(cd));
     PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, m, m, NULL, &cd->tG));
     PetscCall(VecCreateSeq(PETSC_COMM_SELF, m, &cd->tx));
     PetscCall(VecDuplicate(cd->tx, &cd->tlb));
     PetscCall(VecDuplicate(cd->tx, &cd->tub));
     PetscCall(VecDuplicate(cd->tx, &cd->td));
+    cd->tao_m = m;
+  }
+  PetscCall(MatDenseGetArrayWrite(cd->tG, &a));
+  for (size_t k = 0; k < (size_t)m * m; ++k) a[k] = cd->G[k];
+  PetscCall(MatDenseRestoreArrayWrite(cd->tG, &a));
+  PetscCall(MatAssemblyBegin(cd->tG, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(cd->tG, MAT_FINAL_ASSEMBLY));
+  PetscCall(VecGetArrayWrite(cd->td, &a));
+  for (PetscInt k = 0; k < m; ++k) a[k] = cd->d[k];
+  PetscCall(VecRestoreArrayWrite(cd->td, &a));
+  if (cd->lo) {
+    PetscCall(VecGetArrayWrite(cd->tlb, &a));
+    for (PetscInt k = 0; k < m; ++k) a[k] = cd->lo[k];
+    PetscCall(VecRestoreArrayWrite(cd->tlb, &a));
+    PetscCall(VecGetArrayWrite(cd->tub, &a));
+    for (PetscInt k = 0; k < m; ++k) a[k] = cd->up[k] >= PETSC_MAX_REAL ? PETSC_INFINITY : cd->up[k];
+    PetscCall(VecRestoreArrayWrite(cd->tub, &a));
+  } else {
     PetscCall(VecSet(cd->tlb, 0.0));
     PetscCall(VecSet(cd->tub, PETSC_INFINITY));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* -contact_condensed_qp tao (and the friction's box QP): the same small problem with a TAO bound-constrained
+   solver (prefix contact_condensed_, default gpcg, the TAO method for bound-constrained QPs), from lam = 0, to
+   the absolute tolerance gatol of the gradient G lam + d (a gap); t is the step's time, for the error message. */
+PetscErrorCode RollerContactLCPTao(RollerContactLCP *cd, PetscInt m, PetscReal gatol, PetscReal t, PetscReal lam[], PetscInt *its)
+{
+  const PetscScalar *x;
+  TaoType            ttype;
+  TaoConvergedReason reason;
+
+  PetscFunctionBeginUser;
+  PetscCall(RollerContactLCPWork(cd, m));
+  if (!cd->tao) {
     PetscCall(TaoCreate(PETSC_COMM_SELF, &cd->tao));
     PetscCall(TaoSetOptionsPrefix(cd->tao, "contact_condensed_"));
     PetscCall(TaoSetType(cd->tao, TAOGPCG));
@@ -177,16 +218,7 @@ PetscErrorCode RollerContactLCPTao(RollerContactLCP *cd, PetscInt m, PetscReal g
     PetscCall(TaoSetVariableBounds(cd->tao, cd->tlb, cd->tub));
     PetscCall(TaoSetMaximumIterations(cd->tao, 10000));
     PetscCall(TaoSetFromOptions(cd->tao));
-    cd->tao_m = m;
   }
-  PetscCall(MatDenseGetArrayWrite(cd->tG, &a));
-  for (size_t k = 0; k < (size_t)m * m; ++k) a[k] = cd->G[k];
-  PetscCall(MatDenseRestoreArrayWrite(cd->tG, &a));
-  PetscCall(MatAssemblyBegin(cd->tG, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(cd->tG, MAT_FINAL_ASSEMBLY));
-  PetscCall(VecGetArrayWrite(cd->td, &a));
-  for (PetscInt k = 0; k < m; ++k) a[k] = cd->d[k];
-  PetscCall(VecRestoreArrayWrite(cd->td, &a));
   PetscCall(VecZeroEntries(cd->tx));
   PetscCall(TaoSetTolerances(cd->tao, gatol, 0.0, 0.0));
   PetscCall(TaoSolve(cd->tao));
@@ -195,7 +227,7 @@ PetscErrorCode RollerContactLCPTao(RollerContactLCP *cd, PetscInt m, PetscReal g
   PetscCall(TaoGetIterationNumber(cd->tao, its));
   PetscCheck(reason > 0, PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED, "Condensed contact QP at t = %g: TAO %s did not converge: %s", (double)t, ttype, TaoConvergedReasons[reason]);
   PetscCall(VecGetArrayRead(cd->tx, &x));
-  for (PetscInt k = 0; k < m; ++k) lam[k] = PetscMax(0.0, PetscRealPart(x[k]));
+  for (PetscInt k = 0; k < m; ++k) lam[k] = cd->lo ? PetscMin(PetscMax(cd->lo[k], PetscRealPart(x[k])), cd->up[k]) : PetscMax(0.0, PetscRealPart(x[k]));
   PetscCall(VecRestoreArrayRead(cd->tx, &x));
   PetscFunctionReturn(0);
 }
@@ -205,6 +237,6 @@ PetscErrorCode RollerContactLCPDestroy(RollerContactLCP *cd)
   PetscFunctionBeginUser;
   PetscCall(PetscFree4(cd->G, cd->Gff, cd->d, cd->lam));
   PetscCall(PetscFree5(cd->mu, cd->mu2, cd->w, cd->F, cd->act));
-  PetscCall(TaoWorkDestroy(cd));
+  PetscCall(WorkDestroy(cd));
   PetscFunctionReturn(0);
 }

@@ -140,9 +140,10 @@ PetscErrorCode RollerContactGather(RollerContact c, Vec v, Vec red)
   PetscFunctionReturn(0);
 }
 
-/* f = E N lambda: the nodal force lambda_n n^k at every owned Gamma_C node, 0 elsewhere. Every rank holds
-   all multipliers and writes its own nodes, which is the reverse scatter without communication. */
-PetscErrorCode RollerContactForce(RollerContact c, const PetscReal lambda[], Vec f)
+/* f = E (N lambda + T lambda_t): the nodal force lambda_n n^k (+ lambda_t,n t^k with friction; lambda_t may be
+   NULL) at every owned Gamma_C node, 0 elsewhere. Every rank holds all multipliers and writes its own nodes,
+   which is the reverse scatter without communication. */
+PetscErrorCode RollerContactForce(RollerContact c, const PetscReal lambda[], const PetscReal lambda_t[], Vec f)
 {
   PetscScalar *fa;
 
@@ -154,6 +155,10 @@ PetscErrorCode RollerContactForce(RollerContact c, const PetscReal lambda[], Vec
 
     fa[off]     = lambda[i] * c->step.normal[0];
     fa[off + 1] = lambda[i] * c->step.normal[1];
+    if (lambda_t) {
+      fa[off] += lambda_t[i] * c->step.tangent[0];
+      fa[off + 1] += lambda_t[i] * c->step.tangent[1];
+    }
   }
   PetscCall(VecRestoreArray(f, &fa));
   PetscFunctionReturn(0);

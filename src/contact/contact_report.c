@@ -14,7 +14,7 @@ PetscErrorCode RollerContactKKT(Roller ctx, RollerContact c, Vec xi, const Petsc
   PetscFunctionBeginUser;
   PetscCall(RollerContactGather(c, xi, c->nodes.red));
   PetscCall(RollerContactGaps(c, c->nodes.red, c->step.gap, gap_min));
-  PetscCall(RollerContactForce(c, lambda, acc->force));
+  PetscCall(RollerContactForce(c, lambda, lambda == acc->result.lambda ? acc->result.lambda_t : NULL, acc->force));
   PetscCall(MatMult(ctx->ops.A, xi, acc->work));
   PetscCall(VecAXPBYPCZ(acc->work, -1.0, -1.0, 1.0, acc->b, acc->force));
   PetscCall(VecNorm(acc->work, NORM_2, &nr));
@@ -118,13 +118,21 @@ static PetscErrorCode ContactMonitor(Roller ctx, RollerContact c, const RollerSt
   PetscCall(VecRestoreArrayRead(c->nodes.red, &u));
   if (info->contact_force > 0) s2 /= info->contact_force;
   if (c->opt.monitor_format == PETSC_VIEWER_ASCII_CSV) {
-    if (!c->opt.monitor_header) PetscCall(PetscViewerASCIIPrintf(v, "step,t,nodes,force,s_min,s_max,s_centroid,s_rms,candidates,resolves\n"));
+    if (!c->opt.monitor_header)
+      PetscCall(PetscViewerASCIIPrintf(v, c->friction ? "step,t,nodes,force,s_min,s_max,s_centroid,s_rms,candidates,resolves,stick,slip,friction_force,law_residual,coulomb_iterations\n" : "step,t,nodes,force,s_min,s_max,s_centroid,s_rms,candidates,resolves\n"));
     c->opt.monitor_header = PETSC_TRUE;
-    PetscCall(PetscViewerASCIIPrintf(v, "%" PetscInt_FMT ",%.17g,%" PetscInt_FMT ",%.17g,%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%" PetscInt_FMT "\n", ctx->state.step, (double)c->step.t, info->contact_nodes, (double)info->contact_force, (double)smin, (double)smax, (double)sbar, (double)PetscSqrtReal(s2),
+    PetscCall(PetscViewerASCIIPrintf(v, "%" PetscInt_FMT ",%.17g,%" PetscInt_FMT ",%.17g,%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%" PetscInt_FMT, ctx->state.step, (double)c->step.t, info->contact_nodes, (double)info->contact_force, (double)smin, (double)smax, (double)sbar, (double)PetscSqrtReal(s2),
                                      c->step.ncand, c->step.resolves));
+    if (c->friction)
+      PetscCall(PetscViewerASCIIPrintf(v, ",%" PetscInt_FMT ",%" PetscInt_FMT ",%.17g,%.17g,%" PetscInt_FMT, info->friction.stick, info->friction.slip, (double)info->friction.force, (double)info->friction.residual, info->friction.iterations));
+    PetscCall(PetscViewerASCIIPrintf(v, "\n"));
   } else {
-    PetscCall(PetscViewerASCIIPrintf(v, "contact_monitor: step %" PetscInt_FMT " t %.6g nodes %" PetscInt_FMT " force %.10e s_min %+.10e s_max %+.10e s_centroid %+.10e s_rms %.10e candidates %" PetscInt_FMT " resolves %" PetscInt_FMT "\n", ctx->state.step,
+    PetscCall(PetscViewerASCIIPrintf(v, "contact_monitor: step %" PetscInt_FMT " t %.6g nodes %" PetscInt_FMT " force %.10e s_min %+.10e s_max %+.10e s_centroid %+.10e s_rms %.10e candidates %" PetscInt_FMT " resolves %" PetscInt_FMT, ctx->state.step,
                                      (double)c->step.t, info->contact_nodes, (double)info->contact_force, (double)smin, (double)smax, (double)sbar, (double)PetscSqrtReal(s2), c->step.ncand, c->step.resolves));
+    if (c->friction)
+      PetscCall(PetscViewerASCIIPrintf(v, " stick %" PetscInt_FMT " slip %" PetscInt_FMT " friction_force %+.10e law_residual %.3e coulomb_its %" PetscInt_FMT, info->friction.stick, info->friction.slip, (double)info->friction.force,
+                                       (double)info->friction.residual, info->friction.iterations));
+    PetscCall(PetscViewerASCIIPrintf(v, "\n"));
   }
   PetscFunctionReturn(0);
 }
@@ -154,6 +162,7 @@ PetscErrorCode RollerContactInfo(Roller ctx, RollerContact c, Vec xi, PetscReal 
   info->qp_iterations = res->its;
   info->kkt_residual  = kkt;
   PetscCall(RollerContactEnergy(ctx, c, res->lambda, info));
+  if (c->friction) PetscCall(RollerContactFrictionInfo(ctx, c, res->lambda, info));
   if (c->opt.monitor) PetscCall(ContactMonitor(ctx, c, info));
   PetscFunctionReturn(0);
 }

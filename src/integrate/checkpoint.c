@@ -24,6 +24,7 @@ static void History(Roller ctx, Vec v[3])
 }
 
 static const char *const history_names[3] = {"xi_k", "xi_k1", "xi_k2"};
+static const char *const work_names[3]    = {"shaft_work", "sheet_work", "friction_work"}; /* state.works */
 
 PetscErrorCode RollerCheckpointSetFromOptions(Roller ctx)
 {
@@ -82,6 +83,7 @@ PetscErrorCode RollerCheckpointWrite(Roller ctx, const char *path)
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "mesh_h", PETSC_REAL, &ctx->mesh.h));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "mesh_h_contact", PETSC_REAL, &ctx->mesh.h_contact));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "mesh_contact_layer", PETSC_REAL, &ctx->mesh.contact_layer));
+  for (PetscInt i = 0; i < 3; ++i) PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", work_names[i], PETSC_REAL, &ctx->state.works[i]));
   PetscCall(PetscViewerDestroy(&viewer));
   PetscCall(RollerRenameFile(ctx->comm, tmp, path));
   PetscFunctionReturn(0);
@@ -153,6 +155,16 @@ PetscErrorCode RollerCheckpointRead(Roller ctx, const char *path)
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "time", PETSC_REAL, NULL, &ctx->state.time));
   History(ctx, v);
   for (PetscInt i = 0; i < 3; ++i) PetscCall(PlainView(v[i], history_names[i], viewer, PETSC_TRUE));
+  /* the cumulative works up to the checkpoint's step (checkpoints before friction have none: 0) */
+  for (PetscInt i = 0; i < 3; ++i) {
+    PetscBool has;
+
+    PetscCall(PetscViewerHDF5HasAttribute(viewer, "/", work_names[i], &has));
+    ctx->state.works[i] = 0.0;
+    if (has) PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", work_names[i], PETSC_REAL, NULL, &ctx->state.works[i]));
+  }
+  ctx->state.work_step     = ctx->state.step;
+  ctx->state.momentum_step = -1;
   PetscCall(PetscViewerDestroy(&viewer));
   PetscCall(MatMult(ctx->ops.K, ctx->state.cur, ctx->state.Kcur));
   PetscCall(MatMult(ctx->ops.K, ctx->state.prev, ctx->state.Kprev));

@@ -47,6 +47,56 @@ static PetscErrorCode EnergyBalance(Roller ctx, RollerStepInfo *info)
   PetscFunctionReturn(0);
 }
 
+/* L = rho int (x + xi) x (xi_t + theta' J (x + xi)): the angular momentum in the lab of level xi (at t) with the
+   velocity (xi - xi_prev)/dt; with M acting alike on both components, p x v = p . R(-pi/2) v and
+   L = rho (M p) . (R(-pi/2) (xi - xi_prev)/dt + theta' p), p = x + xi. Scratch: work, next, rhs. */
+static PetscErrorCode AngularMomentum(Roller ctx, Vec xi, Vec xi_prev, PetscReal t, PetscReal *L)
+{
+  Vec         p = ctx->state.work, Mp = ctx->state.next, v = ctx->state.rhs;
+  PetscReal   td;
+  PetscScalar a, b;
+
+  PetscFunctionBeginUser;
+  RollerTheta(ctx, t, NULL, &td, NULL);
+  PetscCall(VecWAXPY(p, 1.0, ctx->ops.coordinates, xi));
+  PetscCall(MatMult(ctx->ops.M, p, Mp));
+  PetscCall(VecDot(p, Mp, &a));
+  PetscCall(VecWAXPY(p, -1.0, xi_prev, xi));
+  PetscCall(RollerApplyRotate90(p, v));
+  PetscCall(VecDot(v, Mp, &b));
+  *L = ctx->material.density * (PetscRealPart(b) / ctx->ts.dt + td * PetscRealPart(a));
+  PetscFunctionReturn(0);
+}
+
+/* The shaft torque T^k = (L^k - L^{k-1})/dt - (the contact forces' moment, already in info: contact layer), and
+   the cumulative works: the shaft's (the rigid loads' work and the contact's rotation parts), the sheet's, the
+   friction dissipation (docs/friction.md), each step added once (a restart reads them from the checkpoint). */
+static PetscErrorCode DriveAndWorks(Roller ctx, RollerStepInfo *info)
+{
+  RollerState *st = &ctx->state;
+  PetscReal    L, Lprev = 0.0;
+
+  PetscFunctionBeginUser;
+  if (st->step > 0) {
+    if (st->momentum_step == st->step - 1) Lprev = st->momentum;
+    else PetscCall(AngularMomentum(ctx, st->prev, st->prev2, st->time - ctx->ts.dt, &Lprev));
+  }
+  PetscCall(AngularMomentum(ctx, st->cur, st->prev, st->time, &L));
+  if (st->step > 0) info->friction.torque += (L - Lprev) / ctx->ts.dt;
+  st->momentum      = L;
+  st->momentum_step = st->step;
+  if (st->step > st->work_step) {
+    st->works[0] += info->load_work + info->friction.shaft_step;
+    st->works[1] += info->friction.sheet_step;
+    st->works[2] += info->friction.dissipation;
+    st->work_step = st->step;
+  }
+  info->friction.shaft_work = st->works[0];
+  info->friction.sheet_work = st->works[1];
+  info->friction.work       = st->works[2];
+  PetscFunctionReturn(0);
+}
+
 /* Fill ctx->info for the newest level xi1 = xi^k at t = k dt. */
 PetscErrorCode RollerComputeStepInfo(Roller ctx)
 {
@@ -61,6 +111,7 @@ PetscErrorCode RollerComputeStepInfo(Roller ctx)
   info->alpha = PetscRealPart(a) / ctx->mesh.boundary_length;
   PetscCall(Energy(ctx, &info->energy));
   PetscCall(EnergyBalance(ctx, info));
+  PetscCall(PetscMemzero(&info->friction, sizeof(info->friction)));
   if (ctx->contact) PetscCall(RollerContactInfo(ctx, ctx->contact, ctx->state.cur, ctx->state.time, info));
   else {
     /* no obstacle: no contact, and no gap to report (docs/output.md) */
@@ -72,6 +123,7 @@ PetscErrorCode RollerComputeStepInfo(Roller ctx)
     info->obstacle_work = info->contact_dissipation = 0.0;
     info->contact_flips = info->contact_reversals = 0;
   }
+  PetscCall(DriveAndWorks(ctx, info));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }

@@ -54,8 +54,11 @@ PetscErrorCode RollerInitialState(Roller ctx)
   PetscCall(MatMult(ctx->ops.K, ctx->state.cur, ctx->state.Kcur));
   PetscCall(MatMult(ctx->ops.K, ctx->state.prev, ctx->state.Kprev));
   PetscCall(MatMult(ctx->ops.K, ctx->state.prev2, ctx->state.Kprev2));
-  ctx->state.step = 0;
-  ctx->state.time = 0.0;
+  ctx->state.step          = 0;
+  ctx->state.time          = 0.0;
+  ctx->state.work_step     = 0;
+  ctx->state.momentum_step = -1;
+  for (PetscInt i = 0; i < 3; ++i) ctx->state.works[i] = 0.0;
   PetscFunctionReturn(0);
 }
 

@@ -95,19 +95,24 @@ static PetscErrorCode WriteParameters(Roller ctx, PetscViewer h5)
     const char *name;
     PetscReal   value;
   } p[] = {
-    {"r_inner",        ctx->mesh.r_inner      },
-    {"r_outer",        ctx->mesh.r_outer      },
-    {"young",          ctx->material.young    },
-    {"poisson",        ctx->material.poisson  },
-    {"density",        ctx->material.density  },
-    {"viscosity",      ctx->material.viscosity},
-    {"omega",          ctx->rotation.omega    },
-    {"theta_a",        ctx->rotation.a        },
-    {"theta_b",        ctx->rotation.b        },
-    {"obstacle_speed", ctx->obstacle.speed    },
-    {"obstacle_depth", ctx->obstacle.depth    },
-    {"damping",        ctx->disc.damping      },
-    {"dt",             ctx->ts.dt             },
+    {"r_inner",         ctx->mesh.r_inner            },
+    {"r_outer",         ctx->mesh.r_outer            },
+    {"young",           ctx->material.young          },
+    {"poisson",         ctx->material.poisson        },
+    {"density",         ctx->material.density        },
+    {"viscosity",       ctx->material.viscosity      },
+    {"omega",           ctx->rotation.omega          },
+    {"theta_a",         ctx->rotation.a              },
+    {"theta_b",         ctx->rotation.b              },
+    {"theta_start",     ctx->rotation.start          },
+    {"obstacle_speed",  ctx->obstacle.speed          },
+    {"obstacle_depth",  ctx->obstacle.depth          },
+    {"sheet_speed",     ctx->obstacle.sheet_speed    },
+    {"friction",        ctx->obstacle.friction       },
+    {"friction_static", ctx->obstacle.friction_static},
+    {"friction_decay",  ctx->obstacle.friction_decay },
+    {"damping",         ctx->disc.damping            },
+    {"dt",              ctx->ts.dt                   },
   };
   const PetscInt obstacle = ctx->obstacle.on ? 1 : 0;
 

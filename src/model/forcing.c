@@ -5,20 +5,29 @@
 PetscErrorCode RollerRotationSetFromOptions(Roller ctx)
 {
   PetscFunctionBeginUser;
-  PetscOptionsBegin(ctx->comm, NULL, "Roller: rotation theta(t) = omega t + a cos(b t)", NULL);
+  PetscOptionsBegin(ctx->comm, NULL, "Roller: rotation theta(t) = omega (t - t0) + a cos(b (t - t0)) for t >= t0, a before", NULL);
   PetscCall(PetscOptionsReal("-omega", "Angular velocity omega", NULL, ctx->rotation.omega, &ctx->rotation.omega, NULL));
   PetscCall(PetscOptionsReal("-theta_a", "Amplitude a of the rotation perturbation", NULL, ctx->rotation.a, &ctx->rotation.a, NULL));
   PetscCall(PetscOptionsReal("-theta_b", "Angular frequency b of the rotation perturbation", NULL, ctx->rotation.b, &ctx->rotation.b, NULL));
+  PetscCall(PetscOptionsReal("-theta_start", "Time t0 at which the drive starts (the roller is held at theta = a before: press first, then turn)", NULL, ctx->rotation.start, &ctx->rotation.start, NULL));
   PetscOptionsEnd();
+  PetscCheck(ctx->rotation.start >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-theta_start %g must be >= 0", (double)ctx->rotation.start);
   PetscCheck(ctx->rotation.b >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-theta_b %g must be >= 0", (double)ctx->rotation.b);
   PetscFunctionReturn(0);
 }
 
-/* theta(t) = omega t + a cos(b t) and its first two derivatives. */
-void RollerTheta(Roller ctx, PetscReal t, PetscReal *theta, PetscReal *theta_dot, PetscReal *theta_ddot)
+/* theta(t) = omega (t - t0) + a cos(b (t - t0)) and its first two derivatives; theta = a, at rest, before t0 > 0.
+   With t0 = 0 the formula holds for t < 0 too: the initial state turns with theta'(0) (the levels xi^{-1}, xi^{-2}). */
+void RollerTheta(Roller ctx, PetscReal t_abs, PetscReal *theta, PetscReal *theta_dot, PetscReal *theta_ddot)
 {
-  const PetscReal a = ctx->rotation.a, b = ctx->rotation.b;
+  const PetscReal a = ctx->rotation.a, b = ctx->rotation.b, t = t_abs - ctx->rotation.start;
 
+  if (t < 0 && ctx->rotation.start > 0) {
+    if (theta) *theta = a;
+    if (theta_dot) *theta_dot = 0.0;
+    if (theta_ddot) *theta_ddot = 0.0;
+    return;
+  }
   if (theta) *theta = ctx->rotation.omega * t + a * PetscCosReal(b * t);
   if (theta_dot) *theta_dot = ctx->rotation.omega - a * b * PetscSinReal(b * t);
   if (theta_ddot) *theta_ddot = -a * b * b * PetscCosReal(b * t);
@@ -28,6 +37,12 @@ void RollerTheta(Roller ctx, PetscReal t, PetscReal *theta, PetscReal *theta_dot
 PetscReal RollerObstacleHeight(Roller ctx, PetscReal t)
 {
   return PetscMin(ctx->obstacle.speed * t, ctx->obstacle.depth) - ctx->mesh.r_outer;
+}
+
+/* X(t) = V t: the sheet's lab-frame position along e1 (docs/friction.md). */
+PetscReal RollerSheetPosition(Roller ctx, PetscReal t)
+{
+  return ctx->obstacle.sheet_speed * t;
 }
 
 /* y = R(-pi/2) x at every node: (a, b) -> (b, -a). Displacement dofs are stored in (x, y) pairs, and a

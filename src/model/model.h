@@ -23,6 +23,7 @@ PETSC_INTERN PetscErrorCode RollerMaterialSetConstants(Roller, PetscDS); /* (lam
 /* forcing.c: theta and its derivatives, the obstacle height, R(-pi/2) */
 PETSC_INTERN PetscErrorCode RollerRotationSetFromOptions(Roller);
 PETSC_INTERN void           RollerTheta(Roller, PetscReal, PetscReal *, PetscReal *, PetscReal *);
+PETSC_INTERN PetscReal      RollerSheetPosition(Roller, PetscReal);
 PETSC_INTERN PetscReal      RollerObstacleHeight(Roller, PetscReal);
 PETSC_INTERN PetscErrorCode RollerApplyRotate90(Vec, Vec);
 

@@ -1,0 +1,317 @@
+/* Coulomb friction between Gamma_C and the sheet (docs/friction.md), a part of the condensed solver built only
+   when -friction > 0. A node's lab coordinate along e1 is s_n = t(t) . (x_n + xi_n) (t(t) = R(-theta) e1, the
+   step's tangent); its slip over the step is the increment the DMF energy identity pairs the forces with,
+     Delta s_n = t^k . (x_n + xi^k_n) - t^{k-2} . (x_n + xi^{k-2}_n) - (X(t_k) - X(t_{k-2})).
+   With the normal forces fixed (Tresca) the step is min J^k(xi) + sum_n g_n |Delta s_n(xi)| under the obstacle
+   bound; condensed on the candidates (contact_condensed.c) its dual is the box QP of contact_boxqp.c in
+   x = (lambda_N, lambda_T): G = B^T S B, d = (gaps, slips of the free solution), lambda_N >= 0,
+   |lambda_T| <= g. Coulomb is the fixed point g = mu(v) lambda_N of Tresca steps, v = |Delta s|/(2 dt) the slip
+   speed, from the frictionless multipliers; if it has not converged in -contact_friction_max_it steps, Coulomb as
+   one LCP by Lemke's method (contact_lemke.c) takes over, and if that ends on a ray the step fails with an error. */
+#include "contact_impl.h"
+
+struct _n_RollerContactFriction {
+  PetscReal        mu, mu_s, v_c;
+  RollerContactLCP box;        /* the Tresca dual, sized 2 nc */
+  PetscInt        *state;      /* 2 nc: its active bounds, warm start of the next Tresca step */
+  PetscReal       *lam_n;      /* nc: lambda_N of the last iterate */
+  PetscReal       *mu_n;       /* nc: mu(v) of the candidates at the last iterate */
+  PetscReal       *x;          /* 2 nc: the box QP's solution */
+  PetscInt        *node_state; /* nc: 0 off the sheet, 1 stick, 2 slip, of the accepted step */
+  PetscReal       *M, *q, *z;  /* Lemke's LCP of 4 m unknowns (allocated when first needed, for lemke_cap) */
+  PetscInt         lemke_cap, its, lemke_steps;
+};
+
+/* mu(v) = mu + (mu_s - mu) exp(-v / v_c), constant mu without -friction_decay */
+static PetscReal FrictionCoefficient(RollerContactFriction fr, PetscReal v)
+{
+  return fr->v_c > 0 ? fr->mu + (fr->mu_s - fr->mu) * PetscExpReal(-v / fr->v_c) : fr->mu;
+}
+
+PetscErrorCode RollerContactFrictionCreate(Roller ctx, RollerContact c)
+{
+  RollerContactFriction fr;
+  const PetscInt        nc = c->nodes.nc;
+  PetscBool             condensed;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrcmp(c->solver->name, "condensed", &condensed));
+  PetscCheck(condensed, ctx->comm, PETSC_ERR_ARG_INCOMP, "-friction %g needs -contact_solver condensed (given: %s); its Tresca QP solver is -contact_friction_qp activeset, tao, vi or lemke", (double)ctx->obstacle.friction, c->solver->name);
+  PetscCheck(!c->opt.check, ctx->comm, PETSC_ERR_ARG_INCOMP, "-contact_check compares the frictionless solvers; with -friction compare runs with -contact_friction_qp activeset, tao, vi and lemke");
+  PetscCall(PetscNew(&fr));
+  fr->mu   = ctx->obstacle.friction;
+  fr->mu_s = ctx->obstacle.friction_static;
+  fr->v_c  = ctx->obstacle.friction_decay;
+  PetscCall(RollerContactBoxQPCreate(2 * nc, &fr->box));
+  PetscCall(PetscMalloc5(2 * nc, &fr->state, nc, &fr->lam_n, nc, &fr->mu_n, 2 * nc, &fr->x, nc, &fr->node_state));
+  PetscCall(PetscArrayzero(fr->node_state, nc));
+  PetscCall(PetscMalloc1(nc, &c->acc.result.lambda_t));
+  PetscCall(PetscArrayzero(c->acc.result.lambda_t, nc));
+  c->friction = fr;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerContactFrictionDestroy(RollerContactFriction *friction)
+{
+  RollerContactFriction fr = *friction;
+
+  PetscFunctionBeginUser;
+  if (!fr) PetscFunctionReturn(0);
+  if (fr->lemke_steps) PetscCall(PetscInfo(NULL, "Friction: Lemke's method took over in %" PetscInt_FMT " steps\n", fr->lemke_steps));
+  PetscCall(RollerContactBoxQPDestroy(&fr->box));
+  PetscCall(PetscFree5(fr->state, fr->lam_n, fr->mu_n, fr->x, fr->node_state));
+  PetscCall(PetscFree3(fr->M, fr->q, fr->z));
+  PetscCall(PetscFree(fr));
+  *friction = NULL;
+  PetscFunctionReturn(0);
+}
+
+/* u^T S_ij v: the entry of S between node i along u and node j along v (S: 2 nc x 2 nc, column-major). */
+static inline PetscReal Entry(const PetscReal *S, PetscInt n, const PetscReal u[2], const PetscReal v[2], PetscInt i, PetscInt j)
+{
+  const PetscReal *c0 = S + (size_t)(2 * j) * n, *c1 = S + (size_t)(2 * j + 1) * n;
+
+  return u[0] * (v[0] * c0[2 * i] + v[1] * c1[2 * i]) + u[1] * (v[0] * c0[2 * i + 1] + v[1] * c1[2 * i + 1]);
+}
+
+/* The reference of the slip: t^{k-2} . (x_n + xi^{k-2}_n) + X(t_k) - X(t_{k-2}) of node i, from the gathered
+   xi^{k-2} (u2) and the obstacle of t_{k-2}. */
+static PetscReal SlipReference(Roller ctx, RollerContact c, const PetscScalar *u2, PetscReal t, PetscInt i)
+{
+  const PetscReal *xc = c->nodes.xc, dX = RollerSheetPosition(ctx, t) - RollerSheetPosition(ctx, t - 2.0 * ctx->ts.dt);
+  PetscReal        n2[2], g2;
+
+  RollerContactObstacleAt(ctx, t - 2.0 * ctx->ts.dt, n2, &g2);
+  return (xc[2 * i] + PetscRealPart(u2[2 * i])) * n2[1] - (xc[2 * i + 1] + PetscRealPart(u2[2 * i + 1])) * n2[0] + dX;
+}
+
+static PetscErrorCode LemkeAlloc(RollerContactFriction fr, PetscInt m)
+{
+  PetscFunctionBeginUser;
+  if (m <= fr->lemke_cap) PetscFunctionReturn(0);
+  PetscCall(PetscFree3(fr->M, fr->q, fr->z));
+  PetscCall(PetscMalloc3((size_t)16 * m * m, &fr->M, 4 * m, &fr->q, 4 * m, &fr->z));
+  fr->lemke_cap = m;
+  PetscFunctionReturn(0);
+}
+
+/* Coulomb as one LCP in z = (lambda_N, lambda_+, lambda_-, beta), lambda_T = lambda_+ - lambda_-, from the box
+   QP's G (2m) and d: w_N = gap, rho_+- = beta +- Delta s, zeta = mu lambda_N - lambda_+ - lambda_- (each >= 0,
+   complementary to its z): a slipping node has beta = |Delta s| and its force mu lambda_N against the slip. */
+static PetscErrorCode CoulombLemke(RollerContactFriction fr, PetscInt m, PetscReal t, PetscReal x[])
+{
+  const PetscInt   n = 4 * m, m2 = 2 * m;
+  const PetscReal *G = fr->box.G, *d = fr->box.d;
+  PetscInt         pivots;
+  PetscBool        solved;
+
+  PetscFunctionBeginUser;
+  PetscCall(LemkeAlloc(fr, m));
+  PetscCall(PetscArrayzero(fr->M, (size_t)n * n));
+  for (PetscInt a = 0; a < m; ++a) {
+    for (PetscInt b = 0; b < m; ++b) {
+      const PetscReal nn = G[a + (size_t)b * m2], nt = G[a + (size_t)(m + b) * m2], tn = G[m + a + (size_t)b * m2], tt = G[m + a + (size_t)(m + b) * m2];
+      const PetscReal blk[3][3] = {
+        {nn,  nt,  -nt},
+        {tn,  tt,  -tt},
+        {-tn, -tt, tt }
+      };
+
+      for (PetscInt r = 0; r < 3; ++r)
+        for (PetscInt s = 0; s < 3; ++s) fr->M[r * m + a + (size_t)(s * m + b) * n] = blk[r][s];
+    }
+    fr->M[m + a + (size_t)(3 * m + a) * n]     = 1.0; /* rho_+ += beta */
+    fr->M[2 * m + a + (size_t)(3 * m + a) * n] = 1.0; /* rho_- += beta */
+    fr->M[3 * m + a + (size_t)a * n]           = fr->mu_n[a];
+    fr->M[3 * m + a + (size_t)(m + a) * n]     = -1.0;
+    fr->M[3 * m + a + (size_t)(2 * m + a) * n] = -1.0;
+    fr->q[a]                                   = d[a];
+    fr->q[m + a]                               = d[m + a];
+    fr->q[2 * m + a]                           = -d[m + a];
+    fr->q[3 * m + a]                           = 0.0;
+  }
+  PetscCall(RollerContactLemke(n, fr->M, fr->q, fr->z, &pivots, &solved));
+  PetscCheck(solved, PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED, "Coulomb friction at t = %g: the fixed point of Tresca steps did not converge and Lemke's method ended on a ray after %" PetscInt_FMT " pivots; try a smaller -ts_dt or -friction", (double)t, pivots);
+  for (PetscInt a = 0; a < m; ++a) {
+    x[a]     = fr->z[a];
+    x[m + a] = fr->z[m + a] - fr->z[2 * m + a];
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The dual data of the step on the m candidates: G = B^T S B, d = (gaps, slips) of the free solution, from
+   the gathered free solution c->nodes.red and the normal gaps gf of the candidates. */
+static PetscErrorCode FrictionData(Roller ctx, RollerContact c, const PetscReal S[], const PetscReal gf[])
+{
+  RollerContactFriction fr = c->friction;
+  const PetscInt        m = c->step.ncand, m2 = 2 * m, n = 2 * c->nodes.nc, *cand = c->step.cand;
+  const PetscReal      *nr = c->step.normal, *tg = c->step.tangent, *xc = c->nodes.xc;
+  const PetscScalar    *uf, *u2;
+
+  PetscFunctionBeginUser;
+  PetscCall(RollerContactGather(c, ctx->state.prev, c->nodes.red2)); /* xi^{k-2} */
+  PetscCall(VecGetArrayRead(c->nodes.red, &uf));
+  PetscCall(VecGetArrayRead(c->nodes.red2, &u2));
+  for (PetscInt a = 0; a < m; ++a) {
+    const PetscInt i = cand[a];
+
+    fr->box.d[a]     = gf[a];
+    fr->box.d[m + a] = (xc[2 * i] + PetscRealPart(uf[2 * i])) * tg[0] + (xc[2 * i + 1] + PetscRealPart(uf[2 * i + 1])) * tg[1] - SlipReference(ctx, c, u2, c->step.t, i);
+    for (PetscInt b = 0; b < m; ++b) {
+      const PetscInt j = cand[b];
+
+      fr->box.G[a + (size_t)b * m2]           = Entry(S, n, nr, nr, i, j);
+      fr->box.G[a + (size_t)(m + b) * m2]     = Entry(S, n, nr, tg, i, j);
+      fr->box.G[m + a + (size_t)b * m2]       = Entry(S, n, tg, nr, i, j);
+      fr->box.G[m + a + (size_t)(m + b) * m2] = Entry(S, n, tg, tg, i, j);
+    }
+  }
+  PetscCall(VecRestoreArrayRead(c->nodes.red, &uf));
+  PetscCall(VecRestoreArrayRead(c->nodes.red2, &u2));
+  PetscFunctionReturn(0);
+}
+
+/* The multipliers of the step with friction, from the frictionless ones in lcp (its lam on the candidates);
+   S is the condensed solver's E^T A^{-1} E, gf the gaps of its free solution, c->nodes.red its gathered free
+   solution. res->lambda, res->lambda_t receive the Coulomb multipliers of every node; res->its adds the QP
+   iterations. */
+PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const PetscReal S[], RollerContactLCP *lcp, RollerContactResult *res)
+{
+  RollerContactFriction fr = c->friction;
+  const PetscInt        m = c->step.ncand, m2 = 2 * m, *cand = c->step.cand;
+  const PetscReal       t = c->step.t, dt = ctx->ts.dt;
+  PetscReal             dmax = 0.0, change = 0.0, lmax = 0.0;
+  PetscBool             lemke = (PetscBool)(c->opt.friction_qp == ROLLER_BOXQP_LEMKE);
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscArrayzero(res->lambda_t, c->nodes.nc));
+  fr->its = 0;
+  if (!m) PetscFunctionReturn(0);
+  PetscCall(FrictionData(ctx, c, S, lcp->d));
+  for (PetscInt a = 0; a < m2; ++a) dmax = PetscMax(dmax, PetscAbsReal(fr->box.d[a]));
+  for (PetscInt a = 0; a < m; ++a) {
+    fr->lam_n[a]     = lcp->lam[a];
+    fr->mu_n[a]      = FrictionCoefficient(fr, 0.0);
+    fr->state[a]     = lcp->lam[a] > 0.0 ? 0 : -1;
+    fr->state[m + a] = 0;
+  }
+  for (PetscInt it = 1;; ++it) {
+    PetscReal dmu = 0.0;
+    PetscInt  its = 0;
+
+    if (lemke) PetscCall(CoulombLemke(fr, m, t, fr->x));
+    else {
+      for (PetscInt a = 0; a < m; ++a) {
+        fr->box.lo[a]     = 0.0;
+        fr->box.up[a]     = PETSC_MAX_REAL;
+        fr->box.up[m + a] = fr->mu_n[a] * fr->lam_n[a];
+        fr->box.lo[m + a] = -fr->box.up[m + a];
+      }
+      PetscCall(RollerContactBoxQPSolve(&fr->box, c->opt.friction_qp, m2, c->opt.friction_qp == ROLLER_BOXQP_ACTIVESET ? 1e-13 * dmax : c->opt.rtol * dmax, t, fr->state, fr->x, &its));
+    }
+    fr->its++;
+    res->its += its;
+    /* the new iterate's slips, mu(v) and the change of lambda_N */
+    RollerContactLCPSlack(&fr->box, m2, fr->x, fr->box.w);
+    change = lmax = 0.0;
+    for (PetscInt a = 0; a < m; ++a) {
+      const PetscReal mu = FrictionCoefficient(fr, PetscAbsReal(fr->box.w[m + a]) / (2.0 * dt));
+
+      change       = PetscMax(change, PetscAbsReal(fr->x[a] - fr->lam_n[a]));
+      lmax         = PetscMax(lmax, fr->x[a]);
+      dmu          = PetscMax(dmu, PetscAbsReal(mu - fr->mu_n[a]));
+      fr->lam_n[a] = fr->x[a];
+      fr->mu_n[a]  = mu;
+    }
+    PetscCall(PetscInfo(NULL, "Friction at t = %g: iterate %" PetscInt_FMT " (%" PetscInt_FMT " QP its): change of lambda_N %g of %g, of mu %g\n", (double)t, it, its, (double)change, (double)lmax, (double)dmu));
+    if (change <= c->opt.friction_rtol * lmax && dmu <= c->opt.friction_rtol * fr->mu_s) break;
+    if (it >= c->opt.friction_max_it) {
+      PetscCheck(!lemke, PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED, "Coulomb friction at t = %g: mu(v) did not settle in %" PetscInt_FMT " Lemke solves (change of mu %g); try a smaller -ts_dt or a larger -friction_decay", (double)t, it, (double)dmu);
+      PetscCall(PetscInfo(NULL, "Friction at t = %g: no fixed point in %" PetscInt_FMT " Tresca steps (change %g of %g), Lemke's method\n", (double)t, it, (double)change, (double)lmax));
+      lemke = PETSC_TRUE;
+      fr->lemke_steps++;
+      it = 0;
+    }
+  }
+  /* the last Tresca step bounded lambda_T by mu lambda_N of the iterate before (equal to rtol): a node at that
+     bound carries mu lambda_N of the final iterate exactly, a sticking one stays inside the cone */
+  PetscCall(PetscArrayzero(res->lambda, c->nodes.nc));
+  for (PetscInt a = 0; a < m; ++a) {
+    const PetscReal bound = fr->mu_n[a] * fr->x[a], used = fr->box.up[m + a];
+    PetscReal       lt = fr->x[m + a];
+
+    if (fr->x[a] <= 0.0) continue;
+    if (!lemke && PetscAbsReal(lt) >= used * (1.0 - 1e-9)) lt = PetscSign(lt) * bound;
+    res->lambda[cand[a]]   = fr->x[a];
+    res->lambda_t[cand[a]] = PetscMin(PetscMax(-bound, lt), bound);
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The friction columns of the accepted step xi^k (state.cur; xi^{k-2} is state.prev2): the slips, the friction
+   force, the stick and slip nodes, the law's residual, the friction dissipation and the tangential parts of the
+   shaft's and the sheet's works (docs/friction.md):
+     1/2 lambda_T t^k . (xi^k - xi^{k-2}) = 1/2 lambda_T Delta s + 1/2 lambda_T (X^k - X^{k-2})
+                                            - 1/2 lambda_T (t^k - t^{k-2}) . (x_n + xi^{k-2}_n),
+   the first minus the dissipation (>= 0 by the law), the second the sheet's, the third the shaft's.
+   The law's residual, relative: at every node with lambda_N > 0, max(0, |lambda_T| - mu lambda_N)/(mu lambda_N);
+   a sticking node (|lambda_T| < mu lambda_N (1 - 1e-9)) |Delta s|/s, s the largest tangential motion of a contact
+   node over the step; a slipping one |lambda_T + mu lambda_N sign(Delta s)|/(mu lambda_N). */
+PetscErrorCode RollerContactFrictionInfo(Roller ctx, RollerContact c, const PetscReal lambda[], RollerStepInfo *info)
+{
+  RollerContactFriction fr = c->friction;
+  RollerStepFriction   *f  = &info->friction;
+  const PetscReal      *lt = c->acc.result.lambda_t, *xc = c->nodes.xc, *tg = c->step.tangent, t = c->step.t, dt = ctx->ts.dt;
+  const PetscReal       dX = RollerSheetPosition(ctx, t) - RollerSheetPosition(ctx, t - 2.0 * dt);
+  const PetscScalar    *u, *u2;
+  PetscReal             n2[2], t2[2], g2, sscale = 1e-14 * ctx->mesh.r_outer, *slip = fr->box.mu;
+
+  PetscFunctionBeginUser;
+  f->force = f->dissipation = f->residual = 0.0;
+  f->stick = f->slip = 0;
+  f->iterations      = fr->its;
+  RollerContactObstacleAt(ctx, t - 2.0 * dt, n2, &g2);
+  t2[0] = n2[1];
+  t2[1] = -n2[0];
+  PetscCall(RollerContactGather(c, ctx->state.cur, c->nodes.red1));
+  PetscCall(RollerContactGather(c, ctx->state.prev2, c->nodes.red2));
+  PetscCall(VecGetArrayRead(c->nodes.red1, &u));
+  PetscCall(VecGetArrayRead(c->nodes.red2, &u2));
+  for (PetscInt i = 0; i < c->nodes.nc; ++i) {
+    const PetscReal p[2] = {xc[2 * i] + PetscRealPart(u[2 * i]), xc[2 * i + 1] + PetscRealPart(u[2 * i + 1])}, p2[2] = {xc[2 * i] + PetscRealPart(u2[2 * i]), xc[2 * i + 1] + PetscRealPart(u2[2 * i + 1])};
+    const PetscReal motion = p[0] * tg[0] + p[1] * tg[1] - (p2[0] * t2[0] + p2[1] * t2[1]);
+
+    slip[i] = motion - dX;
+    if (lambda[i] > 0.0) sscale = PetscMax(sscale, PetscMax(PetscAbsReal(motion), PetscAbsReal(slip[i])));
+    f->force += lt[i];
+    f->dissipation -= 0.5 * lt[i] * slip[i];
+    f->sheet_step += 0.5 * lt[i] * dX;
+    f->shaft_step -= 0.5 * lt[i] * ((tg[0] - t2[0]) * p2[0] + (tg[1] - t2[1]) * p2[1]);
+  }
+  for (PetscInt i = 0; i < c->nodes.nc; ++i) {
+    const PetscReal bound = FrictionCoefficient(fr, PetscAbsReal(slip[i]) / (2.0 * dt)) * lambda[i];
+    PetscReal       r;
+
+    fr->node_state[i] = 0;
+    if (lambda[i] <= 0.0) continue;
+    r = PetscMax(0.0, PetscAbsReal(lt[i]) - bound) / bound;
+    if (PetscAbsReal(lt[i]) < bound * (1.0 - 1e-9)) r = PetscMax(r, PetscAbsReal(slip[i]) / sscale);
+    else if (PetscAbsReal(slip[i]) > 1e-9 * sscale) r = PetscMax(r, PetscAbsReal(lt[i] + PetscSign(slip[i]) * bound) / bound);
+    fr->node_state[i] = (PetscAbsReal(lt[i]) >= bound * (1.0 - 1e-9) && PetscAbsReal(slip[i]) > 1e-9 * sscale) ? 2 : 1;
+    if (fr->node_state[i] == 2) f->slip++;
+    else f->stick++;
+    f->residual = PetscMax(f->residual, r);
+  }
+  PetscCall(VecRestoreArrayRead(c->nodes.red1, &u));
+  PetscCall(VecRestoreArrayRead(c->nodes.red2, &u2));
+  PetscFunctionReturn(0);
+}
+
+/* The stick/slip state of every Gamma_C node of the accepted step (0 off the sheet, 1 stick, 2 slip) as reals,
+   for the output field. */
+PetscErrorCode RollerContactFrictionState(RollerContact c, PetscReal state[])
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < c->nodes.nc; ++i) state[i] = c->friction ? (PetscReal)c->friction->node_state[i] : 0.0;
+  PetscFunctionReturn(0);
+}
