@@ -42,7 +42,6 @@ typedef struct _n_RollerContactFriction *RollerContactFriction;
 typedef enum { ROLLER_BOXQP_ACTIVESET, ROLLER_BOXQP_TAO, ROLLER_BOXQP_VI, ROLLER_BOXQP_LEMKE } RollerBoxQPType;
 PETSC_INTERN const char *const RollerBoxQPTypes[];
 
-
 /* A solver's operations. setfromoptions (optional) reads its own options inside the contact options block;
    setup (optional) is called once before its first solve, when the Gamma_C nodes are known; solve finds the
    minimizer xi with the bounds of the current candidate set (c->step) and its multipliers; destroy frees
@@ -134,8 +133,8 @@ struct _n_RollerContact {
   RollerContactAccepted acc;
   RollerContactCheck    check;
   PetscInt              nsolvers;
-  RollerContactSolver  *solvers; /* every registered solver, in registration order (set up when first used) */
-  RollerContactSolver   solver;  /* the one of -contact_solver */
+  RollerContactSolver  *solvers;  /* every registered solver, in registration order (set up when first used) */
+  RollerContactSolver   solver;   /* the one of -contact_solver */
   RollerContactFriction friction; /* NULL without friction (-friction 0) */
 };
 
@@ -225,9 +224,9 @@ PETSC_INTERN PetscErrorCode RollerContactDenseSolve(const PetscReal[], PetscInt,
 
 /* contact_boxqp.c: min 1/2 x^T G x + d^T x over lo <= x <= up on the arrays of a RollerContactLCP created with
    RollerContactBoxQPCreate (size n); state[] (-1 at lo, 0 free, 1 at up) warm-starts the active set */
-PETSC_INTERN PetscErrorCode    RollerContactBoxQPCreate(PetscInt, RollerContactLCP *);
-PETSC_INTERN PetscErrorCode    RollerContactBoxQPSolve(RollerContactLCP *, RollerBoxQPType, PetscInt, PetscReal, PetscReal, PetscInt[], PetscReal[], PetscInt *);
-PETSC_INTERN PetscErrorCode    RollerContactBoxQPDestroy(RollerContactLCP *);
+PETSC_INTERN PetscErrorCode RollerContactBoxQPCreate(PetscInt, RollerContactLCP *);
+PETSC_INTERN PetscErrorCode RollerContactBoxQPSolve(RollerContactLCP *, RollerBoxQPType, PetscInt, PetscReal, PetscReal, PetscInt[], PetscReal[], PetscInt *);
+PETSC_INTERN PetscErrorCode RollerContactBoxQPDestroy(RollerContactLCP *);
 
 /* contact_lemke.c: the LCP w = M z + q >= 0, z >= 0, z . w = 0 (M n x n column-major) by Lemke's method;
    *solved false on a secondary ray (no solution found) */
