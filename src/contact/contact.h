@@ -10,7 +10,8 @@ PETSC_INTERN PetscErrorCode RollerContactCreate(Roller, RollerContact *);
 PETSC_INTERN PetscErrorCode RollerContactHelp(Roller); /* -help without -obstacle: the options block only */
 PETSC_INTERN PetscErrorCode RollerContactSolve(Roller, RollerContact, PetscReal, Vec, Vec);
 PETSC_INTERN PetscErrorCode RollerContactInfo(Roller, RollerContact, Vec, PetscReal, RollerStepInfo *);
-PETSC_INTERN PetscErrorCode RollerContactPressure(Roller, RollerContact, Vec); /* into a P1 scalar Vec on the mesh */
+PETSC_INTERN PetscErrorCode RollerContactFields(Roller, RollerContact, Vec, Vec, Vec); /* pressure, traction, state: P1 scalar Vecs on the mesh */
+PETSC_INTERN PetscBool      RollerContactHasFriction(RollerContact);
 PETSC_INTERN PetscErrorCode RollerContactDestroy(RollerContact *);
 
 /* The registry of the per-step QP solvers (-contact_solver NAME, contact_registry.c): a solver is made by

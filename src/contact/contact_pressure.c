@@ -1,5 +1,5 @@
-/* The contact pressure output field (docs/contact.md, "Contact pressure"): the accepted multipliers as a
-   pressure at the Gamma_C vertices. */
+/* The contact output fields (docs/contact.md, "Contact pressure"; docs/friction.md): the accepted normal and
+   tangential multipliers as tractions at the Gamma_C vertices, and the stick/slip state there. */
 #include "contact_impl.h"
 
 /* The contact pressure at the Gamma_C vertices (output field contact_pressure, docs/contact.md). The multipliers
@@ -10,14 +10,13 @@
    of its edge. The trapezoidal integral of p over the polygon, sum_v p_v int h_v ds, is then exactly
    sum_n lambda_n, the contact force. p is a global Vec of a P1 scalar space on (a clone of) the mesh; on return
    it holds p_v at every Gamma_C vertex and 0 everywhere else. */
-PetscErrorCode RollerContactPressure(Roller ctx, RollerContact c, Vec p)
+static PetscErrorCode VertexField(Roller ctx, RollerContact c, const PetscReal lambda[], PetscBool lumped, Vec p)
 {
-  const PetscReal *lambda = c->acc.result.lambda;
-  PetscReal       *force, *trib;
-  PetscScalar     *pa;
-  PetscInt         first = -1, rstart;
-  DM               dm;
-  PetscSection     gsection;
+  PetscReal   *force, *trib;
+  PetscScalar *pa;
+  PetscInt     first = -1, rstart;
+  DM           dm;
+  PetscSection gsection;
 
   PetscFunctionBeginUser;
   PetscCall(VecGetDM(p, &dm));
@@ -60,9 +59,33 @@ PetscErrorCode RollerContactPressure(Roller ctx, RollerContact c, Vec p)
     PetscCall(PetscSectionGetDof(gsection, c->nodes.own_point[k], &dof));
     PetscCall(PetscSectionGetOffset(gsection, c->nodes.own_point[k], &off));
     PetscCheck(dof == 1 && off >= rstart, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "The contact pressure Vec is not a P1 scalar space with the mesh's partition (vertex %" PetscInt_FMT ": %" PetscInt_FMT " dofs at %" PetscInt_FMT ")", c->nodes.own_point[k], dof, off);
-    pa[off - rstart] = force[i] / trib[i];
+    pa[off - rstart] = lumped ? force[i] / trib[i] : lambda[i];
   }
   PetscCall(VecRestoreArray(p, &pa));
   PetscCall(PetscFree2(force, trib));
   PetscFunctionReturn(0);
+}
+
+/* The contact pressure (the normal multipliers), and with friction the tangential traction along e1 (the
+   tangential multipliers, the same lumped projection) and the state of every vertex (0 off the sheet, 1
+   stick, 2 slip); traction and state may be NULL. */
+PetscErrorCode RollerContactFields(Roller ctx, RollerContact c, Vec pressure, Vec traction, Vec state)
+{
+  PetscReal *st;
+
+  PetscFunctionBeginUser;
+  PetscCall(VertexField(ctx, c, c->acc.result.lambda, PETSC_TRUE, pressure));
+  if (traction) PetscCall(VertexField(ctx, c, c->acc.result.lambda_t, PETSC_TRUE, traction));
+  if (state) {
+    PetscCall(PetscMalloc1(c->nodes.nc, &st));
+    PetscCall(RollerContactFrictionState(c, st));
+    PetscCall(VertexField(ctx, c, st, PETSC_FALSE, state));
+    PetscCall(PetscFree(st));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscBool RollerContactHasFriction(RollerContact c)
+{
+  return c && c->friction ? PETSC_TRUE : PETSC_FALSE;
 }

@@ -155,6 +155,13 @@ static PetscErrorCode FieldsCreate(Roller ctx, RollerOutput out)
     PetscCall(FieldCreate(out->pdm, "contact_pressure", &out->field[FIELD_CONTACT_PRESSURE]));
     out->nfields = FIELD_CONTACT_PRESSURE + 1;
   }
+  if (RollerContactHasFriction(ctx->contact)) {
+    PetscCall(OutputSpace(ctx, 1, "contact_traction", &out->tdm));
+    PetscCall(OutputSpace(ctx, 1, "contact_state", &out->cdm));
+    PetscCall(FieldCreate(out->tdm, "contact_traction", &out->field[FIELD_CONTACT_TRACTION]));
+    PetscCall(FieldCreate(out->cdm, "contact_state", &out->field[FIELD_CONTACT_STATE]));
+    out->nfields = FIELD_CONTACT_STATE + 1;
+  }
   PetscCall(DMCreateGlobalVector(ctx->mesh.dm, &out->velocity));
   PetscCall(DMCreateGlobalVector(out->sdm, &out->count));
   PetscCall(DMCreateGlobalVector(out->vdm, &out->position));
@@ -207,11 +214,14 @@ static PetscErrorCode WriteFields(Roller ctx, RollerOutput out)
   PetscCall(ProjectAtVertices(ctx, ctx->state.cur, f_stress_norm, ADD_VALUES, out->field[FIELD_STRESS].vec));
   PetscCall(VecPointwiseDivide(out->field[FIELD_STRESS].vec, out->field[FIELD_STRESS].vec, out->count));
   /* multiplier / tributary length at the Gamma_C vertices (docs/contact.md) */
-  if (out->nfields > FIELD_CONTACT_PRESSURE) PetscCall(RollerContactPressure(ctx, ctx->contact, out->field[FIELD_CONTACT_PRESSURE].vec));
+  if (out->nfields > FIELD_CONTACT_PRESSURE)
+    PetscCall(RollerContactFields(ctx, ctx->contact, out->field[FIELD_CONTACT_PRESSURE].vec, out->nfields > FIELD_CONTACT_TRACTION ? out->field[FIELD_CONTACT_TRACTION].vec : NULL, out->nfields > FIELD_CONTACT_STATE ? out->field[FIELD_CONTACT_STATE].vec : NULL));
 
   PetscCall(DMSetOutputSequenceNumber(out->vdm, out->xdmf.written, ctx->state.time));
   PetscCall(DMSetOutputSequenceNumber(out->sdm, out->xdmf.written, ctx->state.time));
   if (out->pdm) PetscCall(DMSetOutputSequenceNumber(out->pdm, out->xdmf.written, ctx->state.time));
+  if (out->tdm) PetscCall(DMSetOutputSequenceNumber(out->tdm, out->xdmf.written, ctx->state.time));
+  if (out->cdm) PetscCall(DMSetOutputSequenceNumber(out->cdm, out->xdmf.written, ctx->state.time));
   for (PetscInt f = 0; f < out->nfields; ++f) PetscCall(VecView(out->field[f].vec, out->h5));
   if (out->xdmf.written == out->xdmf.size) {
     out->xdmf.size = PetscMax(64, 2 * out->xdmf.size);
@@ -272,6 +282,8 @@ static PetscErrorCode MonitorFieldsDestroy(void **mctx)
   PetscCall(DMDestroy(&out->vdm));
   PetscCall(DMDestroy(&out->sdm));
   PetscCall(DMDestroy(&out->pdm));
+  PetscCall(DMDestroy(&out->tdm));
+  PetscCall(DMDestroy(&out->cdm));
   PetscCall(PetscFree(out->xdmf.times));
   PetscCall(RollerSeriesDestroy(&out->series));
   PetscCall(PetscFree(out));

@@ -28,9 +28,10 @@ typedef struct {
   Dataset data;
 } OutputField;
 
-/* The fields written every -output_every steps; an optional one (the contact pressure, with -obstacle) goes
+/* The fields written every -output_every steps; optional ones (the contact pressure with -obstacle, the
+   tangential traction and the stick/slip state with -friction) go
    at the end, and out->nfields counts those in use: the index and the checks follow the table. */
-enum { FIELD_DISPLACEMENT, FIELD_LAB, FIELD_VELOCITY, FIELD_STRESS, FIELD_CONTACT_PRESSURE, MAX_FIELDS };
+enum { FIELD_DISPLACEMENT, FIELD_LAB, FIELD_VELOCITY, FIELD_STRESS, FIELD_CONTACT_PRESSURE, FIELD_CONTACT_TRACTION, FIELD_CONTACT_STATE, MAX_FIELDS };
 
 /* The XDMF index of the HDF5 file: path (written as part, grown in place by RollerXdmfAppend), the steps
    written so far and their times, the mesh datasets every step's grid refers to. */
@@ -51,8 +52,9 @@ struct _n_RollerOutput {
   PetscInt    every;
   RollerXdmf  xdmf;
 
-  /* Output spaces on the same mesh: vdm P1 with 3 components, sdm and pdm (contact pressure) P1 scalar */
-  DM           vdm, sdm, pdm;
+  /* Output spaces on the same mesh: vdm P1 with 3 components; sdm, pdm (contact pressure), tdm and cdm (the
+     friction traction and the stick/slip state) P1 scalar */
+  DM           vdm, sdm, pdm, tdm, cdm;
   Vec          velocity; /* on ctx->mesh.dm */
   Vec          position; /* (x, y, 0) at every vertex (vdm) */
   Vec          count;    /* the number of cells around every vertex (sdm) */
