@@ -166,10 +166,14 @@ static PetscErrorCode BoxVI(RollerContactLCP *qp, PetscInt n, PetscReal atol, Pe
   PetscFunctionBeginUser;
   PetscCall(RollerContactLCPWork(qp, n));
   if (!qp->snes) {
+    Vec r;
+
     PetscCall(SNESCreate(PETSC_COMM_SELF, &qp->snes));
     PetscCall(SNESSetOptionsPrefix(qp->snes, "contact_friction_vi_"));
     PetscCall(SNESSetType(qp->snes, SNESVINEWTONRSLS));
-    PetscCall(SNESSetFunction(qp->snes, NULL, VIFunction, qp));
+    PetscCall(VecDuplicate(qp->tx, &r));
+    PetscCall(SNESSetFunction(qp->snes, r, VIFunction, qp)); /* the SNES keeps r */
+    PetscCall(VecDestroy(&r));
     PetscCall(SNESSetJacobian(qp->snes, qp->tG, qp->tG, VIJacobian, qp));
     PetscCall(SNESGetKSP(qp->snes, &ksp));
     PetscCall(KSPSetType(ksp, KSPPREONLY));

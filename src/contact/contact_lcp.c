@@ -195,7 +195,7 @@ PetscErrorCode RollerContactLCPWork(RollerContactLCP *cd, PetscInt m)
 }
 
 /* -contact_condensed_qp tao (and the friction's box QP): the same small problem with a TAO bound-constrained
-   solver (prefix contact_condensed_, default gpcg, the TAO method for bound-constrained QPs), from lam = 0, to
+   solver (prefix contact_condensed_, default gpcg, the TAO method for bound-constrained QPs; tron for the box QP), from lam = 0, to
    the absolute tolerance gatol of the gradient G lam + d (a gap); t is the step's time, for the error message. */
 PetscErrorCode RollerContactLCPTao(RollerContactLCP *cd, PetscInt m, PetscReal gatol, PetscReal t, PetscReal lam[], PetscInt *its)
 {
@@ -208,7 +208,7 @@ PetscErrorCode RollerContactLCPTao(RollerContactLCP *cd, PetscInt m, PetscReal g
   if (!cd->tao) {
     PetscCall(TaoCreate(PETSC_COMM_SELF, &cd->tao));
     PetscCall(TaoSetOptionsPrefix(cd->tao, "contact_condensed_"));
-    PetscCall(TaoSetType(cd->tao, TAOGPCG));
+    PetscCall(TaoSetType(cd->tao, cd->lo ? TAOTRON : TAOGPCG)); /* the friction's box QP: gpcg stalls at round-off on it */
     PetscCall(TaoSetSolution(cd->tao, cd->tx));
     cd->tqp.H    = cd->tG; /* 1/2 lam^T G lam + d^T lam */
     cd->tqp.c    = cd->td;

@@ -21,6 +21,37 @@ static void Pivot(PetscReal *T, PetscReal *rhs, PetscInt n, PetscInt nc, PetscIn
   }
 }
 
+/* The leaving row of the entering column: the least ratio rhs_i / T_i,enter over T_i,enter > eps; among ties the
+   artificial variable (the method ends), else the lexicographic minimum of the rows of B^{-1} (the w columns)
+   over T_i,enter, which rules out cycling on the degenerate problems friction gives (zero gaps, zero rows of q).
+   -1: no such row (a ray). */
+static PetscInt MinimumRatio(const PetscReal *T, const PetscReal *rhs, const PetscInt *basis, PetscInt n, PetscInt nc, PetscInt enter, PetscReal eps, PetscInt art)
+{
+  PetscReal rmin = PETSC_MAX_REAL;
+  PetscInt  best = -1;
+
+  for (PetscInt i = 0; i < n; ++i)
+    if (T[(size_t)i * nc + enter] > eps) rmin = PetscMin(rmin, rhs[i] / T[(size_t)i * nc + enter]);
+  if (rmin == PETSC_MAX_REAL) return -1;
+  for (PetscInt i = 0; i < n; ++i) {
+    const PetscReal a = T[(size_t)i * nc + enter];
+
+    if (a <= eps || rhs[i] / a > rmin + 1e-13 * PetscMax(1.0, PetscAbsReal(rmin))) continue;
+    if (basis[i] == art) return i;
+    if (best < 0) {
+      best = i;
+      continue;
+    }
+    for (PetscInt j = 0; j < n; ++j) { /* lexicographic comparison of row i with row best */
+      const PetscReal x = T[(size_t)i * nc + j] / a, y = T[(size_t)best * nc + j] / T[(size_t)best * nc + enter], tol = 1e-13 * PetscMax(1.0, PetscMax(PetscAbsReal(x), PetscAbsReal(y)));
+
+      if (x < y - tol) best = i;
+      if (x < y - tol || x > y + tol) break;
+    }
+  }
+  return best;
+}
+
 /* Columns: w_0..w_{n-1}, z_0..z_{n-1}, z0 (the artificial variable); the tableau is [I, -M, -e | q]. */
 PetscErrorCode RollerContactLemke(PetscInt n, const PetscReal M[], const PetscReal q[], PetscReal z[], PetscInt *pivots, PetscBool *solved)
 {
@@ -53,21 +84,10 @@ PetscErrorCode RollerContactLemke(PetscInt n, const PetscReal M[], const PetscRe
   enter    = n + r; /* the complement of w_r, which left */
   basis[r] = art;
   for (*pivots = 1; *pivots < maxpiv; ++*pivots) {
-    const PetscReal eps   = 1e-12 * PetscMax(1.0, scale);
-    PetscReal       ratio = PETSC_MAX_REAL;
+    const PetscReal eps = 1e-12 * PetscMax(1.0, scale);
     PetscInt        leave;
 
-    r = -1;
-    for (PetscInt i = 0; i < n; ++i) {
-      const PetscReal a = T[(size_t)i * nc + enter];
-
-      if (a <= eps) continue;
-      /* ties: the artificial variable leaves first (the method ends), then the lowest row */
-      if (rhs[i] / a < ratio - 1e-14 * PetscAbsReal(ratio) || (basis[i] == art && rhs[i] / a <= ratio + 1e-14 * PetscAbsReal(ratio))) {
-        ratio = rhs[i] / a;
-        r     = i;
-      }
-    }
+    r = MinimumRatio(T, rhs, basis, n, nc, enter, eps, art);
     if (r < 0) { /* a secondary ray */
       *solved = PETSC_FALSE;
       break;
