@@ -15,6 +15,12 @@
           tolerance TOL (-contact_rtol and -contact_pcg_rtol; condensed is exact);
       and the stage shares and peak memory of each run.
 
+  bench/step_cost.py --friction [--time T] [--rounds R]
+      Whole runs of jobs/feed.yaml (the feeder: rolling with Coulomb friction) to t = T on its default mesh and dt,
+      against the same runs with -friction 0 (frictionless contact) and -obstacle false (free steps on the same
+      mesh and dt, given explicitly): time per step of each and their ratios, and the iterations of the
+      Coulomb solve per step (coulomb_iterations of the CSV: semismooth Newton iterations by default).
+
   bench/step_cost.py --table [--steps N]
       Time per step, setup time, stage shares and peak memory for P1/P2 and several h, free and rolling.
 
@@ -25,6 +31,7 @@ ROLLER_EXE selects the executable (default build/roller). The machine is shared:
 import argparse
 import os
 import sys
+import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import benchlib  # noqa: E402
@@ -127,6 +134,35 @@ def ratios(opt):
         print(f"  {name}: {benchlib.shell(args).replace(ROOT + '/', '')}")
 
 
+def friction(opt):
+    feed = ["-options_file", os.path.join(ROOT, "jobs", "feed.yaml"), "-ts_max_time", opt.time]
+    series = os.path.join(tempfile.gettempdir(), "roller_bench_feed.csv")
+    # the feeder's default discretization (-ts_view), given explicitly so that -obstacle false keeps mesh and dt
+    disc = ["-mesh_h", 0.0347906, "-mesh_h_contact", 0.00798596, "-mesh_contact_layer", 0.0159719, "-ts_dt", 0.00171757]
+    nsteps = int(round(opt.time / 0.00171757))
+    runs = {"free (no obstacle)": feed + disc + ["-obstacle", "false", "-friction", 0, "-sheet_speed", 0],
+            "frictionless contact": feed + disc + ["-friction", 0], "friction (feed.yaml)": feed + disc + ["-monitor_csv", series]}
+    best = {}
+    for r in range(opt.rounds):
+        for name, args in runs.items():
+            s, _ = run(args + ["-ts_max_steps", nsteps], nsteps, 2)
+            if name not in best or s["step"] < best[name]["step"]:
+                best[name] = s
+            print(f"  round {r + 1}: {name}: {1e3 * s['step']:.3f} ms/step", file=sys.stderr, flush=True)
+    its = [float(row.split(",")[26]) for row in open(series).read().splitlines()[1:]]
+    contact_its = [i for i in its if i > 0]
+    free = best["free (no obstacle)"]
+    print(f"jobs/feed.yaml to t = {opt.time} ({nsteps} steps), P2, h 0.0348, h_c 0.0080, dt 0.00172; min over {opt.rounds} interleaved rounds; shared 2-core machine\n")
+    print("| run | ms / step | / free step | per-step stage shares | set-up [s] |")
+    print("|---|---|---|---|---|")
+    for name, s in best.items():
+        print(f"| {name} | {1e3 * s['step']:.3f} | {s['step'] / free['step']:.2f} | {shares(s)} | {s['setup']:.2f} |")
+    print(f"\nCoulomb solve: {sum(contact_its) / max(len(contact_its), 1):.1f} iterations per contact step on average, at most {max(its):.0f}")
+    print("\ncommands (each with -log_view):")
+    for name, args in runs.items():
+        print(f"  {name}: {benchlib.shell(args + ['-ts_max_steps', nsteps]).replace(ROOT + '/', '')}")
+
+
 def table(opt):
     cases = [(1, 0.025), (1, 0.0125), (1, 0.00625), (2, 0.025), (2, 0.0125), (2, 0.01)]
     print(f"{opt.steps} steps each (dt = 0.0025 free, the scene's dt = 0.0125 rolling); shared 2-core machine\n")
@@ -147,10 +183,12 @@ def table(opt):
 
 
 def main():
-    if len(sys.argv) > 1 and sys.argv[1] not in ("--ratios", "--table", "-h", "--help"):
+    if len(sys.argv) > 1 and sys.argv[1] not in ("--ratios", "--friction", "--table", "-h", "--help"):
         return single(sys.argv[1:])
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--ratios", action="store_true")
+    ap.add_argument("--friction", action="store_true")
+    ap.add_argument("--time", type=float, default=20.0)
     ap.add_argument("--table", action="store_true")
     ap.add_argument("--mesh-h", default="0.0125")
     ap.add_argument("--degree", default="1")
@@ -162,6 +200,8 @@ def main():
         table(opt)
     elif opt.ratios:
         ratios(opt)
+    elif opt.friction:
+        friction(opt)
     else:
         single(FREE)
 

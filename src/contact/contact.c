@@ -62,6 +62,7 @@ static PetscErrorCode ContactSetFromOptions(Roller ctx, RollerContact c, char mo
   c->opt.friction_qp     = ROLLER_BOXQP_ACTIVESET;
   c->opt.friction_rtol   = 1e-10;
   c->opt.friction_max_it = 50;
+  c->opt.friction_newton = PETSC_TRUE;
   monitor[0]             = 0;
   PetscOptionsBegin(ctx->comm, NULL, "Roller: contact QP (docs/contact.md)", NULL);
   PetscCall(PetscOptionsFList("-contact_solver", "Per-step QP solver: condensed (Schur complement on Gamma_C, fast), vi (SNES VI), tao (TAO), pcg (the paper's projected CG)", "RollerContactSolverRegister", RollerContactSolverList, "condensed", c->opt.solver,
@@ -73,6 +74,7 @@ static PetscErrorCode ContactSetFromOptions(Roller ctx, RollerContact c, char mo
   PetscCall(PetscOptionsInt("-contact_max_resolves", "Re-solves allowed per step when a node outside the candidate set penetrates", NULL, c->opt.max_resolves, &c->opt.max_resolves, NULL));
   PetscCall(PetscOptionsEnum("-contact_friction_qp", "With -friction: solver of each Tresca step's box QP (activeset, tao, vi), or lemke: Coulomb as one LCP", NULL, RollerBoxQPTypes, (PetscEnum)c->opt.friction_qp, (PetscEnum *)&c->opt.friction_qp, NULL));
   PetscCall(PetscOptionsReal("-contact_friction_rtol", "With -friction: relative tolerance of the Coulomb fixed point on lambda_N and mu(v)", NULL, c->opt.friction_rtol, &c->opt.friction_rtol, NULL));
+  PetscCall(PetscOptionsBool("-contact_friction_newton", "With -friction: solve Coulomb by the semismooth Newton (primal-dual active set) method first, the fixed point of Tresca steps only if it fails", NULL, c->opt.friction_newton, &c->opt.friction_newton, NULL));
   PetscCall(PetscOptionsInt("-contact_friction_max_it", "With -friction: Tresca steps of the fixed point before Lemke's method takes over", NULL, c->opt.friction_max_it, &c->opt.friction_max_it, NULL));
   for (PetscInt k = 0; k < c->nsolvers; ++k)
     if (c->solvers[k]->ops->setfromoptions) PetscCall((*c->solvers[k]->ops->setfromoptions)(c->solvers[k], PetscOptionsObject));

@@ -171,6 +171,60 @@ static PetscErrorCode FrictionData(Roller ctx, RollerContact c, const PetscReal 
   PetscFunctionReturn(0);
 }
 
+/* The slips of the iterate fr->x (into fr->box.w), mu(v) at them; the largest change of lambda_N (of lam_n) and of
+   mu, and the largest lambda_N; with accept the iterate becomes lam_n and mu_n. */
+static PetscErrorCode UpdateMu(RollerContactFriction fr, PetscInt m, PetscReal dt, PetscReal *change, PetscReal *lmax, PetscReal *dmu, PetscBool accept)
+{
+  PetscFunctionBeginUser;
+  RollerContactLCPSlack(&fr->box, 2 * m, fr->x, fr->box.w);
+  *change = *lmax = *dmu = 0.0;
+  for (PetscInt a = 0; a < m; ++a) {
+    const PetscReal mu = FrictionCoefficient(fr, PetscAbsReal(fr->box.w[m + a]) / (2.0 * dt));
+
+    *change = PetscMax(*change, PetscAbsReal(fr->x[a] - fr->lam_n[a]));
+    *lmax   = PetscMax(*lmax, fr->x[a]);
+    *dmu    = PetscMax(*dmu, PetscAbsReal(mu - fr->mu_n[a]));
+    if (accept) {
+      fr->lam_n[a] = fr->x[a];
+      fr->mu_n[a]  = mu;
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+/* Coulomb by the semismooth Newton method (contact_coulomb.c) from the frictionless multipliers, repeated while
+   mu(v) changes (velocity weakening); *done false if it fails (fr->x, lam_n, mu_n are then reset for the fixed
+   point). */
+static PetscErrorCode CoulombNewton(Roller ctx, RollerContact c, PetscInt m, PetscBool *done)
+{
+  RollerContactFriction fr = c->friction;
+  PetscReal             change, lmax, dmu;
+
+  PetscFunctionBeginUser;
+  *done = PETSC_FALSE;
+  for (PetscInt a = 0; a < m; ++a) {
+    fr->x[a]     = fr->lam_n[a];
+    fr->x[m + a] = 0.0;
+  }
+  for (PetscInt pass = 0; pass < c->opt.friction_max_it; ++pass) {
+    PetscInt  its;
+    PetscBool converged;
+
+    PetscCall(RollerContactCoulombNewton(m, fr->box.G, fr->box.d, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
+    fr->its += its;
+    if (!converged) break;
+    PetscCall(UpdateMu(fr, m, ctx->ts.dt, &change, &lmax, &dmu, PETSC_FALSE));
+    if (dmu <= c->opt.friction_rtol * fr->mu_s) {
+      *done = PETSC_TRUE;
+      PetscFunctionReturn(0);
+    }
+    PetscCall(UpdateMu(fr, m, ctx->ts.dt, &change, &lmax, &dmu, PETSC_TRUE));
+  }
+  PetscCall(PetscInfo(NULL, "Friction at t = %g: the semismooth Newton method failed after %" PetscInt_FMT " iterations; fixed point of Tresca steps\n", (double)c->step.t, fr->its));
+  for (PetscInt a = 0; a < m; ++a) fr->mu_n[a] = FrictionCoefficient(fr, 0.0);
+  PetscFunctionReturn(0);
+}
+
 /* The multipliers of the step with friction, from the frictionless ones in lcp (its lam on the candidates);
    S is the condensed solver's E^T A^{-1} E, gf the gaps of its free solution, c->nodes.red its gathered free
    solution. res->lambda, res->lambda_t receive the Coulomb multipliers of every node; res->its adds the QP
@@ -180,7 +234,7 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
   RollerContactFriction fr = c->friction;
   const PetscInt        m = c->step.ncand, m2 = 2 * m, *cand = c->step.cand;
   const PetscReal       t = c->step.t, dt = ctx->ts.dt;
-  PetscReal             dmax = 0.0, change = 0.0, lmax = 0.0;
+  PetscReal             dmax = 0.0, change = 0.0, lmax = 0.0, dmu = 0.0;
   PetscBool             lemke = (PetscBool)(c->opt.friction_qp == ROLLER_BOXQP_LEMKE);
 
   PetscFunctionBeginUser;
@@ -195,9 +249,15 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
     fr->state[a]     = lcp->lam[a] > 0.0 ? 0 : -1;
     fr->state[m + a] = 0;
   }
+  if (c->opt.friction_newton && !lemke) {
+    PetscBool done = PETSC_FALSE;
+
+    PetscCall(CoulombNewton(ctx, c, m, &done));
+    if (done) goto accept;
+    for (PetscInt a = 0; a < m; ++a) fr->lam_n[a] = lcp->lam[a]; /* the fixed point starts afresh */
+  }
   for (PetscInt it = 1;; ++it) {
-    PetscReal dmu = 0.0;
-    PetscInt  its = 0;
+    PetscInt its = 0;
 
     if (lemke) PetscCall(CoulombLemke(fr, m, t, fr->x));
     else {
@@ -211,18 +271,7 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
     }
     fr->its++;
     res->its += its;
-    /* the new iterate's slips, mu(v) and the change of lambda_N */
-    RollerContactLCPSlack(&fr->box, m2, fr->x, fr->box.w);
-    change = lmax = 0.0;
-    for (PetscInt a = 0; a < m; ++a) {
-      const PetscReal mu = FrictionCoefficient(fr, PetscAbsReal(fr->box.w[m + a]) / (2.0 * dt));
-
-      change       = PetscMax(change, PetscAbsReal(fr->x[a] - fr->lam_n[a]));
-      lmax         = PetscMax(lmax, fr->x[a]);
-      dmu          = PetscMax(dmu, PetscAbsReal(mu - fr->mu_n[a]));
-      fr->lam_n[a] = fr->x[a];
-      fr->mu_n[a]  = mu;
-    }
+    PetscCall(UpdateMu(fr, m, dt, &change, &lmax, &dmu, PETSC_TRUE));
     PetscCall(PetscInfo(NULL, "Friction at t = %g: iterate %" PetscInt_FMT " (%" PetscInt_FMT " QP its): change of lambda_N %g of %g, of mu %g\n", (double)t, it, its, (double)change, (double)lmax, (double)dmu));
     if (change <= c->opt.friction_rtol * lmax && dmu <= c->opt.friction_rtol * fr->mu_s) break;
     if (it >= c->opt.friction_max_it) {
@@ -233,17 +282,19 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
       it = 0;
     }
   }
-  /* the last Tresca step bounded lambda_T by mu lambda_N of the iterate before (equal to rtol): a node at that
-     bound carries mu lambda_N of the final iterate exactly, a sticking one stays inside the cone */
+  if (!lemke) { /* the last Tresca step bounded lambda_T by mu lambda_N of the iterate before (equal to rtol): a node
+                   at that bound carries mu lambda_N of the final iterate exactly */
+    for (PetscInt a = 0; a < m; ++a)
+      if (PetscAbsReal(fr->x[m + a]) >= fr->box.up[m + a] * (1.0 - 1e-9)) fr->x[m + a] = PetscSign(fr->x[m + a]) * fr->mu_n[a] * fr->x[a];
+  }
+accept:
   PetscCall(PetscArrayzero(res->lambda, c->nodes.nc));
   for (PetscInt a = 0; a < m; ++a) {
-    const PetscReal bound = fr->mu_n[a] * fr->x[a], used = fr->box.up[m + a];
-    PetscReal       lt = fr->x[m + a];
+    const PetscReal bound = fr->mu_n[a] * fr->x[a];
 
     if (fr->x[a] <= 0.0) continue;
-    if (!lemke && PetscAbsReal(lt) >= used * (1.0 - 1e-9)) lt = PetscSign(lt) * bound;
     res->lambda[cand[a]]   = fr->x[a];
-    res->lambda_t[cand[a]] = PetscMin(PetscMax(-bound, lt), bound);
+    res->lambda_t[cand[a]] = PetscMin(PetscMax(-bound, fr->x[m + a]), bound);
   }
   PetscFunctionReturn(0);
 }
@@ -256,7 +307,7 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
    the first minus the dissipation (>= 0 by the law), the second the sheet's, the third the shaft's.
    The law's residual, relative: at every node with lambda_N > 0, max(0, |lambda_T| - mu lambda_N)/(mu lambda_N);
    a sticking node (|lambda_T| < mu lambda_N (1 - 1e-9)) |Delta s|/s, s the largest tangential motion of a contact
-   node over the step; a slipping one |lambda_T + mu lambda_N sign(Delta s)|/(mu lambda_N). */
+   node over the step, the sheet's travel or the rim's by the rotation (or 1e-14 r_C if nothing moves); a slipping one |lambda_T + mu lambda_N sign(Delta s)|/(mu lambda_N). */
 PetscErrorCode RollerContactFrictionInfo(Roller ctx, RollerContact c, const PetscReal lambda[], RollerStepInfo *info)
 {
   RollerContactFriction fr = c->friction;
@@ -270,6 +321,13 @@ PetscErrorCode RollerContactFrictionInfo(Roller ctx, RollerContact c, const Pets
   f->force = f->dissipation = f->residual = 0.0;
   f->stick = f->slip = 0;
   f->iterations      = fr->its;
+  { /* the drive's own motion of the contact nodes over the step: the scale of a sticking node's slip */
+    PetscReal th0, th2;
+
+    RollerTheta(ctx, t, &th0, NULL, NULL);
+    RollerTheta(ctx, t - 2.0 * dt, &th2, NULL, NULL);
+    sscale = PetscMax(sscale, PetscMax(PetscAbsReal(dX), PetscAbsReal(th0 - th2) * ctx->mesh.r_outer));
+  }
   RollerContactObstacleAt(ctx, t - 2.0 * dt, n2, &g2);
   t2[0] = n2[1];
   t2[1] = -n2[0];

@@ -11,7 +11,8 @@
    Friction (only with -friction > 0; docs/friction.md), a part of the condensed solver:
    contact_friction.c    the Coulomb law, the slip, the fixed point of Tresca steps, the law's residual
    contact_boxqp.c       the Tresca step's dual: a small dense box-constrained QP (active set, TAO, SNES VI)
-   contact_lemke.c       Coulomb as one LCP, Lemke's method (the fallback)
+   contact_coulomb.c     Coulomb directly: the primal-dual active-set (semismooth Newton) method, the default
+   contact_lemke.c       Coulomb as one LCP, Lemke's method (the last fallback)
    The registry and the solvers (each file one solver, using the core):
    contact_registry.c    RollerContactSolverRegister, RegisterAll, the solver object's create/setup/destroy
    contact_condensed.c   the default: the QP condensed onto the multipliers of the candidates with
@@ -77,6 +78,7 @@ typedef struct {
   RollerBoxQPType   friction_qp;    /* -contact_friction_qp: the Tresca QP solver, or lemke (Coulomb as one LCP) */
   PetscReal         friction_rtol;  /* the Coulomb fixed point's tolerance on lambda_N and mu(v) */
   PetscInt          friction_max_it;
+  PetscBool         friction_newton; /* -contact_friction_newton: Coulomb by the semismooth Newton method first */
 } RollerContactOptions;
 
 /* Gamma_C nodes (contact_nodes.c), fixed at creation, the same on every rank, sorted by angle: node i has its
@@ -231,6 +233,9 @@ PETSC_INTERN PetscErrorCode RollerContactBoxQPDestroy(RollerContactLCP *);
 /* contact_lemke.c: the LCP w = M z + q >= 0, z >= 0, z . w = 0 (M n x n column-major) by Lemke's method;
    *solved false on a secondary ray (no solution found) */
 PETSC_INTERN PetscErrorCode RollerContactLemke(PetscInt, const PetscReal[], const PetscReal[], PetscReal[], PetscInt *, PetscBool *);
+
+/* contact_coulomb.c: Coulomb of one step by the primal-dual active-set (semismooth Newton) method */
+PETSC_INTERN PetscErrorCode RollerContactCoulombNewton(PetscInt, const PetscReal[], const PetscReal[], const PetscReal[], PetscReal[], PetscInt, PetscInt *, PetscBool *);
 
 /* contact_friction.c */
 PETSC_INTERN PetscErrorCode RollerContactFrictionCreate(Roller, RollerContact);

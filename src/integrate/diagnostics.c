@@ -48,23 +48,29 @@ static PetscErrorCode EnergyBalance(Roller ctx, RollerStepInfo *info)
 }
 
 /* L = rho int (x + xi) x (xi_t + theta' J (x + xi)): the angular momentum in the lab of level xi (at t) with the
-   velocity (xi - xi_prev)/dt; with M acting alike on both components, p x v = p . R(-pi/2) v and
-   L = rho (M p) . (R(-pi/2) (xi - xi_prev)/dt + theta' p), p = x + xi. Scratch: work, next, rhs. */
-static PetscErrorCode AngularMomentum(Roller ctx, Vec xi, Vec xi_prev, PetscReal t, PetscReal *L)
+   velocity (xi - xi_prev)/dt. With M acting alike on both components, p x v = p . R(-pi/2) v, and with the
+   rigid part written apart (its difference over a step would cancel to round-off over 1/dt),
+     L = rho theta' I_0 + L_rel,  I_0 = x . M x,
+     L_rel = rho [(M x + M xi) . R(-pi/2) (xi - xi_prev)/dt + theta' (2 xi . M x + xi . M xi)],
+   M x being the centrifugal load L_centrifugal. Returns L_rel and I_0. Scratch: work, next, rhs. */
+static PetscErrorCode AngularMomentum(Roller ctx, Vec xi, Vec xi_prev, PetscReal t, PetscReal *L_rel, PetscReal *I0)
 {
-  Vec         p = ctx->state.work, Mp = ctx->state.next, v = ctx->state.rhs;
+  Vec         Mxi = ctx->state.next, d = ctx->state.work, v = ctx->state.rhs, Mx = ctx->ops.L_centrifugal;
   PetscReal   td;
-  PetscScalar a, b;
+  PetscScalar a, b, c, e;
 
   PetscFunctionBeginUser;
   RollerTheta(ctx, t, NULL, &td, NULL);
-  PetscCall(VecWAXPY(p, 1.0, ctx->ops.coordinates, xi));
-  PetscCall(MatMult(ctx->ops.M, p, Mp));
-  PetscCall(VecDot(p, Mp, &a));
-  PetscCall(VecWAXPY(p, -1.0, xi_prev, xi));
-  PetscCall(RollerApplyRotate90(p, v));
-  PetscCall(VecDot(v, Mp, &b));
-  *L = ctx->material.density * (PetscRealPart(b) / ctx->ts.dt + td * PetscRealPart(a));
+  PetscCall(MatMult(ctx->ops.M, xi, Mxi));
+  PetscCall(VecDot(xi, Mx, &a));
+  PetscCall(VecDot(xi, Mxi, &b));
+  PetscCall(VecDot(ctx->ops.coordinates, Mx, &e));
+  PetscCall(VecWAXPY(d, -1.0, xi_prev, xi));
+  PetscCall(RollerApplyRotate90(d, v));
+  PetscCall(VecAXPY(Mxi, 1.0, Mx));
+  PetscCall(VecDot(v, Mxi, &c));
+  *L_rel = ctx->material.density * (PetscRealPart(c) / ctx->ts.dt + td * (2.0 * PetscRealPart(a) + PetscRealPart(b)));
+  *I0    = PetscRealPart(e);
   PetscFunctionReturn(0);
 }
 
@@ -74,15 +80,17 @@ static PetscErrorCode AngularMomentum(Roller ctx, Vec xi, Vec xi_prev, PetscReal
 static PetscErrorCode DriveAndWorks(Roller ctx, RollerStepInfo *info)
 {
   RollerState *st = &ctx->state;
-  PetscReal    L, Lprev = 0.0;
+  PetscReal    L, Lprev = 0.0, I0, td, td_prev;
 
   PetscFunctionBeginUser;
   if (st->step > 0) {
     if (st->momentum_step == st->step - 1) Lprev = st->momentum;
-    else PetscCall(AngularMomentum(ctx, st->prev, st->prev2, st->time - ctx->ts.dt, &Lprev));
+    else PetscCall(AngularMomentum(ctx, st->prev, st->prev2, st->time - ctx->ts.dt, &Lprev, &I0));
   }
-  PetscCall(AngularMomentum(ctx, st->cur, st->prev, st->time, &L));
-  if (st->step > 0) info->friction.torque += (L - Lprev) / ctx->ts.dt;
+  PetscCall(AngularMomentum(ctx, st->cur, st->prev, st->time, &L, &I0));
+  RollerTheta(ctx, st->time, NULL, &td, NULL);
+  RollerTheta(ctx, st->time - ctx->ts.dt, NULL, &td_prev, NULL);
+  if (st->step > 0) info->friction.torque += (L - Lprev) / ctx->ts.dt + ctx->material.density * I0 * (td - td_prev) / ctx->ts.dt;
   st->momentum      = L;
   st->momentum_step = st->step;
   if (st->step > st->work_step) {

@@ -1,0 +1,136 @@
+/* Coulomb friction of one step solved directly (docs/friction.md section 3): the primal-dual active-set method
+   of Hueber, Stadler & Wohlmuth (SIAM J. Sci. Comput. 30, 2008), a semismooth Newton method on the
+   complementarity functions of Signorini's and Coulomb's laws, on the condensed problem of the friction's box QP
+   (G, d of contact_friction.c: gap = (G x + d)_N, slip = (G x + d)_T, x = (lambda_N, lambda_T)). Each node is
+   inactive (lambda = 0), sticking (gap = 0, slip = 0) or slipping (gap = 0, lambda_T = s mu lambda_N, s = +-1); the
+   states follow from the last iterate with c = 1/G_aa:
+     in contact   iff  lambda_N - c_N gap > 0,
+     sticking     iff  |lambda_T - c_T slip| < mu (lambda_N - c_N gap),  else slipping with s = sign(lambda_T - c_T slip),
+   and each iterate solves the linear (non-symmetric) system of its states. It ends when the states repeat and the
+   solution satisfies the laws (lambda_N >= 0, gap >= 0, |lambda_T| <= mu lambda_N, a slipping node moving against
+   its force); otherwise *converged is false and the caller falls back on the fixed point of Tresca steps. A few
+   dense LU solves instead of the fixed point's tens of QPs. */
+#include "contact_impl.h"
+
+typedef struct {
+  PetscInt  *idx_n, *idx_t, *state; /* unknown numbers in the reduced system (-1: none); state 0 off, 1 stick, 2 slip */
+  PetscReal *sign, *R, *rhs, *sol, *w;
+} CoulombWork;
+
+/* w = G x + d */
+static void Residual(PetscInt m, const PetscReal G[], const PetscReal d[], const PetscReal x[], PetscReal w[])
+{
+  for (PetscInt i = 0; i < 2 * m; ++i) w[i] = d[i];
+  for (PetscInt j = 0; j < 2 * m; ++j)
+    if (x[j] != 0.0)
+      for (PetscInt i = 0; i < 2 * m; ++i) w[i] += G[i + (size_t)j * 2 * m] * x[j];
+}
+
+/* The states of the last iterate (x, w = G x + d); returns how many changed. */
+static PetscInt States(PetscInt m, const PetscReal G[], const PetscReal mu[], const PetscReal x[], const PetscReal w[], CoulombWork *cw)
+{
+  PetscInt changed = 0;
+
+  for (PetscInt a = 0; a < m; ++a) {
+    const PetscReal ln = x[a] - w[a] / G[a + (size_t)a * 2 * m], z = x[m + a] - w[m + a] / G[m + a + (size_t)(m + a) * 2 * m];
+    PetscInt        st = 0;
+    PetscReal       s  = 0.0;
+
+    if (ln > 0.0) {
+      st = PetscAbsReal(z) < mu[a] * ln ? 1 : 2;
+      s  = st == 2 ? PetscSign(z) : 0.0;
+    }
+    if (st != cw->state[a] || s != cw->sign[a]) changed++;
+    cw->state[a] = st;
+    cw->sign[a]  = s;
+  }
+  return changed;
+}
+
+/* The linear system of the states: gap = 0 at every node in contact, slip = 0 at every sticking one, with
+   lambda_T = s mu lambda_N substituted at the slipping ones; x from its solution. */
+static PetscErrorCode SolveStates(PetscInt m, const PetscReal G[], const PetscReal d[], const PetscReal mu[], CoulombWork *cw, PetscReal x[])
+{
+  const PetscInt m2 = 2 * m;
+  PetscInt       k  = 0;
+  Mat            R;
+  Vec            rhs, sol;
+
+  PetscFunctionBeginUser;
+  for (PetscInt a = 0; a < m; ++a) cw->idx_n[a] = cw->state[a] ? k++ : -1;
+  for (PetscInt a = 0; a < m; ++a) cw->idx_t[a] = cw->state[a] == 1 ? k++ : -1;
+  PetscCall(PetscArrayzero(x, m2));
+  if (!k) PetscFunctionReturn(0);
+  PetscCall(PetscArrayzero(cw->R, (size_t)k * k));
+  for (PetscInt a = 0; a < m; ++a)
+    for (PetscInt part = 0; part < 2; ++part) { /* the gap row (N) of a node in contact, the slip row (T) of a sticking one */
+      const PetscInt row = part ? cw->idx_t[a] : cw->idx_n[a], ga = part ? m + a : a;
+
+      if (row < 0) continue;
+      cw->rhs[row] = -d[ga];
+      for (PetscInt b = 0; b < m; ++b) {
+        const PetscReal gn = G[ga + (size_t)b * m2], gt = G[ga + (size_t)(m + b) * m2];
+
+        if (cw->idx_n[b] >= 0) cw->R[row + (size_t)cw->idx_n[b] * k] += gn + (cw->state[b] == 2 ? gt * cw->sign[b] * mu[b] : 0.0);
+        if (cw->idx_t[b] >= 0) cw->R[row + (size_t)cw->idx_t[b] * k] += gt;
+      }
+    }
+  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, k, k, cw->R, &R));
+  PetscCall(MatLUFactor(R, NULL, NULL, NULL));
+  PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, k, cw->rhs, &rhs));
+  PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, k, cw->sol, &sol));
+  PetscCall(MatSolve(R, rhs, sol));
+  PetscCall(VecDestroy(&rhs));
+  PetscCall(VecDestroy(&sol));
+  PetscCall(MatDestroy(&R));
+  for (PetscInt a = 0; a < m; ++a) {
+    if (cw->idx_n[a] >= 0) x[a] = cw->sol[cw->idx_n[a]];
+    if (cw->idx_t[a] >= 0) x[m + a] = cw->sol[cw->idx_t[a]];
+    else if (cw->state[a] == 2) x[m + a] = cw->sign[a] * mu[a] * x[a];
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The laws at the solution, to round-off relative to the largest force and the largest datum. */
+static PetscBool LawsHold(PetscInt m, const PetscReal mu[], const PetscReal x[], const PetscReal w[], const PetscReal d[], const CoulombWork *cw)
+{
+  PetscReal fmax = 0.0, dmax = 0.0;
+
+  for (PetscInt a = 0; a < m; ++a) fmax = PetscMax(fmax, PetscAbsReal(x[a]));
+  for (PetscInt a = 0; a < 2 * m; ++a) dmax = PetscMax(dmax, PetscAbsReal(d[a]));
+  for (PetscInt a = 0; a < m; ++a) {
+    if (x[a] < -1e-12 * fmax || w[a] < -1e-10 * dmax) return PETSC_FALSE;
+    if (PetscAbsReal(x[m + a]) > mu[a] * PetscMax(x[a], 0.0) * (1.0 + 1e-12) + 1e-14 * fmax) return PETSC_FALSE;
+    if (cw->state[a] == 2 && cw->sign[a] * w[m + a] > 1e-10 * dmax) return PETSC_FALSE;
+  }
+  return PETSC_TRUE;
+}
+
+/* x (2m: lambda_N, lambda_T) in: the initial guess (the frictionless multipliers), out: the solution if
+   *converged. Up to maxit iterations (*its). */
+PetscErrorCode RollerContactCoulombNewton(PetscInt m, const PetscReal G[], const PetscReal d[], const PetscReal mu[], PetscReal x[], PetscInt maxit, PetscInt *its, PetscBool *converged)
+{
+  CoulombWork cw;
+
+  PetscFunctionBeginUser;
+  *converged = PETSC_FALSE;
+  *its       = 0;
+  PetscCall(PetscMalloc3(m, &cw.idx_n, m, &cw.idx_t, m, &cw.state));
+  PetscCall(PetscMalloc5(m, &cw.sign, (size_t)4 * m * m, &cw.R, 2 * m, &cw.rhs, 2 * m, &cw.sol, 2 * m, &cw.w));
+  for (PetscInt a = 0; a < m; ++a) {
+    cw.state[a] = -1; /* no state yet: the first pass counts as a change */
+    cw.sign[a]  = 0.0;
+  }
+  Residual(m, G, d, x, cw.w);
+  for (*its = 1; *its <= maxit; ++*its) {
+    if (!States(m, G, mu, x, cw.w, &cw)) {
+      *converged = LawsHold(m, mu, x, cw.w, d, &cw);
+      break;
+    }
+    PetscCall(SolveStates(m, G, d, mu, &cw, x));
+    Residual(m, G, d, x, cw.w);
+  }
+  PetscCall(PetscFree3(cw.idx_n, cw.idx_t, cw.state));
+  PetscCall(PetscFree5(cw.sign, cw.R, cw.rhs, cw.sol, cw.w));
+  PetscFunctionReturn(0);
+}
