@@ -1,5 +1,8 @@
 # Coulomb friction between the roller and the sheet (src/contact/contact_friction.c, docs/friction.md): the law
-# holds at every node and step, the energy identity with the shaft, sheet and friction works closes, the Tresca
-# QP solvers agree, -friction 0 is the frictionless code bit for bit, and 1 and 2 ranks agree.
+# holds at every node and step, the energy identity with the shaft, sheet and friction works closes, the
+# solvers agree, -friction 0 is the frictionless code bit for bit, and 1 and 2 ranks agree.
 roller_test(friction_law friction_law.py LABELS quick TIMEOUT 600)
 roller_test(friction_mpi friction_mpi.py LABELS mpi PROCESSORS 2 TIMEOUT 300)
+# stick-slip of the roller turned slowly on the resting sheet with velocity-weakening friction, and steady
+# sliding with constant mu (jobs/stickslip.yaml, docs/friction.md section 5.3; two runs of about 4 minutes)
+roller_test(friction_stickslip friction_stickslip.py LABELS long TIMEOUT 1200)
