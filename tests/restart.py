@@ -6,7 +6,8 @@ so even a SIGKILL in the middle of the run leaves a readable latest checkpoint.
 
 Discretization: the free and contact restarts run Roller's default (P2 curved, the extrapolated Coriolis
 velocity, which reads xi^{k-3} and so needs the full history from the checkpoint, dt from -ts_phase_error:
-0.00384 for t <= 4) on -mesh_h 0.05. The SIGTERM/SIGKILL runs (to t = 60 on -mesh_h 0.0125) pin what they
+0.00384 for t <= 4) on -mesh_h 0.05; the friction restart (rolling at omega = pi/10 over a sheet at 0.155 with
+mu = 0.8) also continues the cumulative works of the CSV. The SIGTERM/SIGKILL runs (to t = 60 on -mesh_h 0.0125) pin what they
 were written with, P1, -ts_dt 0.0125, backward Coriolis velocity: 4800 steps, where the defaults would take
 about 60,000 P2 steps. The graded-mesh restart (-mesh_h 0.05 -mesh_h_contact 0.025) restarts without mesh options."""
 import os
@@ -26,7 +27,10 @@ def wait_for(path, rows=0, limit=120.0):
         time.sleep(0.1)
 
 c = Checker("restart")
-for scene, extra in (("free", []), ("contact", ["-obstacle", "-obstacle_speed", "0.05", "-obstacle_depth", "0.01", "-damping", "1"])):
+contact = ["-obstacle", "-obstacle_speed", "0.05", "-obstacle_depth", "0.01"]
+# friction: the cumulative shaft, sheet and friction works and the shaft torque continue from the checkpoint
+friction = contact + ["-friction", "0.8", "-sheet_speed", "0.155", "-viscosity", "0.0115"]
+for scene, extra in (("free", []), ("contact", contact + ["-damping", "1"]), ("friction", friction)):
     base = ["-mesh_h", "0.05", "-ts_max_time", "4", "-quiet"] + extra
     run(base + ["-monitor_csv", f"{scene}_full.csv"])
     run(base + ["-ts_max_steps", "150", "-checkpoint_every", "50", "-checkpoint", f"{scene}.h5", "-monitor_csv", f"{scene}_cut.csv"])

@@ -143,8 +143,7 @@ static PetscErrorCode CondensedSolve(RollerContactSolver s, Roller ctx, RollerCo
       any                  = PETSC_TRUE;
     }
   /* with friction: the Coulomb multipliers from these (contact_friction.c; c->nodes.red still holds xi_f) */
-  if (c->friction && any) PetscCall(RollerContactFrictionSolve(ctx, c, cd->S, lcp, res));
-  else if (c->friction) PetscCall(PetscArrayzero(res->lambda_t, c->nodes.nc));
+  if (c->friction) PetscCall(RollerContactFrictionSolve(ctx, c, cd->S, lcp, res));
   if (!any) {
     PetscCall(VecCopy(cd->xf, xi));
     PetscFunctionReturn(0);

@@ -240,7 +240,8 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
   PetscFunctionBeginUser;
   PetscCall(PetscArrayzero(res->lambda_t, c->nodes.nc));
   fr->its = 0;
-  if (!m) PetscFunctionReturn(0);
+  for (PetscInt a = 0; a < m; ++a) lmax = PetscMax(lmax, lcp->lam[a]);
+  if (lmax <= 0.0) PetscFunctionReturn(0); /* nothing touches: no friction either */
   PetscCall(FrictionData(ctx, c, S, lcp->d));
   for (PetscInt a = 0; a < m2; ++a) dmax = PetscMax(dmax, PetscAbsReal(fr->box.d[a]));
   for (PetscInt a = 0; a < m; ++a) {
