@@ -308,7 +308,7 @@ accept:
    the first minus the dissipation (>= 0 by the law), the second the sheet's, the third the shaft's.
    The law's residual, relative: at every node with lambda_N > 0, max(0, |lambda_T| - mu lambda_N)/(mu lambda_N);
    a sticking node (|lambda_T| < mu lambda_N (1 - 1e-9)) |Delta s|/s, s the largest tangential motion of a contact
-   node over the step, the sheet's travel or the rim's by the rotation (or 1e-14 r_C if nothing moves); a slipping one |lambda_T + mu lambda_N sign(Delta s)|/(mu lambda_N). */
+   node over the step, the sheet's travel or the rim's by the rotation, at least 1e-6 r_C (round-off when nothing moves); a slipping one |lambda_T + mu lambda_N sign(Delta s)|/(mu lambda_N). */
 PetscErrorCode RollerContactFrictionInfo(Roller ctx, RollerContact c, const PetscReal lambda[], RollerStepInfo *info)
 {
   RollerContactFriction fr = c->friction;
@@ -316,7 +316,7 @@ PetscErrorCode RollerContactFrictionInfo(Roller ctx, RollerContact c, const Pets
   const PetscReal      *lt = c->acc.result.lambda_t, *xc = c->nodes.xc, *tg = c->step.tangent, t = c->step.t, dt = ctx->ts.dt;
   const PetscReal       dX = RollerSheetPosition(ctx, t) - RollerSheetPosition(ctx, t - 2.0 * dt);
   const PetscScalar    *u, *u2;
-  PetscReal             n2[2], t2[2], g2, sscale = 1e-14 * ctx->mesh.r_outer, *slip = fr->box.mu;
+  PetscReal             n2[2], t2[2], g2, sscale = 1e-6 * ctx->mesh.r_outer, *slip = fr->box.mu;
 
   PetscFunctionBeginUser;
   f->force = f->dissipation = f->residual = 0.0;
