@@ -148,7 +148,7 @@ static PetscErrorCode CondensedSolve(RollerContactSolver s, Roller ctx, RollerCo
     PetscCall(VecCopy(cd->xf, xi));
     PetscFunctionReturn(0);
   }
-  PetscCall(RollerContactForce(c, res->lambda, res->lambda_t, cd->f));
+  PetscCall(RollerContactForce(c, res->lambda, c->friction ? res->lambda_t : NULL, cd->f));
   PetscCall(KSPSolve(ctx->ops.ksp, cd->f, cd->corr));
   PetscCall(KSPGetConvergedReason(ctx->ops.ksp, &reason));
   PetscCheck(reason > 0, ctx->comm, PETSC_ERR_NOT_CONVERGED, "The contact correction solve at t = %g diverged: %s", (double)c->step.t, KSPConvergedReasons[reason]);
