@@ -40,6 +40,16 @@ cases = [
     (["-mesh_h_contact", "0.01", "-mesh_contact_layer", "0.3"], "-mesh_contact_layer", "0.3"),
     (["-mesh_h_contact", "0.01", "-mesh_contact_layer", "0.005"], "-mesh_contact_layer", "0.005"),
     (["-mesh_h_contact", "0.01", "-dm_plex_filename", os.path.join(SOURCE, "meshes", "annulus-h0.05-v41.msh")], "-mesh_h_contact", "-dm_plex_filename"),
+    (["-obstacle", "-friction", "-0.5"], "-friction", "-0.5"),
+    (["-obstacle", "-friction", "0.5", "-friction_static", "0.3"], "-friction_static", "0.3"),
+    (["-obstacle", "-friction", "0.5", "-friction_static", "1"], "-friction_static", "-friction_decay"),
+    (["-obstacle", "-friction", "0.5", "-friction_static", "1", "-friction_decay", "-0.1"], "-friction_decay", "-0.1"),
+    (["-friction", "0.5"], "-friction", "-obstacle"),
+    (["-sheet_speed", "0.1"], "-sheet_speed", "-obstacle"),
+    (["-obstacle", "-friction", "0.5", "-contact_solver", "vi"], "-friction", "condensed"),
+    (["-obstacle", "-friction", "0.5", "-contact_check"], "-contact_check", "-friction"),
+    (["-obstacle", "-friction", "0.5", "-contact_friction_rtol", "2"], "-contact_friction_rtol", "2"),
+    (["-theta_start", "-1"], "-theta_start", "-1"),
 ]
 for args, name, value in cases:
     code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet"] + args if args[0] != "-mesh_h" else args + ["-ts_max_steps", "2"], check=False)
