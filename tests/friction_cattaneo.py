@@ -32,21 +32,21 @@ Asserts (tolerances from the measurements in docs/friction.md 5.1, about 1.5-2x 
 1. The HDF5 fields integrate (trapezoid over the Gamma_C polygon) to the CSV's P and Q to 1e-9 mu P.
 2. Q rises monotonically from 0 (|Q| < 0.01 mu P at t0) to mu P during the loading.
 3. Loading, at every stored step with Q/(mu P) in [0.3, 0.9]: |c - a sqrt(1 - Q/(mu P))| <= h (measured
-   <= 0.55 h), the stick zone centred on the pressure centroid within h (<= 0.65 h), no stick vertex outside
+   <= 0.61 h), the stick zone centred on the pressure centroid within h (<= 0.58 h), no stick vertex outside
    it but at most one (a lone edge vertex), the traction within RMS 0.04 and max 0.10 mu p0 of Cattaneo's
-   (measured <= 0.02, 0.06), the pressure within RMS 0.02 p0 of Hertz's elliptic one (measured 0.01).
+   (measured <= 0.016, 0.043), the pressure within RMS 0.02 p0 of Hertz's elliptic one (measured 0.009).
 4. Full sliding once Q = mu P: there are steps with no sticking node in the loading and in the reversal, at
    each of them |Q| = mu P to 1e-9, and every contact vertex of the HDF5 steps among them is in state 2;
    while some node sticks (loading, before the first full slide), Q < mu P.
 5. Reversal, at every stored step with (Q* - Q)/(2 mu P) in [0.1, 0.9]: |b - a sqrt(1 - (Q* - Q)/(2 mu P))|
-   <= h (measured <= 0.45 h), the stick zone centred within 2 h, the traction within RMS 0.10 mu p0 of
-   Mindlin's (measured 0.06-0.075, max 0.18-0.29: the reversal traction inside the stick zone deviates
+   <= h (measured <= 0.78 h), the stick zone centred within 2 h (<= 1.5 h), the traction within RMS 0.10 mu p0
+   of Mindlin's (measured 0.064-0.073, max 0.19-0.29: the reversal traction inside the stick zone deviates
    from Mindlin's curve by more than the mesh error, a shift of the stick zone by ~0.05 a that does not
    shrink with h (docs/friction.md 5.1); b itself matches).
 6. Quasi-static: the same mesh turned twice as slowly gives Q/(mu P) against the turned fraction within
-   0.03 (measured 0.015), and passes 1.-5. as well (checked above for every run).
-quick: h_c = 0.004, T = 40 and the fast run T = 20 (the pair for 6). About 40 s of CPU.
-long:  h_c = 0.001, T = 40; h_c = 0.002, T = 40 and T = 80 (the pair for 6). About 5 min of CPU."""
+   0.03 (measured 0.024 quick, 0.021 long), and passes 1.-5. as well (checked above for every run).
+quick: h_c = 0.004, T = 40 and the fast run T = 20 (the pair for 6). 53 s of CPU measured.
+long:  h_c = 0.001, T = 40; h_c = 0.002, T = 40 and T = 80 (the pair for 6). 278 s of CPU measured (the HDF5 files, 0.1-0.2 GB each, are deleted after use)."""
 import math
 import os
 import sys
