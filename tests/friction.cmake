@@ -3,6 +3,11 @@
 # solvers agree, -friction 0 is the frictionless code bit for bit, and 1 and 2 ranks agree.
 roller_test(friction_law friction_law.py LABELS quick TIMEOUT 600)
 roller_test(friction_mpi friction_mpi.py LABELS mpi PROCESSORS 2 TIMEOUT 300)
+# Cattaneo-Mindlin (docs/friction.md 5.1): pressed frictionless, the shaft turned with the sheet held: the stick
+# zone c/a = sqrt(1 - Q/(mu P)) within a mesh spacing, Cattaneo's traction, full sliding at Q = mu P, the
+# reversal's b/a = sqrt(1 - (Q* - Q)/(2 mu P)); quasi-static (twice slower, the same Q). long: finer meshes.
+roller_test(friction_cattaneo friction_cattaneo.py LABELS quick TIMEOUT 400)
+roller_test(friction_cattaneo_long friction_cattaneo.py LABELS long ARGS long TIMEOUT 2400)
 # stick-slip of the roller turned slowly on the resting sheet with velocity-weakening friction, and steady
 # sliding with constant mu (jobs/stickslip.yaml, docs/friction.md section 5.3; two runs of about 4 minutes)
 roller_test(friction_stickslip friction_stickslip.py LABELS long TIMEOUT 1200)

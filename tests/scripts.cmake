@@ -2,3 +2,6 @@
 # the contact force, docs/contact.md "Cogging: the force spectrum") and its CLI scripts/plot_spectrum.py, on
 # synthetic signals with known lines; no roller run.
 roller_test(spectrum_synthetic spectrum_synthetic.py LABELS quick TIMEOUT 120)
+# scripts/plot_traction.py (pressure, traction and stick zone across the contact patch, docs/friction.md 5.1)
+# on a small friction run: its P and Q are the CSV's, every theory option draws.
+roller_test(plot_traction_smoke plot_traction_smoke.py LABELS quick TIMEOUT 180)
