@@ -4,7 +4,7 @@
    positive definite (B: the normal and tangent of every candidate). Three solvers (-contact_friction_qp):
    activeset  the primal-dual active-set method on the box (each bound a state: at lo, free, at up), warm-started,
               with the primal active-set method (Nocedal & Wright 16.3 on the box) as its fallback: exact
-   tao        TAO's bound-constrained QP solver (gpcg; prefix contact_condensed_)
+   tao        a TAO bound-constrained solver (tron: gpcg stalls at round-off on this problem; prefix contact_condensed_)
    vi         SNES VI (vinewtonrsls) on G x + d = 0 with the bounds (prefix contact_friction_vi_) */
 #include "contact_impl.h"
 

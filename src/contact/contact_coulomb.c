@@ -17,15 +17,6 @@ typedef struct {
   PetscReal *sign, *R, *rhs, *sol, *w;
 } CoulombWork;
 
-/* w = G x + d */
-static void Residual(PetscInt m, const PetscReal G[], const PetscReal d[], const PetscReal x[], PetscReal w[])
-{
-  for (PetscInt i = 0; i < 2 * m; ++i) w[i] = d[i];
-  for (PetscInt j = 0; j < 2 * m; ++j)
-    if (x[j] != 0.0)
-      for (PetscInt i = 0; i < 2 * m; ++i) w[i] += G[i + (size_t)j * 2 * m] * x[j];
-}
-
 /* The states of the last iterate (x, w = G x + d); returns how many changed. */
 static PetscInt States(PetscInt m, const PetscReal G[], const PetscReal mu[], const PetscReal x[], const PetscReal w[], CoulombWork *cw)
 {
@@ -106,11 +97,13 @@ static PetscBool LawsHold(PetscInt m, const PetscReal mu[], const PetscReal x[],
   return PETSC_TRUE;
 }
 
-/* x (2m: lambda_N, lambda_T) in: the initial guess (the frictionless multipliers), out: the solution if
+/* On the friction's box QP data box (G, d of size 2m; its residual w = G x + d is RollerContactLCPSlack's):
+   x (2m: lambda_N, lambda_T) in: the initial guess (the frictionless multipliers), out: the solution if
    *converged. Up to maxit iterations (*its). */
-PetscErrorCode RollerContactCoulombNewton(PetscInt m, const PetscReal G[], const PetscReal d[], const PetscReal mu[], PetscReal x[], PetscInt maxit, PetscInt *its, PetscBool *converged)
+PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *box, PetscInt m, const PetscReal mu[], PetscReal x[], PetscInt maxit, PetscInt *its, PetscBool *converged)
 {
-  CoulombWork cw;
+  const PetscReal *G = box->G, *d = box->d;
+  CoulombWork      cw;
 
   PetscFunctionBeginUser;
   *converged = PETSC_FALSE;
@@ -121,14 +114,14 @@ PetscErrorCode RollerContactCoulombNewton(PetscInt m, const PetscReal G[], const
     cw.state[a] = -1; /* no state yet: the first pass counts as a change */
     cw.sign[a]  = 0.0;
   }
-  Residual(m, G, d, x, cw.w);
+  RollerContactLCPSlack(box, 2 * m, x, cw.w);
   for (*its = 1; *its <= maxit; ++*its) {
     if (!States(m, G, mu, x, cw.w, &cw)) {
       *converged = LawsHold(m, mu, x, cw.w, d, &cw);
       break;
     }
     PetscCall(SolveStates(m, G, d, mu, &cw, x));
-    Residual(m, G, d, x, cw.w);
+    RollerContactLCPSlack(box, 2 * m, x, cw.w);
   }
   PetscCall(PetscFree3(cw.idx_n, cw.idx_t, cw.state));
   PetscCall(PetscFree5(cw.sign, cw.R, cw.rhs, cw.sol, cw.w));

@@ -5,9 +5,10 @@
    With the normal forces fixed (Tresca) the step is min J^k(xi) + sum_n g_n |Delta s_n(xi)| under the obstacle
    bound; condensed on the candidates (contact_condensed.c) its dual is the box QP of contact_boxqp.c in
    x = (lambda_N, lambda_T): G = B^T S B, d = (gaps, slips of the free solution), lambda_N >= 0,
-   |lambda_T| <= g. Coulomb is the fixed point g = mu(v) lambda_N of Tresca steps, v = |Delta s|/(2 dt) the slip
-   speed, from the frictionless multipliers; if it has not converged in -contact_friction_max_it steps, Coulomb as
-   one LCP by Lemke's method (contact_lemke.c) takes over, and if that ends on a ray the step fails with an error. */
+   |lambda_T| <= g. Coulomb is solved first directly by the semismooth Newton method (contact_coulomb.c); if that
+   fails, as the fixed point g = mu(v) lambda_N of Tresca steps, v = |Delta s|/(2 dt) the slip speed, from the
+   frictionless multipliers; if that has not converged in -contact_friction_max_it steps, Coulomb as one LCP by
+   Lemke's method (contact_lemke.c) takes over, and if that ends on a ray the step fails with an error. */
 #include "contact_impl.h"
 
 struct _n_RollerContactFriction {
@@ -74,15 +75,16 @@ static inline PetscReal Entry(const PetscReal *S, PetscInt n, const PetscReal u[
   return u[0] * (v[0] * c0[2 * i] + v[1] * c1[2 * i]) + u[1] * (v[0] * c0[2 * i + 1] + v[1] * c1[2 * i + 1]);
 }
 
-/* The reference of the slip: t^{k-2} . (x_n + xi^{k-2}_n) + X(t_k) - X(t_{k-2}) of node i, from the gathered
-   xi^{k-2} (u2) and the obstacle of t_{k-2}. */
-static PetscReal SlipReference(Roller ctx, RollerContact c, const PetscScalar *u2, PetscReal t, PetscInt i)
+/* The frame of the slip at t = t_k: the sheet's tangent t^{k-2} of t_{k-2} and its advance X(t_k) - X(t_{k-2});
+   Delta s_n = t^k . (x_n + xi^k_n) - t^{k-2} . (x_n + xi^{k-2}_n) - dX. */
+static void SlipFrame(Roller ctx, PetscReal t, PetscReal t2[2], PetscReal *dX)
 {
-  const PetscReal *xc = c->nodes.xc, dX = RollerSheetPosition(ctx, t) - RollerSheetPosition(ctx, t - 2.0 * ctx->ts.dt);
-  PetscReal        n2[2], g2;
+  PetscReal n2[2], g2;
 
   RollerContactObstacleAt(ctx, t - 2.0 * ctx->ts.dt, n2, &g2);
-  return (xc[2 * i] + PetscRealPart(u2[2 * i])) * n2[1] - (xc[2 * i + 1] + PetscRealPart(u2[2 * i + 1])) * n2[0] + dX;
+  t2[0] = n2[1];
+  t2[1] = -n2[0];
+  *dX   = RollerSheetPosition(ctx, t) - RollerSheetPosition(ctx, t - 2.0 * ctx->ts.dt);
 }
 
 static PetscErrorCode LemkeAlloc(RollerContactFriction fr, PetscInt m)
@@ -147,8 +149,10 @@ static PetscErrorCode FrictionData(Roller ctx, RollerContact c, const PetscReal 
   const PetscInt        m = c->step.ncand, m2 = 2 * m, n = 2 * c->nodes.nc, *cand = c->step.cand;
   const PetscReal      *nr = c->step.normal, *tg = c->step.tangent, *xc = c->nodes.xc;
   const PetscScalar    *uf, *u2;
+  PetscReal             t2[2], dX;
 
   PetscFunctionBeginUser;
+  SlipFrame(ctx, c->step.t, t2, &dX);
   PetscCall(RollerContactGather(c, ctx->state.prev, c->nodes.red2)); /* xi^{k-2} */
   PetscCall(VecGetArrayRead(c->nodes.red, &uf));
   PetscCall(VecGetArrayRead(c->nodes.red2, &u2));
@@ -156,7 +160,7 @@ static PetscErrorCode FrictionData(Roller ctx, RollerContact c, const PetscReal 
     const PetscInt i = cand[a];
 
     fr->box.d[a]     = gf[a];
-    fr->box.d[m + a] = (xc[2 * i] + PetscRealPart(uf[2 * i])) * tg[0] + (xc[2 * i + 1] + PetscRealPart(uf[2 * i + 1])) * tg[1] - SlipReference(ctx, c, u2, c->step.t, i);
+    fr->box.d[m + a] = (xc[2 * i] + PetscRealPart(uf[2 * i])) * tg[0] + (xc[2 * i + 1] + PetscRealPart(uf[2 * i + 1])) * tg[1] - ((xc[2 * i] + PetscRealPart(u2[2 * i])) * t2[0] + (xc[2 * i + 1] + PetscRealPart(u2[2 * i + 1])) * t2[1] + dX);
     for (PetscInt b = 0; b < m; ++b) {
       const PetscInt j = cand[b];
 
@@ -210,7 +214,7 @@ static PetscErrorCode CoulombNewton(Roller ctx, RollerContact c, PetscInt m, Pet
     PetscInt  its;
     PetscBool converged;
 
-    PetscCall(RollerContactCoulombNewton(m, fr->box.G, fr->box.d, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
+    PetscCall(RollerContactCoulombNewton(&fr->box, m, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
     fr->its += its;
     if (!converged) break;
     PetscCall(UpdateMu(fr, m, ctx->ts.dt, &change, &lmax, &dmu, PETSC_FALSE));
@@ -300,7 +304,8 @@ accept:
   PetscFunctionReturn(0);
 }
 
-/* The friction columns of the accepted step xi^k (state.cur; xi^{k-2} is state.prev2): the slips, the friction
+/* The friction columns of the accepted step xi^k (state.cur, gathered in c->nodes.red by the caller; xi^{k-2} is
+   state.prev2): the slips, the friction
    force, the stick and slip nodes, the law's residual, the friction dissipation and the tangential parts of the
    shaft's and the sheet's works (docs/friction.md):
      1/2 lambda_T t^k . (xi^k - xi^{k-2}) = 1/2 lambda_T Delta s + 1/2 lambda_T (X^k - X^{k-2})
@@ -314,14 +319,14 @@ PetscErrorCode RollerContactFrictionInfo(Roller ctx, RollerContact c, const Pets
   RollerContactFriction fr = c->friction;
   RollerStepFriction   *f  = &info->friction;
   const PetscReal      *lt = c->acc.result.lambda_t, *xc = c->nodes.xc, *tg = c->step.tangent, t = c->step.t, dt = ctx->ts.dt;
-  const PetscReal       dX = RollerSheetPosition(ctx, t) - RollerSheetPosition(ctx, t - 2.0 * dt);
   const PetscScalar    *u, *u2;
-  PetscReal             n2[2], t2[2], g2, sscale = 1e-6 * ctx->mesh.r_outer, *slip = fr->box.mu;
+  PetscReal             t2[2], dX, sscale = 1e-6 * ctx->mesh.r_outer, *slip = fr->box.mu;
 
   PetscFunctionBeginUser;
   f->force = f->dissipation = f->residual = 0.0;
   f->stick = f->slip = 0;
   f->iterations      = fr->its;
+  SlipFrame(ctx, t, t2, &dX);
   { /* the drive's own motion of the contact nodes over the step: the scale of a sticking node's slip */
     PetscReal th0, th2;
 
@@ -329,12 +334,8 @@ PetscErrorCode RollerContactFrictionInfo(Roller ctx, RollerContact c, const Pets
     RollerTheta(ctx, t - 2.0 * dt, &th2, NULL, NULL);
     sscale = PetscMax(sscale, PetscMax(PetscAbsReal(dX), PetscAbsReal(th0 - th2) * ctx->mesh.r_outer));
   }
-  RollerContactObstacleAt(ctx, t - 2.0 * dt, n2, &g2);
-  t2[0] = n2[1];
-  t2[1] = -n2[0];
-  PetscCall(RollerContactGather(c, ctx->state.cur, c->nodes.red1));
-  PetscCall(RollerContactGather(c, ctx->state.prev2, c->nodes.red2));
-  PetscCall(VecGetArrayRead(c->nodes.red1, &u));
+  PetscCall(RollerContactGather(c, ctx->state.prev2, c->nodes.red2)); /* xi^k is in c->nodes.red (RollerContactInfo) */
+  PetscCall(VecGetArrayRead(c->nodes.red, &u));
   PetscCall(VecGetArrayRead(c->nodes.red2, &u2));
   for (PetscInt i = 0; i < c->nodes.nc; ++i) {
     const PetscReal p[2] = {xc[2 * i] + PetscRealPart(u[2 * i]), xc[2 * i + 1] + PetscRealPart(u[2 * i + 1])}, p2[2] = {xc[2 * i] + PetscRealPart(u2[2 * i]), xc[2 * i + 1] + PetscRealPart(u2[2 * i + 1])};
@@ -361,7 +362,7 @@ PetscErrorCode RollerContactFrictionInfo(Roller ctx, RollerContact c, const Pets
     else f->stick++;
     f->residual = PetscMax(f->residual, r);
   }
-  PetscCall(VecRestoreArrayRead(c->nodes.red1, &u));
+  PetscCall(VecRestoreArrayRead(c->nodes.red, &u));
   PetscCall(VecRestoreArrayRead(c->nodes.red2, &u2));
   PetscFunctionReturn(0);
 }

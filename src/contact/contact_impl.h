@@ -235,7 +235,7 @@ PETSC_INTERN PetscErrorCode RollerContactBoxQPDestroy(RollerContactLCP *);
 PETSC_INTERN PetscErrorCode RollerContactLemke(PetscInt, const PetscReal[], const PetscReal[], PetscReal[], PetscInt *, PetscBool *);
 
 /* contact_coulomb.c: Coulomb of one step by the primal-dual active-set (semismooth Newton) method */
-PETSC_INTERN PetscErrorCode RollerContactCoulombNewton(PetscInt, const PetscReal[], const PetscReal[], const PetscReal[], PetscReal[], PetscInt, PetscInt *, PetscBool *);
+PETSC_INTERN PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *, PetscInt, const PetscReal[], PetscReal[], PetscInt, PetscInt *, PetscBool *);
 
 /* contact_friction.c */
 PETSC_INTERN PetscErrorCode RollerContactFrictionCreate(Roller, RollerContact);
