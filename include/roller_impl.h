@@ -17,7 +17,7 @@
 #include <petscds.h>
 #include <petscsf.h>
 
-typedef enum { ROLLER_IC_REST, ROLLER_IC_BUMP, ROLLER_IC_MMS } RollerInitialCondition;
+typedef enum { ROLLER_IC_REST, ROLLER_IC_BUMP, ROLLER_IC_MMS, ROLLER_IC_MODE } RollerInitialCondition;
 PETSC_EXTERN const char *const RollerInitialConditions[];
 
 /* Manufactured solutions used to verify the discretization (docs/validation.md). */
@@ -40,7 +40,7 @@ typedef struct _n_RollerContact  *RollerContact;
 typedef struct _n_RollerMonitors *RollerMonitors; /* the observers of the run (integrate/monitor.c) */
 
 /* Indices into ctx->stage for -log_view. */
-enum { ROLLER_STAGE_SETUP, ROLLER_STAGE_STEP, ROLLER_STAGE_CONTACT, ROLLER_STAGE_DIAGNOSTICS, ROLLER_STAGE_OUTPUT, ROLLER_NUM_STAGES };
+enum { ROLLER_STAGE_SETUP, ROLLER_STAGE_STEP, ROLLER_STAGE_CONTACT, ROLLER_STAGE_DIAGNOSTICS, ROLLER_STAGE_OUTPUT, ROLLER_STAGE_MODES, ROLLER_NUM_STAGES };
 
 /* The friction and drive columns of a step (docs/friction.md): the tangential force of the sheet on the roller
    along e1 (lab), the torque the shaft exerts, the contact nodes that stick and slip, the cumulative works of
@@ -167,6 +167,20 @@ typedef struct {
   PetscInt  work_step, momentum_step;
 } RollerState;
 
+/* Modes (src/modes, docs/squeal.md): -modes solves the quadratic eigenproblem of the scene instead of stepping;
+   the frame of the linearization, the eigenvalue CSV and the shapes' HDF5 file */
+typedef enum { ROLLER_FRAME_ROTATING, ROLLER_FRAME_LAB } RollerFrame;
+PETSC_EXTERN const char *const RollerFrames[];
+typedef struct {
+  PetscBool   on;
+  RollerFrame frame;
+  PetscInt    nev;
+  char        csv[PETSC_MAX_PATH_LEN], output[PETSC_MAX_PATH_LEN];
+  /* the result, sorted by frequency: n eigenvalues re + i im (im >= 0), their order, wave (RollerWave) and error */
+  PetscInt   n, *order, *wave;
+  PetscReal *re, *im, *error;
+} RollerEigen;
+
 /* Checkpoint and restart (integrate/checkpoint.c) */
 typedef struct {
   char     file[PETSC_MAX_PATH_LEN], restart[PETSC_MAX_PATH_LEN];
@@ -181,6 +195,8 @@ typedef struct {
   DM                     dm;       /* the manufactured body force's own DM and DS (verify/mms.c) */
   PetscViewer            mms_view; /* -mms_view: where the errors at the end go (NULL: stdout) */
   PetscViewerFormat      mms_format;
+  char                   mode_file[PETSC_MAX_PATH_LEN]; /* -initial_condition mode: the -modes_output file and the mode's row */
+  PetscInt               mode_index;
 } RollerInitial;
 
 struct _n_Roller {
@@ -193,6 +209,7 @@ struct _n_Roller {
   RollerOperators      ops;
   RollerTimeParams     ts;
   RollerModes          modes;
+  RollerEigen          eig;
   RollerState          state;
   RollerCheckpoint     ck;
   RollerInitial        init;

@@ -4,17 +4,18 @@ static const char help[] = "Roller: a rubber roller (elastic annulus) driven in 
                            "Model and options: docs/model.md, docs/options.md.\n\n";
 
 #include <roller.h>
+#include <slepcsys.h>
 
 int main(int argc, char **argv)
 {
   Roller roller;
 
-  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  PetscCall(SlepcInitialize(&argc, &argv, NULL, help)); /* PETSc and SLEPc (-modes) */
   PetscCall(RollerCreate(PETSC_COMM_WORLD, &roller));
   PetscCall(RollerSetFromOptions(roller));
   PetscCall(RollerSetUp(roller));
   PetscCall(RollerSolve(roller));
   PetscCall(RollerDestroy(&roller));
-  PetscCall(PetscFinalize());
+  PetscCall(SlepcFinalize());
   return 0;
 }

@@ -2,8 +2,9 @@
    own block (listed by -help under its own heading); the checks of combinations that span components are here,
    in one place (RollerSetFromOptions, "cross-component checks"). */
 #include "integrate/integrate.h"
+#include "modes/modes.h"
 
-const char *const RollerInitialConditions[] = {"rest", "bump", "mms", "RollerInitialCondition", "ROLLER_IC_", NULL};
+const char *const RollerInitialConditions[] = {"rest", "bump", "mms", "mode", "RollerInitialCondition", "ROLLER_IC_", NULL};
 const char *const RollerMMSTypes[]          = {"none", "linear", "sine", "RollerMMSType", "ROLLER_MMS_", NULL};
 
 PetscErrorCode RollerCreate(MPI_Comm comm, Roller *roller)
@@ -36,6 +37,7 @@ PetscErrorCode RollerCreate(MPI_Comm comm, Roller *roller)
   PetscCall(PetscLogStageRegister("Roller contact", &ctx->stage[ROLLER_STAGE_CONTACT]));
   PetscCall(PetscLogStageRegister("Roller diagnostics", &ctx->stage[ROLLER_STAGE_DIAGNOSTICS]));
   PetscCall(PetscLogStageRegister("Roller output", &ctx->stage[ROLLER_STAGE_OUTPUT]));
+  PetscCall(PetscLogStageRegister("Roller modes", &ctx->stage[ROLLER_STAGE_MODES]));
   *roller = ctx;
   PetscFunctionReturn(0);
 }
@@ -70,6 +72,7 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCall(RollerInitialSetFromOptions(ctx));
 
   PetscCall(RollerCheckpointSetFromOptions(ctx));
+  PetscCall(RollerModesSetFromOptions(ctx));
 
   PetscCheck(ctx->obstacle.speed > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-obstacle_speed %g must be > 0", (double)ctx->obstacle.speed);
   /* cross-component checks */
@@ -81,6 +84,9 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCheck(!(ctx->obstacle.on && ctx->disc.coriolis == ROLLER_CORIOLIS_CENTERED), ctx->comm, PETSC_ERR_ARG_INCOMP, "-coriolis_velocity centered makes the step matrix non-symmetric: the step is then no longer a minimization, and -obstacle needs one (use backward or extrapolated)");
   PetscCheck(!(ctx->obstacle.on && ctx->disc.clamp_outer), ctx->comm, PETSC_ERR_ARG_INCOMP, "-obstacle cannot be combined with -clamp_outer (Gamma_C would be fixed)");
   PetscCheck(!ctx->disc.static_solve || (ctx->rotation.omega == 0 && ctx->rotation.a == 0 && ctx->init.type == ROLLER_IC_REST && ctx->init.mms == ROLLER_MMS_NONE && !ctx->ck.restart[0] && ctx->ts.max_time > 0), ctx->comm, PETSC_ERR_ARG_INCOMP, "-static needs -omega 0, -theta_a 0, the rest initial condition, no -mms or -restart, and -ts_max_time > 0");
+  PetscCheck(!(ctx->eig.on && ctx->obstacle.on), ctx->comm, PETSC_ERR_SUP, "-modes with -obstacle (the steady rolling state and its squeal analysis, docs/squeal.md) is not built yet: -modes computes the free annulus only");
+  PetscCheck(!(ctx->eig.on && ctx->eig.frame == ROLLER_FRAME_LAB && (ctx->material.viscosity != 0 || ctx->disc.damping != 0)), ctx->comm, PETSC_ERR_SUP, "-modes_frame lab with -viscosity %g or -damping %g: the lab frame's damping operators are not built (use -modes_frame rotating)", (double)ctx->material.viscosity, (double)ctx->disc.damping);
+  PetscCheck(!(ctx->eig.on && (ctx->rotation.a != 0 || ctx->ck.restart[0] || ctx->disc.static_solve)), ctx->comm, PETSC_ERR_ARG_INCOMP, "-modes linearizes about steady rotation: it takes no -theta_a, -restart or -static");
   if (ctx->disc.static_solve) { /* one step from rest to t = max_time with A = K: the right-hand side is 0 */
     ctx->ts.dt        = ctx->ts.max_time;
     ctx->ts.dt_set    = PETSC_TRUE; /* not the accurate default's dt */

@@ -1,6 +1,7 @@
 /* The life of a Roller context: set up every component in order, each setting its observers of the run, and
    destroy them all. */
 #include "integrate/integrate.h"
+#include "modes/modes.h"
 
 PetscErrorCode RollerSetUp(Roller ctx)
 {
@@ -25,11 +26,22 @@ PetscErrorCode RollerSetUp(Roller ctx)
   }
   /* The observers, in the order they see every state: the console lines, the outputs (CSV, fields), the
      periodic checkpoint (after the outputs: a restart continues after the CSV row of its step), the MMS errors */
-  PetscCall(RollerTimeStepMonitorSetUp(ctx));
-  PetscCall(RollerOutputSetUp(ctx));
-  PetscCall(RollerCheckpointMonitorSetUp(ctx));
-  PetscCall(RollerInitialMonitorSetUp(ctx));
+  if (!ctx->eig.on) {
+    PetscCall(RollerTimeStepMonitorSetUp(ctx));
+    PetscCall(RollerOutputSetUp(ctx));
+    PetscCall(RollerCheckpointMonitorSetUp(ctx));
+    PetscCall(RollerInitialMonitorSetUp(ctx));
+  }
   PetscCall(PetscLogStagePop());
+  PetscFunctionReturn(0);
+}
+
+/* The run: the time loop (integrate/driver.c), or with -modes the eigenproblem (modes/modes.c). */
+PetscErrorCode RollerSolve(Roller ctx)
+{
+  PetscFunctionBeginUser;
+  if (ctx->eig.on) PetscCall(RollerModesSolve(ctx));
+  else PetscCall(RollerRun(ctx));
   PetscFunctionReturn(0);
 }
 
@@ -42,6 +54,7 @@ PetscErrorCode RollerDestroy(Roller *roller)
   PetscCall(RollerMonitorCancel(ctx));
   PetscCall(PetscViewerDestroy(&ctx->init.mms_view));
   PetscCall(RollerContactDestroy(&ctx->contact));
+  PetscCall(RollerModesDestroy(ctx));
   PetscCall(KSPDestroy(&ctx->ops.ksp));
   PetscCall(MatDestroy(&ctx->ops.M));
   PetscCall(MatDestroy(&ctx->ops.K));

@@ -39,29 +39,6 @@ PetscErrorCode RollerCheckpointSetFromOptions(Roller ctx)
   PetscFunctionReturn(0);
 }
 
-/* Through a plain MPI vector of the same layout, HDF5 writes a flat dataset by name, not the DM's fields.
-   (VecLoad replaces a vector's array, so the load goes through a copy.) */
-static PetscErrorCode PlainView(Vec v, const char *name, PetscViewer viewer, PetscBool load)
-{
-  Vec      plain;
-  PetscInt n, N;
-
-  PetscFunctionBeginUser;
-  PetscCall(VecGetLocalSize(v, &n));
-  PetscCall(VecGetSize(v, &N));
-  PetscCall(VecCreateMPI(PetscObjectComm((PetscObject)v), n, N, &plain));
-  PetscCall(PetscObjectSetName((PetscObject)plain, name));
-  if (load) {
-    PetscCall(VecLoad(plain, viewer));
-    PetscCall(VecCopy(plain, v));
-  } else {
-    PetscCall(VecCopy(v, plain));
-    PetscCall(VecView(plain, viewer));
-  }
-  PetscCall(VecDestroy(&plain));
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode RollerCheckpointWrite(Roller ctx, const char *path)
 {
   char        tmp[PETSC_MAX_PATH_LEN];
@@ -73,7 +50,7 @@ PetscErrorCode RollerCheckpointWrite(Roller ctx, const char *path)
   PetscCall(RollerJoinPath(tmp, sizeof(tmp), path, ".tmp", "-checkpoint"));
   PetscCall(PetscViewerHDF5Open(ctx->comm, tmp, FILE_MODE_WRITE, &viewer));
   History(ctx, v);
-  for (PetscInt i = 0; i < 3; ++i) PetscCall(PlainView(v[i], history_names[i], viewer, PETSC_FALSE));
+  for (PetscInt i = 0; i < 3; ++i) PetscCall(RollerPlainVecView(v[i], history_names[i], viewer, PETSC_FALSE));
   PetscCall(VecGetSize(ctx->state.cur, &N));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "step", PETSC_INT, &ctx->state.step));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "time", PETSC_REAL, &ctx->state.time));
@@ -154,7 +131,7 @@ PetscErrorCode RollerCheckpointRead(Roller ctx, const char *path)
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "step", PETSC_INT, NULL, &ctx->state.step));
   PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "time", PETSC_REAL, NULL, &ctx->state.time));
   History(ctx, v);
-  for (PetscInt i = 0; i < 3; ++i) PetscCall(PlainView(v[i], history_names[i], viewer, PETSC_TRUE));
+  for (PetscInt i = 0; i < 3; ++i) PetscCall(RollerPlainVecView(v[i], history_names[i], viewer, PETSC_TRUE));
   /* the cumulative works up to the checkpoint's step (checkpoints before friction have none: 0) */
   for (PetscInt i = 0; i < 3; ++i) {
     PetscBool has;

@@ -15,7 +15,7 @@ static PetscErrorCode StepFailed(Roller ctx, PetscErrorCode ierr)
   SETERRQ(ctx->comm, ierr, "Step %" PetscInt_FMT " failed; the last good state is in the checkpoint %s", ctx->state.step + 1, ctx->ck.file);
 }
 
-PetscErrorCode RollerSolve(Roller ctx)
+PetscErrorCode RollerRun(Roller ctx)
 {
   PetscInt nsteps;
 

@@ -42,4 +42,7 @@ PETSC_INTERN PetscErrorCode RollerSignalCaught(Roller, PetscInt *);
 /* monitor.c (RollerMonitorSet and RollerMonitorCancel are public) */
 PETSC_INTERN PetscErrorCode RollerMonitorRun(Roller, RollerMonitorEvent);
 
+/* driver.c: the time loop (RollerSolve without -modes) */
+PETSC_INTERN PetscErrorCode RollerRun(Roller);
+
 #endif

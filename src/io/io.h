@@ -4,6 +4,7 @@
      output_csv.c    the monitor CSV (docs/model.md section 6) and its observer
      output_xdmf.c   the HDF5 layout and the XDMF index
      series.c        the diagnostics time series in the HDF5 file
+     output_modes.c  the mode shapes of -modes and their XDMF index; one read back
      output_files.c  .part files renamed on success, stale outputs, writable paths (also the checkpoint's) */
 #ifndef ROLLER_IO_H
 #define ROLLER_IO_H
@@ -16,6 +17,7 @@ PETSC_INTERN PetscErrorCode RollerJoinPath(char[], size_t, const char[], const c
 PETSC_INTERN PetscErrorCode RollerRenameFile(MPI_Comm, const char[], const char[]);
 PETSC_INTERN PetscErrorCode RollerRemoveStale(MPI_Comm, const char[]);
 PETSC_INTERN PetscErrorCode RollerCheckWritable(MPI_Comm, const char[], const char[]);
+PETSC_INTERN PetscErrorCode RollerPlainVecView(Vec, const char[], PetscViewer, PetscBool); /* a flat dataset by name: view, or load (PETSC_TRUE) */
 
 /* series.c: the diagnostics time series written into the HDF5 output */
 typedef struct _n_RollerSeries *RollerSeries;
@@ -35,5 +37,9 @@ PETSC_INTERN PetscErrorCode  RollerCsvMonitorSetUp(Roller, const char[]);
 /* output.c: the fields (HDF5 + XDMF index) and the output options; every output set as an observer */
 typedef struct _n_RollerOutput *RollerOutput;
 PETSC_INTERN PetscErrorCode     RollerOutputSetUp(Roller);
+
+/* output_modes.c: the shapes of -modes (HDF5 + XDMF) and one of them read back */
+PETSC_INTERN PetscErrorCode RollerModeShapesWrite(Roller, const char[], PetscInt, const PetscReal[], const PetscReal[], const PetscInt[], Vec[], Vec[]);
+PETSC_INTERN PetscErrorCode RollerModeShapeRead(Roller, const char[], PetscInt, PetscReal *, PetscReal *, Vec, Vec);
 
 #endif

@@ -18,7 +18,7 @@
 #include "model/kernels.h"
 
 /* Projection kernels (DMProjectField evaluates them at the vertices). */
-static void f_pad_vector(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f[])
+void RollerPadVector(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f[])
 {
   f[0] = u[0];
   f[1] = u[1];
@@ -33,7 +33,7 @@ static void f_one(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants
 /* Evaluate a kernel of the field u (on ctx->mesh.dm) at the vertices of the output space of X. ADD_VALUES sums
    over the cells around each vertex (then divided by their number: a derivative such as sigma is
    discontinuous across cells and its vertex value is the mean of the cells' values). */
-static PetscErrorCode ProjectAtVertices(Roller ctx, Vec u, RollerPointFunc kernel, InsertMode mode, Vec X)
+PetscErrorCode RollerProjectAtVertices(Roller ctx, Vec u, RollerPointFunc kernel, InsertMode mode, Vec X)
 {
   RollerPointFunc funcs[1] = {kernel};
   DM              dm;
@@ -60,7 +60,7 @@ static PetscErrorCode ProjectAtVertices(Roller ctx, Vec u, RollerPointFunc kerne
 
 /* A P1 space on the mesh of ctx->mesh.dm with nc components, its field named name (PETSc names the vertex
    datasets <vec>_<field>). */
-static PetscErrorCode OutputSpace(Roller ctx, PetscInt nc, const char name[], DM *dm)
+PetscErrorCode RollerOutputSpace(Roller ctx, PetscInt nc, const char name[], DM *dm)
 {
   PetscFE fe;
 
@@ -74,7 +74,7 @@ static PetscErrorCode OutputSpace(Roller ctx, PetscInt nc, const char name[], DM
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode FieldCreate(DM dm, const char name[], OutputField *field)
+PetscErrorCode RollerFieldCreate(DM dm, const char name[], OutputField *field)
 {
   PetscSection section;
   const char  *fname;
@@ -89,7 +89,7 @@ static PetscErrorCode FieldCreate(DM dm, const char name[], OutputField *field)
 }
 
 /* The run's parameters as attributes of /parameters, so that scripts (plot_fields.py) need not be told. */
-static PetscErrorCode WriteParameters(Roller ctx, PetscViewer h5)
+PetscErrorCode RollerWriteParameters(Roller ctx, PetscViewer h5)
 {
   const struct {
     const char *name;
@@ -137,36 +137,36 @@ static PetscErrorCode FieldsCreate(Roller ctx, RollerOutput out)
   PetscCall(RollerCheckWritable(ctx->comm, "-output", out->h5_part));
   PetscCall(PetscViewerHDF5Open(ctx->comm, out->h5_part, FILE_MODE_WRITE, &out->h5));
   PetscCall(DMView(ctx->mesh.dm_view, out->h5)); /* straight-sided: XDMF draws linear triangles */
-  PetscCall(WriteParameters(ctx, out->h5));
+  PetscCall(RollerWriteParameters(ctx, out->h5));
   PetscCall(PetscViewerHDF5HasDataset(out->h5, "/viz/geometry/vertices", &has));
   PetscCall(RollerDatasetQuery(out->h5, has ? "/viz/geometry/vertices" : "/geometry/vertices", &out->xdmf.vertices));
   PetscCall(RollerDatasetQuery(out->h5, "/viz/topology/cells", &out->xdmf.cells));
   PetscCheck(out->xdmf.vertices.ndims == 2 && out->xdmf.cells.ndims == 2, ctx->comm, PETSC_ERR_LIB, "Unexpected mesh layout in %s", out->h5_part);
 
-  PetscCall(OutputSpace(ctx, 3, "displacement", &out->vdm));
-  PetscCall(OutputSpace(ctx, 1, "stress_norm", &out->sdm));
-  PetscCall(FieldCreate(out->vdm, "displacement", &out->field[FIELD_DISPLACEMENT]));
-  PetscCall(FieldCreate(out->vdm, "displacement_lab", &out->field[FIELD_LAB]));
-  PetscCall(FieldCreate(out->vdm, "velocity", &out->field[FIELD_VELOCITY]));
-  PetscCall(FieldCreate(out->sdm, "stress_norm", &out->field[FIELD_STRESS]));
+  PetscCall(RollerOutputSpace(ctx, 3, "displacement", &out->vdm));
+  PetscCall(RollerOutputSpace(ctx, 1, "stress_norm", &out->sdm));
+  PetscCall(RollerFieldCreate(out->vdm, "displacement", &out->field[FIELD_DISPLACEMENT]));
+  PetscCall(RollerFieldCreate(out->vdm, "displacement_lab", &out->field[FIELD_LAB]));
+  PetscCall(RollerFieldCreate(out->vdm, "velocity", &out->field[FIELD_VELOCITY]));
+  PetscCall(RollerFieldCreate(out->sdm, "stress_norm", &out->field[FIELD_STRESS]));
   out->nfields = FIELD_STRESS + 1;
   if (ctx->contact) {
-    PetscCall(OutputSpace(ctx, 1, "contact_pressure", &out->pdm));
-    PetscCall(FieldCreate(out->pdm, "contact_pressure", &out->field[FIELD_CONTACT_PRESSURE]));
+    PetscCall(RollerOutputSpace(ctx, 1, "contact_pressure", &out->pdm));
+    PetscCall(RollerFieldCreate(out->pdm, "contact_pressure", &out->field[FIELD_CONTACT_PRESSURE]));
     out->nfields = FIELD_CONTACT_PRESSURE + 1;
   }
   if (RollerContactHasFriction(ctx->contact)) {
-    PetscCall(OutputSpace(ctx, 1, "contact_traction", &out->tdm));
-    PetscCall(OutputSpace(ctx, 1, "contact_state", &out->cdm));
-    PetscCall(FieldCreate(out->tdm, "contact_traction", &out->field[FIELD_CONTACT_TRACTION]));
-    PetscCall(FieldCreate(out->cdm, "contact_state", &out->field[FIELD_CONTACT_STATE]));
+    PetscCall(RollerOutputSpace(ctx, 1, "contact_traction", &out->tdm));
+    PetscCall(RollerOutputSpace(ctx, 1, "contact_state", &out->cdm));
+    PetscCall(RollerFieldCreate(out->tdm, "contact_traction", &out->field[FIELD_CONTACT_TRACTION]));
+    PetscCall(RollerFieldCreate(out->cdm, "contact_state", &out->field[FIELD_CONTACT_STATE]));
     out->nfields = FIELD_CONTACT_STATE + 1;
   }
   PetscCall(DMCreateGlobalVector(ctx->mesh.dm, &out->velocity));
   PetscCall(DMCreateGlobalVector(out->sdm, &out->count));
   PetscCall(DMCreateGlobalVector(out->vdm, &out->position));
   PetscCall(DMProjectFunction(out->vdm, 0.0, position, NULL, INSERT_VALUES, out->position));
-  PetscCall(ProjectAtVertices(ctx, ctx->state.cur, f_one, ADD_VALUES, out->count));
+  PetscCall(RollerProjectAtVertices(ctx, ctx->state.cur, f_one, ADD_VALUES, out->count));
   PetscFunctionReturn(0);
 }
 
@@ -205,13 +205,13 @@ static PetscErrorCode WriteFields(Roller ctx, RollerOutput out)
 
   PetscFunctionBeginUser;
   RollerTheta(ctx, ctx->state.time, &theta, NULL, NULL);
-  PetscCall(ProjectAtVertices(ctx, ctx->state.cur, f_pad_vector, INSERT_VALUES, out->field[FIELD_DISPLACEMENT].vec));
+  PetscCall(RollerProjectAtVertices(ctx, ctx->state.cur, RollerPadVector, INSERT_VALUES, out->field[FIELD_DISPLACEMENT].vec));
   PetscCall(LabDisplacement(out, theta, out->field[FIELD_DISPLACEMENT].vec, out->field[FIELD_LAB].vec));
   PetscCall(VecWAXPY(out->velocity, -1.0, ctx->state.prev, ctx->state.cur));
   PetscCall(VecScale(out->velocity, 1.0 / ctx->ts.dt));
-  PetscCall(ProjectAtVertices(ctx, out->velocity, f_pad_vector, INSERT_VALUES, out->field[FIELD_VELOCITY].vec));
+  PetscCall(RollerProjectAtVertices(ctx, out->velocity, RollerPadVector, INSERT_VALUES, out->field[FIELD_VELOCITY].vec));
   /* |sigma| (docs/model.md section 4); DMProjectField hands the kernel the constants of the input DS, ctx->mesh.dm's */
-  PetscCall(ProjectAtVertices(ctx, ctx->state.cur, f_stress_norm, ADD_VALUES, out->field[FIELD_STRESS].vec));
+  PetscCall(RollerProjectAtVertices(ctx, ctx->state.cur, f_stress_norm, ADD_VALUES, out->field[FIELD_STRESS].vec));
   PetscCall(VecPointwiseDivide(out->field[FIELD_STRESS].vec, out->field[FIELD_STRESS].vec, out->count));
   /* multiplier / tributary length at the Gamma_C vertices (docs/contact.md) */
   if (out->nfields > FIELD_CONTACT_PRESSURE)

@@ -6,6 +6,7 @@
 #define ROLLER_IO_OUTPUT_H
 
 #include "io/io.h"
+#include "model/kernels.h"
 #include <petscviewerhdf5.h>
 #include <errno.h>
 #include <stdio.h>
@@ -62,6 +63,13 @@ struct _n_RollerOutput {
   PetscInt     nfields;
   RollerSeries series; /* R, alpha, energy, ... of every step, to /diagnostics at the end */
 };
+
+/* output.c: what the fields output shares with the mode shapes (output_modes.c) */
+PETSC_INTERN PetscErrorCode RollerOutputSpace(Roller, PetscInt, const char[], DM *);           /* P1, nc components */
+PETSC_INTERN PetscErrorCode RollerFieldCreate(DM, const char[], OutputField *);
+PETSC_INTERN PetscErrorCode RollerProjectAtVertices(Roller, Vec, RollerPointFunc, InsertMode, Vec); /* u on ctx->mesh.dm */
+PETSC_INTERN PetscErrorCode RollerWriteParameters(Roller, PetscViewer);
+PETSC_INTERN void           RollerPadVector(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f[]);
 
 /* output_xdmf.c */
 PETSC_INTERN PetscErrorCode RollerXdmfPaths(RollerOutput);

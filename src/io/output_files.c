@@ -64,3 +64,26 @@ PetscErrorCode RollerCheckWritable(MPI_Comm comm, const char option[], const cha
   PetscCheck(!err, comm, PETSC_ERR_FILE_OPEN, "%s: cannot write %s: %s", option, path, strerror(err));
   PetscFunctionReturn(0);
 }
+
+/* Through a plain MPI vector of the same layout, HDF5 writes a flat dataset by name, not the DM's fields.
+   (VecLoad replaces a vector's array, so the load goes through a copy.) */
+PetscErrorCode RollerPlainVecView(Vec v, const char *name, PetscViewer viewer, PetscBool load)
+{
+  Vec      plain;
+  PetscInt n, N;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(v, &n));
+  PetscCall(VecGetSize(v, &N));
+  PetscCall(VecCreateMPI(PetscObjectComm((PetscObject)v), n, N, &plain));
+  PetscCall(PetscObjectSetName((PetscObject)plain, name));
+  if (load) {
+    PetscCall(VecLoad(plain, viewer));
+    PetscCall(VecCopy(plain, v));
+  } else {
+    PetscCall(VecCopy(v, plain));
+    PetscCall(VecView(plain, viewer));
+  }
+  PetscCall(VecDestroy(&plain));
+  PetscFunctionReturn(0);
+}

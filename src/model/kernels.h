@@ -67,6 +67,26 @@ static inline void g0_gyro(ROLLER_KERNEL_ARGS, PetscReal u_tShift, const PetscRe
   g0[2] = -1.0;
 }
 
+/* The convective operators of the Eulerian (lab) description (docs/squeal.md section 1): d_phi = x1 d/dx2 - x2 d/dx1,
+   the derivative along the rotation, acting on each Cartesian component. D: (d_phi u, v), skew (d_phi is
+   divergence-free and tangent to both circles); P: (d_phi u, d_phi v), symmetric. No constants. */
+static inline void g1_convective(ROLLER_KERNEL_ARGS, PetscReal u_tShift, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar g1[])
+{
+  for (PetscInt c = 0; c < dim; ++c) {
+    g1[(c * dim + c) * dim + 0] = -x[1];
+    g1[(c * dim + c) * dim + 1] = x[0];
+  }
+}
+
+static inline void g3_convective(ROLLER_KERNEL_ARGS, PetscReal u_tShift, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar g3[])
+{
+  const PetscReal e[2] = {-x[1], x[0]};
+
+  for (PetscInt c = 0; c < dim; ++c)
+    for (PetscInt d = 0; d < dim; ++d)
+      for (PetscInt f = 0; f < dim; ++f) g3[((c * dim + c) * dim + d) * dim + f] = e[d] * e[f];
+}
+
 /* Load of the rigid-body part of the centrifugal force: (x, v). No constants. */
 static inline void f0_centrifugal(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f0[])
 {

@@ -7,8 +7,8 @@
 #include "model/model.h"
 #include "model/kernels.h"
 
-/* The bilinear form of one Jacobian kernel, g0 or g3, on its own DM; constants: the material's for K. */
-PetscErrorCode RollerAssembleMatrix(Roller ctx, const char *name, PetscPointJac g0, PetscPointJac g3, Mat *J)
+/* The bilinear form of Jacobian kernels g0, g1, g3 (any may be NULL) on its own DM; constants: the material's. */
+PetscErrorCode RollerAssembleMatrix(Roller ctx, const char *name, PetscPointJac g0, PetscPointJac g1, PetscPointJac g3, Mat *J)
 {
   DM      dm;
   PetscDS ds;
@@ -17,7 +17,7 @@ PetscErrorCode RollerAssembleMatrix(Roller ctx, const char *name, PetscPointJac 
   PetscFunctionBeginUser;
   PetscCall(RollerOperatorDMCreate(ctx, NULL, &dm));
   PetscCall(DMGetDS(dm, &ds));
-  PetscCall(PetscDSSetJacobian(ds, 0, 0, g0, NULL, NULL, g3));
+  PetscCall(PetscDSSetJacobian(ds, 0, 0, g0, g1, NULL, g3));
   if (g3) PetscCall(RollerMaterialSetConstants(ctx, ds));
   PetscCall(DMCreateMatrix(dm, J));
   PetscCall(DMGetLocalVector(dm, &loc));
@@ -90,9 +90,9 @@ PetscErrorCode RollerOperatorsSetUp(Roller ctx)
   PetscCall(DMCreateGlobalVector(ctx->mesh.dm, &ctx->ops.coordinates));
   PetscCall(DMProjectFunction(ctx->mesh.dm, 0.0, position, NULL, INSERT_VALUES, ctx->ops.coordinates));
   PetscCall(RollerMassTransfer(ctx, &T));
-  PetscCall(RollerAssembleMatrix(ctx, "M", g0_mass, NULL, &ctx->ops.M));
+  PetscCall(RollerAssembleMatrix(ctx, "M", g0_mass, NULL, NULL, &ctx->ops.M));
   if (T) PetscCall(RollerMassReduce(T, 1.0, &ctx->ops.M));
-  PetscCall(RollerAssembleMatrix(ctx, "K", NULL, g3_elastic, &ctx->ops.K));
+  PetscCall(RollerAssembleMatrix(ctx, "K", NULL, NULL, g3_elastic, &ctx->ops.K));
   PetscCall(MatDuplicate(ctx->ops.K, MAT_COPY_VALUES, &ctx->ops.A));
   if (!ctx->disc.static_solve) { /* -static: A = K, the step from rest is min 1/2 xi^T K xi over the admissible set */
     /* Kelvin-Voigt: tau K (xi^k - xi^{k-2})/(2 dt), centred on t_{k-1} like the mass damping (docs/model.md section 2) */
@@ -101,7 +101,7 @@ PetscErrorCode RollerOperatorsSetUp(Roller ctx)
   }
   if (ctx->disc.coriolis == ROLLER_CORIOLIS_CENTERED) {
     /* A - rho theta'/dt G: no longer symmetric (G is skew), still positive definite */
-    PetscCall(RollerAssembleMatrix(ctx, "G", g0_gyro, NULL, &ctx->ops.Gyro));
+    PetscCall(RollerAssembleMatrix(ctx, "G", g0_gyro, NULL, NULL, &ctx->ops.Gyro));
     if (T) PetscCall(RollerMassReducePattern(T, ctx->ops.A, &ctx->ops.Gyro)); /* T^T G T, on A's pattern */
     PetscCall(MatDuplicate(ctx->ops.A, MAT_COPY_VALUES, &ctx->ops.A0));
     PetscCall(RollerUpdateGyroscopic(ctx, 0.0));
@@ -117,6 +117,6 @@ PetscErrorCode RollerOperatorsSetUp(Roller ctx)
     PetscCall(RollerMassReduceLoad(T, ctx->ops.L_centrifugal));
   }
   PetscCall(MatDestroy(&T));
-  PetscCall(RollerStepSolverSetUp(ctx));
+  if (!ctx->eig.on) PetscCall(RollerStepSolverSetUp(ctx)); /* -modes factors its own shifted operator */
   PetscFunctionReturn(0);
 }

@@ -194,7 +194,7 @@ int main(int argc, char **argv)
   PetscFunctionBeginUser;
   PetscCall(PetscInitialize(&argc, &argv, NULL, help));
   PetscCall(RollerUnitSetUp(scene, ROLLER_UNIT_COUNT(scene), &ctx));
-  PetscCall(RollerAssembleMatrix(ctx, "M", g0_mass, NULL, &M));
+  PetscCall(RollerAssembleMatrix(ctx, "M", g0_mass, NULL, NULL, &M));
   PetscCall(CheckAffine(ctx, M));
   PetscCall(CheckZeroRows(ctx));
   PetscCall(CheckDefinite(ctx));

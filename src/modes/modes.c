@@ -1,0 +1,138 @@
+/* -modes (docs/squeal.md): instead of stepping, the modes of the scene, the quadratic eigenproblem of
+   operators.c solved by pep.c, each eigenvalue classified (classify.c), written one row per eigenvalue to the
+   CSV (-modes_csv F: re,im,frequency,growth_rate,order,wave,error, sorted by frequency; written as F.part and
+   renamed when complete) and printed; the shapes to HDF5 + XDMF (-modes_output F.h5, io/output_modes.c). */
+#include "modes/modes.h"
+
+const char *const RollerFrames[] = {"rotating", "lab", "RollerFrame", "ROLLER_FRAME_", NULL};
+
+PetscErrorCode RollerModesSetFromOptions(Roller ctx)
+{
+  PetscFunctionBeginUser;
+  ctx->eig.nev = 20;
+  PetscOptionsBegin(ctx->comm, NULL, "Roller: modes (docs/squeal.md); the eigensolver takes -pep_* and -st_* options (SLEPc PEP, TOAR, shift-and-invert about -pep_target 0)", NULL);
+  PetscCall(PetscOptionsBool("-modes", "Compute the modes of the scene (the quadratic eigenproblem) instead of stepping", NULL, ctx->eig.on, &ctx->eig.on, NULL));
+  PetscCall(PetscOptionsEnum("-modes_frame", "Frame of the linearization: rotating (co-rotating, Lagrangian) or lab (Eulerian)", "RollerFrame", RollerFrames, (PetscEnum)ctx->eig.frame, (PetscEnum *)&ctx->eig.frame, NULL));
+  PetscCall(PetscOptionsInt("-modes_nev", "Number of eigenvalues wanted (-pep_nev overrides); each complex pair counts twice", NULL, ctx->eig.nev, &ctx->eig.nev, NULL));
+  PetscCall(PetscOptionsString("-modes_csv", "Eigenvalue CSV: re,im,frequency,growth_rate,order,wave,error", NULL, ctx->eig.csv, ctx->eig.csv, sizeof(ctx->eig.csv), NULL));
+  PetscCall(PetscOptionsString("-modes_output", "Mode shapes: HDF5 file F.h5 (+ XDMF index F.xmf for ParaView)", NULL, ctx->eig.output, ctx->eig.output, sizeof(ctx->eig.output), NULL));
+  PetscOptionsEnd();
+  PetscCheck(ctx->eig.nev > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-modes_nev %" PetscInt_FMT " must be > 0", ctx->eig.nev);
+  PetscFunctionReturn(0);
+}
+
+/* z <- z conj(z_p) / |z_p|^2, p the dof of largest |z|: the largest displacement component 1, real there. */
+static PetscErrorCode Normalize(Vec xr, Vec xi, Vec w)
+{
+  MPI_Comm  comm = PetscObjectComm((PetscObject)xr);
+  PetscInt  p, lo, hi;
+  PetscReal big, ab[2] = {0, 0}, g[2], s;
+  Vec       t;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecPointwiseMult(w, xr, xr));
+  PetscCall(VecDuplicate(xi, &t));
+  PetscCall(VecPointwiseMult(t, xi, xi));
+  PetscCall(VecAXPY(w, 1.0, t));
+  PetscCall(VecMax(w, &p, &big));
+  PetscCall(VecGetOwnershipRange(xr, &lo, &hi));
+  if (p >= lo && p < hi) {
+    const PetscScalar *a, *b;
+
+    PetscCall(VecGetArrayRead(xr, &a));
+    PetscCall(VecGetArrayRead(xi, &b));
+    ab[0] = PetscRealPart(a[p - lo]);
+    ab[1] = PetscRealPart(b[p - lo]);
+    PetscCall(VecRestoreArrayRead(xr, &a));
+    PetscCall(VecRestoreArrayRead(xi, &b));
+  }
+  PetscCall(MPIU_Allreduce(ab, g, 2, MPIU_REAL, MPIU_SUM, comm));
+  s = g[0] * g[0] + g[1] * g[1];
+  PetscCheck(s > 0, comm, PETSC_ERR_PLIB, "A zero eigenvector");
+  /* (xr + i xi)(a - i b)/s = (a xr + b xi)/s + i (a xi - b xr)/s */
+  PetscCall(VecCopy(xr, t));
+  PetscCall(VecAXPBY(xr, g[1] / s, g[0] / s, xi));
+  PetscCall(VecAXPBY(xi, -g[1] / s, g[0] / s, t));
+  PetscCall(VecDestroy(&t));
+  PetscFunctionReturn(0);
+}
+
+/* The eigenvalue CSV, rank 0, as F.part renamed when complete. */
+static PetscErrorCode WriteCsv(Roller ctx)
+{
+  const RollerEigen *e = &ctx->eig;
+  char        part[PETSC_MAX_PATH_LEN];
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  PetscCall(RollerJoinPath(part, sizeof(part), ctx->eig.csv, ".part", "-modes_csv"));
+  PetscCall(RollerRemoveStale(ctx->comm, ctx->eig.csv));
+  PetscCall(RollerCheckWritable(ctx->comm, "-modes_csv", part));
+  PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
+  if (!rank) {
+    FILE *fp;
+
+    PetscCall(PetscFOpen(PETSC_COMM_SELF, part, "w", &fp));
+    PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "re,im,frequency,growth_rate,order,wave,error\n"));
+    for (PetscInt j = 0; j < e->n; ++j) PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%s,%.3e\n", (double)e->re[j], (double)e->im[j], (double)e->im[j], (double)e->re[j], e->order[j], RollerWaves[e->wave[j]], (double)e->error[j]));
+    PetscCall(PetscFClose(PETSC_COMM_SELF, fp));
+  }
+  PetscCall(RollerRenameFile(ctx->comm, part, ctx->eig.csv));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerModesSolve(Roller ctx)
+{
+  RollerEigen         *e = &ctx->eig;
+  Mat                  M, C, K;
+  RollerPEP            pep;
+  RollerModeClassifier cls;
+  Vec                 *xr, *xi, w;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_MODES]));
+  PetscCall(RollerModeOperators(ctx, &M, &C, &K));
+  PetscCall(RollerPEPCreate(ctx->comm, M, C, K, e->nev, &pep));
+  PetscCall(RollerPEPSolve(pep, &e->n));
+  PetscCall(RollerModeClassifierCreate(ctx, &cls));
+  PetscCall(PetscFree5(e->order, e->wave, e->re, e->im, e->error));
+  PetscCall(PetscMalloc5(e->n, &e->order, e->n, &e->wave, e->n, &e->re, e->n, &e->im, e->n, &e->error));
+  PetscCall(VecDuplicateVecs(ctx->ops.coordinates, e->n, &xr));
+  PetscCall(VecDuplicateVecs(ctx->ops.coordinates, e->n, &xi));
+  PetscCall(VecDuplicate(ctx->ops.coordinates, &w));
+  for (PetscInt j = 0; j < e->n; ++j) {
+    RollerWave wave;
+
+    PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], xr[j], xi[j]));
+    PetscCall(RollerPEPGetError(pep, j, &e->error[j]));
+    PetscCall(Normalize(xr[j], xi[j], w));
+    PetscCall(RollerModeClassify(cls, xr[j], xi[j], &e->order[j], &wave));
+    e->wave[j] = wave;
+  }
+  PetscCall(PetscLogStagePop());
+  if (!ctx->ts.quiet) {
+    PetscCall(PetscPrintf(ctx->comm, "roller: %" PetscInt_FMT " modes (%s frame, omega %g), lambda = re + i im:\n  %4s %14s %14s %12s %5s %9s %9s\n", e->n, RollerFrames[e->frame], (double)ctx->rotation.omega, "#", "growth_rate", "frequency", "period", "order", "wave", "error"));
+    for (PetscInt j = 0; j < e->n; ++j) PetscCall(PetscPrintf(ctx->comm, "  %4" PetscInt_FMT " %14.6e %14.8f %12.6f %5" PetscInt_FMT " %9s %9.1e\n", j, (double)e->re[j], (double)e->im[j], e->im[j] > 0 ? (double)(2 * PETSC_PI / e->im[j]) : 0.0, e->order[j], RollerWaves[e->wave[j]], (double)e->error[j]));
+  }
+  PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_OUTPUT]));
+  if (e->csv[0]) PetscCall(WriteCsv(ctx));
+  if (e->output[0]) PetscCall(RollerModeShapesWrite(ctx, e->output, e->n, e->re, e->im, e->order, xr, xi));
+  PetscCall(PetscLogStagePop());
+  PetscCall(VecDestroyVecs(e->n, &xr));
+  PetscCall(VecDestroyVecs(e->n, &xi));
+  PetscCall(VecDestroy(&w));
+  PetscCall(RollerModeClassifierDestroy(&cls));
+  PetscCall(RollerPEPDestroy(&pep));
+  PetscCall(MatDestroy(&M));
+  PetscCall(MatDestroy(&C));
+  PetscCall(MatDestroy(&K));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerModesDestroy(Roller ctx)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree5(ctx->eig.order, ctx->eig.wave, ctx->eig.re, ctx->eig.im, ctx->eig.error));
+  ctx->eig.n = 0;
+  PetscFunctionReturn(0);
+}
