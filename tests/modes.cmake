@@ -1,0 +1,3 @@
+# The modes of the free rotating annulus (docs/model.md 8): scripts/annulus_modes_reference.py, the 1D reference
+# per signed circumferential order m (Bessel roots at n = 0, frame shift, Bryan's splitting); no roller run.
+roller_test(modes_reference_unit modes_reference_unit.py LABELS quick)
