@@ -175,7 +175,7 @@ typedef struct {
   PetscBool   on;
   RollerFrame frame;
   PetscInt    nev;
-  char        csv[PETSC_MAX_PATH_LEN], output[PETSC_MAX_PATH_LEN];
+  char        csv[PETSC_MAX_PATH_LEN], output[PETSC_MAX_PATH_LEN], steady_csv[PETSC_MAX_PATH_LEN];
   /* the result, sorted by frequency: n eigenvalues re + i im (im >= 0), their order, wave (RollerWave) and error */
   PetscInt   n, *order, *wave;
   PetscReal *re, *im, *error;

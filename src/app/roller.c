@@ -17,7 +17,7 @@ PetscErrorCode RollerSetUp(Roller ctx)
   PetscCall(RollerCheckRotation(ctx));
   PetscCall(RollerInitialState(ctx));
   if (ctx->ck.restart[0]) PetscCall(RollerCheckpointRead(ctx, ctx->ck.restart));
-  if (ctx->obstacle.on) PetscCall(RollerContactCreate(ctx, &ctx->contact));
+  if (ctx->obstacle.on && !ctx->eig.on) PetscCall(RollerContactCreate(ctx, &ctx->contact)); /* -modes: its own steady contact (modes/steady.c) */
   else {
     PetscBool help;
 

@@ -230,10 +230,6 @@ PETSC_INTERN PetscErrorCode RollerContactBoxQPCreate(PetscInt, RollerContactLCP 
 PETSC_INTERN PetscErrorCode RollerContactBoxQPSolve(RollerContactLCP *, RollerBoxQPType, PetscInt, PetscReal, PetscReal, PetscInt[], PetscReal[], PetscInt *);
 PETSC_INTERN PetscErrorCode RollerContactBoxQPDestroy(RollerContactLCP *);
 
-/* contact_lemke.c: the LCP w = M z + q >= 0, z >= 0, z . w = 0 (M n x n column-major) by Lemke's method;
-   *solved false on a secondary ray (no solution found) */
-PETSC_INTERN PetscErrorCode RollerContactLemke(PetscInt, const PetscReal[], const PetscReal[], PetscReal[], PetscInt *, PetscBool *);
-
 /* contact_coulomb.c: Coulomb of one step by the primal-dual active-set (semismooth Newton) method */
 PETSC_INTERN PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *, PetscInt, const PetscReal[], PetscReal[], PetscInt, PetscInt *, PetscBool *);
 

@@ -12,9 +12,11 @@ PetscErrorCode RollerModesSetFromOptions(Roller ctx)
   ctx->eig.nev = 20;
   PetscOptionsBegin(ctx->comm, NULL, "Roller: modes (docs/squeal.md); the eigensolver takes -pep_* and -st_* options (SLEPc PEP, TOAR, shift-and-invert about -pep_target 0)", NULL);
   PetscCall(PetscOptionsBool("-modes", "Compute the modes of the scene (the quadratic eigenproblem) instead of stepping", NULL, ctx->eig.on, &ctx->eig.on, NULL));
-  PetscCall(PetscOptionsEnum("-modes_frame", "Frame of the linearization: rotating (co-rotating, Lagrangian) or lab (Eulerian)", "RollerFrame", RollerFrames, (PetscEnum)ctx->eig.frame, (PetscEnum *)&ctx->eig.frame, NULL));
+  ctx->eig.frame = ctx->obstacle.on ? ROLLER_FRAME_LAB : ROLLER_FRAME_ROTATING; /* steady sliding is steady in the lab only */
+  PetscCall(PetscOptionsEnum("-modes_frame", "Frame of the linearization: rotating (co-rotating, Lagrangian) or lab (Eulerian; the default and the only one with -obstacle)", "RollerFrame", RollerFrames, (PetscEnum)ctx->eig.frame, (PetscEnum *)&ctx->eig.frame, NULL));
   PetscCall(PetscOptionsInt("-modes_nev", "Number of eigenvalues wanted (-pep_nev overrides); each complex pair counts twice", NULL, ctx->eig.nev, &ctx->eig.nev, NULL));
   PetscCall(PetscOptionsString("-modes_csv", "Eigenvalue CSV: re,im,frequency,growth_rate,order,wave,error", NULL, ctx->eig.csv, ctx->eig.csv, sizeof(ctx->eig.csv), NULL));
+  PetscCall(PetscOptionsString("-modes_steady_csv", "With -obstacle: the steady state's contact nodes x,y,normal_force,tangential_force,gap,slip_velocity,mu", NULL, ctx->eig.steady_csv, ctx->eig.steady_csv, sizeof(ctx->eig.steady_csv), NULL));
   PetscCall(PetscOptionsString("-modes_output", "Mode shapes: HDF5 file F.h5 (+ XDMF index F.xmf for ParaView)", NULL, ctx->eig.output, ctx->eig.output, sizeof(ctx->eig.output), NULL));
   PetscOptionsEnd();
   PetscCheck(ctx->eig.nev > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-modes_nev %" PetscInt_FMT " must be > 0", ctx->eig.nev);
@@ -87,11 +89,27 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   Mat                  M, C, K;
   RollerPEP            pep;
   RollerModeClassifier cls;
-  Vec                 *xr, *xi, w;
+  Vec                 *xr, *xi, w, zr = NULL, zi = NULL;
+  IS                   kept = NULL; /* with -obstacle: the dofs of the reduced problem */
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_MODES]));
   PetscCall(RollerModeOperators(ctx, &M, &C, &K));
+  if (ctx->obstacle.on) { /* the steady sliding state, and the linearization about it on the kept dofs */
+    RollerSteady st;
+    Mat          Mr, Cr, Kr;
+
+    PetscCall(RollerSteadySolve(ctx, K, &st));
+    PetscCall(RollerSteadyReport(ctx, &st));
+    PetscCall(RollerSquealOperators(ctx, &st, M, C, K, &Mr, &Cr, &Kr, &kept));
+    PetscCall(RollerSteadyDestroy(&st, PETSC_TRUE));
+    PetscCall(MatDestroy(&M));
+    PetscCall(MatDestroy(&C));
+    PetscCall(MatDestroy(&K));
+    M = Mr;
+    C = Cr;
+    K = Kr;
+  }
   PetscCall(RollerPEPCreate(ctx->comm, M, C, K, e->nev, &pep));
   PetscCall(RollerPEPSolve(pep, &e->n));
   PetscCall(RollerModeClassifierCreate(ctx, &cls));
@@ -103,7 +121,14 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   for (PetscInt j = 0; j < e->n; ++j) {
     RollerWave wave;
 
-    PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], xr[j], xi[j]));
+    if (kept) { /* the reduced vector into the full space; the active nodes' normal dofs are 0 */
+      if (!zr) PetscCall(MatCreateVecs(M, &zr, &zi));
+      PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], zr, zi));
+      PetscCall(VecZeroEntries(xr[j]));
+      PetscCall(VecZeroEntries(xi[j]));
+      PetscCall(VecISCopy(xr[j], kept, SCATTER_FORWARD, zr));
+      PetscCall(VecISCopy(xi[j], kept, SCATTER_FORWARD, zi));
+    } else PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], xr[j], xi[j]));
     PetscCall(RollerPEPGetError(pep, j, &e->error[j]));
     PetscCall(Normalize(xr[j], xi[j], w));
     PetscCall(RollerModeClassify(cls, xr[j], xi[j], &e->order[j], &wave));
@@ -121,6 +146,9 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   PetscCall(VecDestroyVecs(e->n, &xr));
   PetscCall(VecDestroyVecs(e->n, &xi));
   PetscCall(VecDestroy(&w));
+  PetscCall(VecDestroy(&zr));
+  PetscCall(VecDestroy(&zi));
+  PetscCall(ISDestroy(&kept));
   PetscCall(RollerModeClassifierDestroy(&cls));
   PetscCall(RollerPEPDestroy(&pep));
   PetscCall(MatDestroy(&M));

@@ -2,6 +2,8 @@
      pep.c        (lambda^2 M + lambda C + K) x = 0 for any (M, C, K): TOAR, shift-and-invert, pairs sorted by frequency
      operators.c  M, C, K of the free rotating annulus in the co-rotating or the lab (Eulerian) frame
      classify.c   the circumferential order n and the travelling direction of a mode shape
+     steady.c     the steady rolling/sliding state pressed by the sheet (lab frame), one static contact problem
+     squeal.c     the linearization about it: contact, friction (non-symmetric), velocity weakening (damping)
      modes.c      -modes: the options, the solve, the eigenvalue CSV and the shapes (io/output_modes.c) */
 #ifndef ROLLER_MODES_H
 #define ROLLER_MODES_H
@@ -30,6 +32,24 @@ typedef struct _n_RollerModeClassifier *RollerModeClassifier;
 PETSC_INTERN PetscErrorCode             RollerModeClassifierCreate(Roller, RollerModeClassifier *);
 PETSC_INTERN PetscErrorCode             RollerModeClassify(RollerModeClassifier, Vec, Vec, PetscInt *, RollerWave *);
 PETSC_INTERN PetscErrorCode             RollerModeClassifierDestroy(RollerModeClassifier *);
+
+/* steady.c: the steady rolling/sliding state in the lab frame (docs/squeal.md section 3): the Gamma_C nodes within
+   reach of the sheet (sorted by angle; x dof at dof[j], y at dof[j] + 1; positions xy), their normal forces, mu(v),
+   mu'(v), slip speeds and gaps, the slip's sign s (0 without friction), the state u; the scatter to the candidates */
+typedef struct {
+  PetscInt   n, *dof, iterations;
+  PetscReal *xy, *normal, *mu, *dmu, *slip, *gap, sign;
+  Vec        u, red;
+  VecScatter scatter;
+} RollerSteady;
+PETSC_INTERN PetscErrorCode RollerSteadySolve(Roller, Mat, RollerSteady *); /* with K_lab */
+PETSC_INTERN PetscErrorCode RollerSteadyAngularDerivative(const RollerSteady *, PetscInt, PetscInt[3], PetscReal[3]);
+PETSC_INTERN PetscErrorCode RollerSteadyDestroy(RollerSteady *, PetscBool);
+PETSC_INTERN PetscErrorCode RollerSteadyReport(Roller, const RollerSteady *); /* printed, and -modes_steady_csv */
+
+/* squeal.c: the linearization about the steady state: the reduced (M, C, K) on the dofs but the contact nodes'
+   normal ones, and the map of a reduced vector back to the full space */
+PETSC_INTERN PetscErrorCode RollerSquealOperators(Roller, const RollerSteady *, Mat, Mat, Mat, Mat *, Mat *, Mat *, IS *);
 
 /* modes.c */
 PETSC_INTERN PetscErrorCode RollerModesSetFromOptions(Roller);
