@@ -177,7 +177,7 @@ typedef struct {
   PetscInt    nev;
   char        csv[PETSC_MAX_PATH_LEN], output[PETSC_MAX_PATH_LEN], steady_csv[PETSC_MAX_PATH_LEN];
   /* the result, sorted by frequency: n eigenvalues re + i im (im >= 0), their order, wave (RollerWave) and error */
-  PetscInt   n, *order, *wave;
+  PetscInt   n, *order, *wave, dofs; /* dofs: the size of the eigenproblem */
   PetscReal *re, *im, *error;
 } RollerEigen;
 

@@ -50,6 +50,15 @@ cases = [
     (["-obstacle", "-friction", "0.5", "-contact_check"], "-contact_check", "-friction"),
     (["-obstacle", "-friction", "0.5", "-contact_friction_rtol", "2"], "-contact_friction_rtol", "2"),
     (["-theta_start", "-1"], "-theta_start", "-1"),
+    # -modes (docs/squeal.md)
+    (["-modes", "-modes_nev", "0"], "-modes_nev", "0"),
+    (["-modes", "-obstacle", "-modes_frame", "rotating"], "-modes_frame", "rotating"),
+    (["-modes", "-modes_frame", "lab", "-viscosity", "0.01"], "-modes_frame lab", "0.01"),
+    (["-modes", "-obstacle", "-contact_mass", "redistributed"], "-contact_mass", "redistributed"),
+    (["-modes", "-theta_a", "0.1"], "-modes", "-theta_a"),
+    (["-modes", "-obstacle", "-friction", "0.5", "-sheet_speed", "0.15707963267948966"], "-sheet_speed", "0.15708"),
+    (["-initial_condition", "mode"], "-initial_condition mode", "-initial_mode_file"),
+    (["-initial_condition", "mode", "-initial_mode_file", "no-such-modes.h5"], "-initial_mode_file", "no-such-modes.h5"),
 ]
 for args, name, value in cases:
     code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet"] + args if args[0] != "-mesh_h" else args + ["-ts_max_steps", "2"], check=False)
@@ -58,8 +67,8 @@ for args, name, value in cases:
     c.check(code != 0 and name in text and value in first, f"{' '.join(args)}: exit {code}, message: {first.strip()[:150]}")
 
 # an output path that cannot be written: no file left that looks complete
-for opt in ("-monitor_csv", "-output"):
-    path = f"no-such-dir/out.{'csv' if opt == '-monitor_csv' else 'h5'}"
-    code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet", opt, path], check=False)
+for opt in ("-monitor_csv", "-output", "-modes_csv", "-modes_output"):
+    path = f"no-such-dir/out.{'h5' if opt.endswith('output') else 'csv'}"
+    code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet", opt, path] + (["-modes"] if opt.startswith("-modes") else []), check=False)
     c.check(code != 0 and path in out + err and not os.path.exists(path), f"{opt} {path}: exit {code}, named in the message")
 c.close()

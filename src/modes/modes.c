@@ -135,8 +135,9 @@ PetscErrorCode RollerModesSolve(Roller ctx)
     e->wave[j] = wave;
   }
   PetscCall(PetscLogStagePop());
+  PetscCall(MatGetSize(M, &e->dofs, NULL));
   if (!ctx->ts.quiet) {
-    PetscCall(PetscPrintf(ctx->comm, "roller: %" PetscInt_FMT " modes (%s frame, omega %g), lambda = re + i im:\n  %4s %14s %14s %12s %5s %9s %9s\n", e->n, RollerFrames[e->frame], (double)ctx->rotation.omega, "#", "growth_rate", "frequency", "period", "order", "wave", "error"));
+    PetscCall(PetscPrintf(ctx->comm, "roller: %" PetscInt_FMT " modes (%s frame, omega %g, %" PetscInt_FMT " unknowns), lambda = re + i im:\n  %4s %14s %14s %12s %5s %9s %9s\n", e->n, RollerFrames[e->frame], (double)ctx->rotation.omega, e->dofs, "#", "growth_rate", "frequency", "period", "order", "wave", "error"));
     for (PetscInt j = 0; j < e->n; ++j) PetscCall(PetscPrintf(ctx->comm, "  %4" PetscInt_FMT " %14.6e %14.8f %12.6f %5" PetscInt_FMT " %9s %9.1e\n", j, (double)e->re[j], (double)e->im[j], e->im[j] > 0 ? (double)(2 * PETSC_PI / e->im[j]) : 0.0, e->order[j], RollerWaves[e->wave[j]], (double)e->error[j]));
   }
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_OUTPUT]));
