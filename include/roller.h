@@ -15,6 +15,10 @@ PETSC_EXTERN PetscErrorCode RollerSetUp(Roller);
 PETSC_EXTERN PetscErrorCode RollerSolve(Roller);
 PETSC_EXTERN PetscErrorCode RollerDestroy(Roller *);
 
+/* -sweep F.csv: the modes of every case of a product of scene option values, each case a Roller (create, set from
+   options, set up, solve, destroy) on one of the communicator's sub-communicators; one gathered CSV. */
+PETSC_EXTERN PetscErrorCode RollerSweep(MPI_Comm);
+
 /* Observers of the run (TSMonitorSet-style): RollerSolve calls every one, in the order they were set, at the
    state the run starts from (step 0, or the step a restart continues), after every step, and once at the
    successful end (where outputs are completed: files renamed into place). Set during set-up by each

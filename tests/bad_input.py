@@ -59,12 +59,17 @@ cases = [
     (["-modes", "-obstacle", "-friction", "0.5", "-sheet_speed", "0.15707963267948966"], "-sheet_speed", "0.15708"),
     (["-initial_condition", "mode"], "-initial_condition mode", "-initial_mode_file"),
     (["-initial_condition", "mode", "-initial_mode_file", "no-such-modes.h5"], "-initial_mode_file", "no-such-modes.h5"),
+    (["-modes", "-sweep", "bad_sweep.csv", "-sweep_omega", "0,0.1x,0.2"], "-sweep_omega", "0.1x"),
+    (["-modes", "-sweep", "bad_sweep.csv", "-sweep_young_range", "0.05,0.2"], "-sweep_young_range", "0.05,0.2"),
+    (["-modes", "-sweep", "bad_sweep.csv", "-sweep_poisson", "0.3,0.4"], "-sweep_poisson", "omega, young"),
 ]
 for args, name, value in cases:
     code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet"] + args if args[0] != "-mesh_h" else args + ["-ts_max_steps", "2"], check=False)
     text = out + err
     first = next((line for line in text.splitlines() if name in line), "")
     c.check(code != 0 and name in text and value in first, f"{' '.join(args)}: exit {code}, message: {first.strip()[:150]}")
+
+c.check(not os.path.exists("bad_sweep.csv"), "no sweep CSV left by a refused -sweep")
 
 # an output path that cannot be written: no file left that looks complete
 for opt in ("-monitor_csv", "-output", "-modes_csv", "-modes_output"):

@@ -8,14 +8,19 @@ static const char help[] = "Roller: a rubber roller (elastic annulus) driven in 
 
 int main(int argc, char **argv)
 {
-  Roller roller;
+  Roller    roller;
+  PetscBool sweep;
 
   PetscCall(SlepcInitialize(&argc, &argv, NULL, help)); /* PETSc and SLEPc (-modes) */
-  PetscCall(RollerCreate(PETSC_COMM_WORLD, &roller));
-  PetscCall(RollerSetFromOptions(roller));
-  PetscCall(RollerSetUp(roller));
-  PetscCall(RollerSolve(roller));
-  PetscCall(RollerDestroy(&roller));
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-sweep", &sweep));
+  if (sweep) PetscCall(RollerSweep(PETSC_COMM_WORLD)); /* many scenes, each a Roller on a sub-communicator */
+  else {
+    PetscCall(RollerCreate(PETSC_COMM_WORLD, &roller));
+    PetscCall(RollerSetFromOptions(roller));
+    PetscCall(RollerSetUp(roller));
+    PetscCall(RollerSolve(roller));
+    PetscCall(RollerDestroy(&roller));
+  }
   PetscCall(SlepcFinalize());
   return 0;
 }

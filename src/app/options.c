@@ -3,9 +3,20 @@
    in one place (RollerSetFromOptions, "cross-component checks"). */
 #include "integrate/integrate.h"
 #include "modes/modes.h"
+#include "app/sweep.h"
 
 const char *const RollerInitialConditions[] = {"rest", "bump", "mms", "mode", "RollerInitialCondition", "ROLLER_IC_", NULL};
 const char *const RollerMMSTypes[]          = {"none", "linear", "sine", "RollerMMSType", "ROLLER_MMS_", NULL};
+
+/* A sweep creates a Roller per case: the stages are registered by the first and found by name by the others, so
+   -log_view sums every case's set-up, modes, ... in one line each. */
+static PetscErrorCode RegisterStage(const char name[], PetscLogStage *stage)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogStageGetId(name, stage));
+  if (*stage < 0) PetscCall(PetscLogStageRegister(name, stage));
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode RollerCreate(MPI_Comm comm, Roller *roller)
 {
@@ -32,12 +43,12 @@ PetscErrorCode RollerCreate(MPI_Comm comm, Roller *roller)
   ctx->init.mms         = ROLLER_MMS_NONE;
   PetscCall(PetscStrncpy(ctx->ck.file, "checkpoint.h5", sizeof(ctx->ck.file)));
   PetscCall(RollerSignalsInstall()); /* a SIGTERM during setup still ends in a checkpoint after step 1 */
-  PetscCall(PetscLogStageRegister("Roller setup", &ctx->stage[ROLLER_STAGE_SETUP]));
-  PetscCall(PetscLogStageRegister("Roller step", &ctx->stage[ROLLER_STAGE_STEP]));
-  PetscCall(PetscLogStageRegister("Roller contact", &ctx->stage[ROLLER_STAGE_CONTACT]));
-  PetscCall(PetscLogStageRegister("Roller diagnostics", &ctx->stage[ROLLER_STAGE_DIAGNOSTICS]));
-  PetscCall(PetscLogStageRegister("Roller output", &ctx->stage[ROLLER_STAGE_OUTPUT]));
-  PetscCall(PetscLogStageRegister("Roller modes", &ctx->stage[ROLLER_STAGE_MODES]));
+  PetscCall(RegisterStage("Roller setup", &ctx->stage[ROLLER_STAGE_SETUP]));
+  PetscCall(RegisterStage("Roller step", &ctx->stage[ROLLER_STAGE_STEP]));
+  PetscCall(RegisterStage("Roller contact", &ctx->stage[ROLLER_STAGE_CONTACT]));
+  PetscCall(RegisterStage("Roller diagnostics", &ctx->stage[ROLLER_STAGE_DIAGNOSTICS]));
+  PetscCall(RegisterStage("Roller output", &ctx->stage[ROLLER_STAGE_OUTPUT]));
+  PetscCall(RegisterStage("Roller modes", &ctx->stage[ROLLER_STAGE_MODES]));
   *roller = ctx;
   PetscFunctionReturn(0);
 }
@@ -73,6 +84,17 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
 
   PetscCall(RollerCheckpointSetFromOptions(ctx));
   PetscCall(RollerModesSetFromOptions(ctx));
+  {
+    PetscBool help;
+
+    PetscCall(PetscOptionsHasHelp(NULL, &help));
+    if (help) { /* -help lists the sweep's options too (a sweep reads them in RollerSweep, before any Roller) */
+      RollerSweepPlan plan;
+
+      PetscCall(RollerSweepSetFromOptions(ctx->comm, &plan));
+      PetscCall(RollerSweepPlanDestroy(&plan));
+    }
+  }
 
   PetscCheck(ctx->obstacle.speed > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-obstacle_speed %g must be > 0", (double)ctx->obstacle.speed);
   /* cross-component checks */
