@@ -14,7 +14,7 @@ PetscErrorCode RollerSetUp(Roller ctx)
   PetscCall(RollerDiscretizationSetUp(ctx));
   PetscCall(RollerOperatorsSetUp(ctx));
   PetscCall(RollerComputeBoundaryFunctionals(ctx));
-  PetscCall(RollerCheckRotation(ctx));
+  if (!ctx->eig.on) PetscCall(RollerCheckRotation(ctx)); /* the time step's limit; -modes maps past the critical speeds */
   PetscCall(RollerInitialState(ctx));
   if (ctx->ck.restart[0]) PetscCall(RollerCheckpointRead(ctx, ctx->ck.restart));
   if (ctx->obstacle.on && !ctx->eig.on) PetscCall(RollerContactCreate(ctx, &ctx->contact)); /* -modes: its own steady contact (modes/steady.c) */
