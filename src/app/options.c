@@ -98,7 +98,9 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
 
   PetscCheck(ctx->obstacle.speed > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-obstacle_speed %g must be > 0", (double)ctx->obstacle.speed);
   /* cross-component checks */
-  PetscCheck(ctx->obstacle.on || (ctx->obstacle.friction == 0 && ctx->obstacle.sheet_speed == 0), ctx->comm, PETSC_ERR_ARG_INCOMP, "-friction %g and -sheet_speed %g need -obstacle (the sheet)", (double)ctx->obstacle.friction, (double)ctx->obstacle.sheet_speed);
+  /* -modes of the free annulus (no -obstacle) ignores the sheet's friction and speed, so that a contact scene's
+     YAML runs with -obstacle false -modes unchanged (jobs/printer_roller.yaml) */
+  PetscCheck(ctx->obstacle.on || ctx->eig.on || (ctx->obstacle.friction == 0 && ctx->obstacle.sheet_speed == 0), ctx->comm, PETSC_ERR_ARG_INCOMP, "-friction %g and -sheet_speed %g need -obstacle (the sheet)", (double)ctx->obstacle.friction, (double)ctx->obstacle.sheet_speed);
   PetscCheck(ctx->obstacle.depth >= 0 && ctx->obstacle.depth < ctx->mesh.r_outer - ctx->mesh.r_inner, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-obstacle_depth %g must lie in [0, r_outer - r_inner = %g)", (double)ctx->obstacle.depth,
              (double)(ctx->mesh.r_outer - ctx->mesh.r_inner));
   PetscCheck(ctx->init.type != ROLLER_IC_BUMP || ctx->disc.clamp_outer, ctx->comm, PETSC_ERR_ARG_INCOMP, "-initial_condition bump needs -clamp_outer (the bump vanishes on both circles)");
