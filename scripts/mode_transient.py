@@ -31,6 +31,7 @@ Coriolis velocity) for an undamped gyroscopic mode, from the mode's gyroscopic r
     g = i x^H C x / ... : x^H C x = i gamma, g = gamma/(W x^H M x), |g| <= 2 omega/W
 
 CLI: mode_transient.py run.h5 [--modes m.h5 --mode j] [--order n] [--lab-csv ml.csv] [--json]
+     [--figure F.png --amplitude A]  (the probe against the eigenvalue's prediction, and its spectrum)
 """
 import argparse
 import json
@@ -348,6 +349,48 @@ def analyse(run_path, modes_path=None, mode=None, n=None, lab_csv=None, tmin=Non
     return out
 
 
+def figure(run_path, modes_path, mode, out, amplitude=1e-3, which="auto", phi0=0.0):
+    """The probe signal against the eigenvalue's prediction steady + A Re(z_probe e^{lambda t}) (whole run, and
+    its last fifth), and the probe's spectrum with the eigenfrequency marked."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    run = Run(run_path)
+    lam, z, _, _, _ = read_mode(modes_path, mode)
+    u, comp = component(run, which)
+    t, y, v = probe_rotating(run, phi0, comp)
+    k = int(np.flatnonzero(run.outer == v)[0])
+    ph = run.phi[k]
+    e = np.array([math.cos(ph), math.sin(ph)]) if comp == "radial" else np.array([-math.sin(ph), math.cos(ph)])
+    zp = z[v] @ e
+    s0 = steady_part(run, u, lam)[k]
+    pred = s0 + amplitude * np.real(zp * np.exp(lam * (t - t[0])))
+    a = analyse(run_path, modes_path, mode, which=which)
+    fig, ax = plt.subplots(3, 1, figsize=(8, 9))
+    for i, (lo, hi) in enumerate(((t[0], t[-1]), (t[-1] - (t[-1] - t[0]) / 5, t[-1]))):
+        sel = (t >= lo) & (t <= hi)
+        ax[i].plot(t[sel], y[sel], "-", lw=1.2, label=f"roller, dt = {run.par['dt']:g}")
+        ax[i].plot(t[sel], pred[sel], "--", lw=1.2, label=f"steady + A Re(z e^(lambda t)), lambda = {lam.real:.2g} + {lam.imag:.6f} i")
+        ax[i].set_xlabel("t")
+        ax[i].set_ylabel(f"xi_{'r' if comp == 'radial' else 'phi'} at phi = {math.degrees(ph):.0f} deg")
+    ax[0].set_title(f"mode {mode} (order {a['order']}, {a['wave']}): measured {a['lambda'][1]:.6f} "
+                    f"({a['rel_error']:+.2e}; predicted shift {a.get('predicted_rel_shift', math.nan):+.2e})", fontsize=10)
+    ax[0].legend(fontsize=8, loc="upper right")
+    tt, yy, _ = spectrum.uniform_series(t, y)
+    f, A = spectrum.spectrum(tt, yy, pad=32)
+    w = 2 * math.pi * f
+    sel = w <= 3 * abs(lam.imag)
+    ax[2].semilogy(w[sel], A[sel], "-", lw=1)
+    ax[2].axvline(abs(lam.imag), color="C1", ls="--", label=f"eigenfrequency {abs(lam.imag):.6f}")
+    ax[2].axvline(a["probe_w"], color="C2", ls=":", label=f"DTFT line {a['probe_w']:.6f}")
+    ax[2].set_xlabel("angular frequency (rad per time unit)")
+    ax[2].set_ylabel("amplitude (Hann)")
+    ax[2].legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    return a
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("run", help="the transient's -output HDF5 file")
@@ -358,8 +401,12 @@ def main(argv=None):
     ap.add_argument("--tmin", type=float, help="analyse t >= tmin only")
     ap.add_argument("--component", default="auto", choices=["auto", "radial", "tangential"],
                     help="the probes' displacement component (auto: the one that moves more)")
+    ap.add_argument("--figure", help="write the probe/prediction/spectrum figure here (needs --modes, --mode)")
+    ap.add_argument("--amplitude", type=float, default=1e-3, help="the run's -ic_amplitude (for the figure's prediction)")
     ap.add_argument("--json", action="store_true", help="print JSON")
     a = ap.parse_args(argv)
+    if a.figure:
+        figure(a.run, a.modes, a.mode, a.figure, a.amplitude, a.component)
     out = analyse(a.run, a.modes, a.mode, a.order, a.lab_csv, a.tmin, which=a.component)
     if a.json:
         print(json.dumps(out, indent=1, default=str))
