@@ -28,7 +28,7 @@ Coriolis velocity) for an undamped gyroscopic mode, from the mode's gyroscopic r
 
     dW/W      = -(W dt)^2 (5/12 (1 + 2 g) + omega^2/(2 W^2)) / (2 + g)      (5/24 (W dt)^2 without rotation)
     growth/W  = -(W dt)^3 g / (4 (2 + g))                                  (the explicit Coriolis velocity)
-    g = i x^H C x / ... : x^H C x = i gamma, g = gamma/(W x^H M x), |g| <= 2 omega/W
+    x^H C x = i gamma (C = -2 omega rho G skew), g = gamma/(W x^H M x), |g| <= 2 omega/W
 
 CLI: mode_transient.py run.h5 [--modes m.h5 --mode j] [--order n] [--lab-csv ml.csv] [--json]
      [--figure F.png --amplitude A]  (the probe against the eigenvalue's prediction, and its spectrum)
