@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Throughput of a sweep (docs/squeal-sweep.md): the same stability map by `mpiexec -n 1` and `mpiexec -n 2` (one
+"""Throughput of a sweep (docs/squeal.md section 6): the same stability map by `mpiexec -n 1` and `mpiexec -n 2` (one
 rank per case, cases round-robin over the sub-communicators), the wall-time ratio (ideal 0.5 on 2 cores) and the
 check that both CSVs are identical (each case runs on one rank either way).
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Reference modes of the free rotating annulus, one circumferential Fourier order at a time (docs/model.md 8).
+"""Reference modes of the free rotating annulus, one circumferential Fourier order at a time (docs/squeal.md section 2).
 
 Plane strain, linear isotropic elasticity (Lame lam = E nu/((1+nu)(1-2nu)), mu = E/(2(1+nu))), density rho,
 annulus r_i < r < r_o clamped (xi = 0) at r_i and traction-free at r_o, rotation speed Omega = theta', optional
@@ -67,7 +67,7 @@ Exact n = 0, Omega = 0 modes (U and V decouple):
   breathing (lam+2mu)(U'' + U'/r - U/r^2) + rho w^2 U = 0, U = A J1 + B Y1, k = w/c_p, c_p^2 = (lam+2mu)/rho;
             U(r_i) = 0, sigma_rr = (lam+2mu) U' + lam U/r = (lam+2mu) k Z0(k r_o) - 2mu Z1(k r_o)/r_o = 0 (Z = J, Y).
 
-Output (the 2D code's modes CSV, docs/model.md 8, plus m): one row per eigenvalue lambda = re + i im with im > 0:
+Output (the 2D code's modes CSV, docs/squeal.md section 2, plus m): one row per eigenvalue lambda = re + i im with im > 0:
 `re,im,frequency,growth_rate,order,wave,m`, frequency = im, growth_rate = re, order = |m|; the motion
 Re(xhat e^{lambda t}) ~ e^{i(m phi + im t)} travels toward -sign(m) phi, so wave = forward (with the rotation)
 iff m Omega < 0, backward iff m Omega > 0, standing if Omega == 0 or m == 0. Sorted by frequency.

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Frequency and growth rate of a mode from a transient run (docs/squeal-transient.md).
+"""Frequency and growth rate of a mode from a transient run (docs/squeal.md section 4).
 
 A run seeded with one mode (`roller -initial_condition mode -initial_mode_file m.h5 -initial_mode j
 -output run.h5 -output_every N`) should oscillate at that mode's eigenvalue lambda = growth + i w. This
@@ -294,7 +294,7 @@ def shift_bound(W, omega, dt):
 
 
 def lab_frequency(w, n, wave, omega):
-    """|w - m omega| of a co-rotating mode of order n: m = -n forward, +n backward (docs/squeal-transient.md)."""
+    """|w - m omega| of a co-rotating mode of order n: m = -n forward, +n backward (docs/squeal.md section 4)."""
     m = {"forward": -n, "backward": n}.get(wave, 0)
     return abs(w - m * omega)
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The pictures of a sweep (`roller -modes -sweep F.csv`, docs/squeal-sweep.md): the eigenvalues against one swept
+"""The pictures of a sweep (`roller -modes -sweep F.csv`, docs/squeal.md section 6): the eigenvalues against one swept
 option x, the other swept options held at one value each (--where name=value; default: their first value).
 
     scripts/plot_sweep.py F.csv [--x omega] [--where young=0.1 ...] [--out fig.png]

@@ -1,5 +1,5 @@
 """scripts/annulus_modes_reference.py alone (no roller run): the 1D per-order reference for the modes of the
-rotating annulus (docs/model.md 8) that the 2D -modes output is to be compared with.
+rotating annulus (docs/squeal.md section 2) that the 2D -modes output is to be compared with.
 
 1. n = 0, Omega = 0: the lowest two torsional and the lowest breathing frequencies against the roots of their
    Bessel cross-products (relative 1e-8); the lowest torsional period is the paper's ~8.69.

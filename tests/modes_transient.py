@@ -1,4 +1,4 @@
-"""A transient seeded with one mode oscillates at the computed eigenvalue, in both frames (docs/squeal-transient.md).
+"""A transient seeded with one mode oscillates at the computed eigenvalue, in both frames (docs/squeal.md section 4).
 
 At omega = pi/10 (Table 1, coarse P2 mesh h = 0.05): `roller -modes` (co-rotating and lab frames), then for the
 n = 0 torsional mode, the n = 1 forward and backward modes, the n = 2 and n = 3 forward modes a transient from

@@ -100,7 +100,8 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   /* cross-component checks */
   /* -modes of the free annulus (no -obstacle) ignores the sheet's friction and speed, so that a contact scene's
      YAML runs with -obstacle false -modes unchanged (jobs/printer_roller.yaml) */
-  PetscCheck(ctx->obstacle.on || ctx->eig.on || (ctx->obstacle.friction == 0 && ctx->obstacle.sheet_speed == 0), ctx->comm, PETSC_ERR_ARG_INCOMP, "-friction %g and -sheet_speed %g need -obstacle (the sheet)", (double)ctx->obstacle.friction, (double)ctx->obstacle.sheet_speed);
+  PetscCheck(ctx->obstacle.on || ctx->eig.on || (ctx->obstacle.friction == 0 && ctx->obstacle.sheet_speed == 0), ctx->comm, PETSC_ERR_ARG_INCOMP, "-friction %g and -sheet_speed %g need -obstacle (the sheet)", (double)ctx->obstacle.friction,
+             (double)ctx->obstacle.sheet_speed);
   PetscCheck(ctx->obstacle.depth >= 0 && ctx->obstacle.depth < ctx->mesh.r_outer - ctx->mesh.r_inner, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-obstacle_depth %g must lie in [0, r_outer - r_inner = %g)", (double)ctx->obstacle.depth,
              (double)(ctx->mesh.r_outer - ctx->mesh.r_inner));
   PetscCheck(ctx->init.type != ROLLER_IC_BUMP || ctx->disc.clamp_outer, ctx->comm, PETSC_ERR_ARG_INCOMP, "-initial_condition bump needs -clamp_outer (the bump vanishes on both circles)");
@@ -108,9 +109,11 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCheck(!(ctx->obstacle.on && ctx->disc.coriolis == ROLLER_CORIOLIS_CENTERED), ctx->comm, PETSC_ERR_ARG_INCOMP, "-coriolis_velocity centered makes the step matrix non-symmetric: the step is then no longer a minimization, and -obstacle needs one (use backward or extrapolated)");
   PetscCheck(!(ctx->obstacle.on && ctx->disc.clamp_outer), ctx->comm, PETSC_ERR_ARG_INCOMP, "-obstacle cannot be combined with -clamp_outer (Gamma_C would be fixed)");
   PetscCheck(!ctx->disc.static_solve || (ctx->rotation.omega == 0 && ctx->rotation.a == 0 && ctx->init.type == ROLLER_IC_REST && ctx->init.mms == ROLLER_MMS_NONE && !ctx->ck.restart[0] && ctx->ts.max_time > 0), ctx->comm, PETSC_ERR_ARG_INCOMP, "-static needs -omega 0, -theta_a 0, the rest initial condition, no -mms or -restart, and -ts_max_time > 0");
-  PetscCheck(!(ctx->eig.on && ctx->obstacle.on && ctx->eig.frame != ROLLER_FRAME_LAB), ctx->comm, PETSC_ERR_ARG_INCOMP, "-modes with -obstacle linearizes about the steady sliding state, which is steady only in the lab frame: -modes_frame lab, not %s", RollerFrames[ctx->eig.frame]);
+  PetscCheck(!(ctx->eig.on && ctx->obstacle.on && ctx->eig.frame != ROLLER_FRAME_LAB), ctx->comm, PETSC_ERR_ARG_INCOMP, "-modes with -obstacle linearizes about the steady sliding state, which is steady only in the lab frame: -modes_frame lab, not %s",
+             RollerFrames[ctx->eig.frame]);
   PetscCheck(!(ctx->eig.on && ctx->disc.contact_mass != ROLLER_CONTACT_MASS_CONSISTENT), ctx->comm, PETSC_ERR_ARG_INCOMP, "-modes takes the consistent mass (-contact_mass consistent), not %s", RollerContactMasses[ctx->disc.contact_mass]);
-  PetscCheck(!(ctx->eig.on && ctx->eig.frame == ROLLER_FRAME_LAB && (ctx->material.viscosity != 0 || ctx->disc.damping != 0)), ctx->comm, PETSC_ERR_SUP, "-modes_frame lab with -viscosity %g or -damping %g: the lab frame's damping operators are not built (use -modes_frame rotating)", (double)ctx->material.viscosity, (double)ctx->disc.damping);
+  PetscCheck(!(ctx->eig.on && ctx->eig.frame == ROLLER_FRAME_LAB && (ctx->material.viscosity != 0 || ctx->disc.damping != 0)), ctx->comm, PETSC_ERR_SUP, "-modes_frame lab with -viscosity %g or -damping %g: the lab frame's damping operators are not built (use -modes_frame rotating)",
+             (double)ctx->material.viscosity, (double)ctx->disc.damping);
   PetscCheck(!(ctx->eig.on && (ctx->rotation.a != 0 || ctx->ck.restart[0] || ctx->disc.static_solve)), ctx->comm, PETSC_ERR_ARG_INCOMP, "-modes linearizes about steady rotation: it takes no -theta_a, -restart or -static");
   if (ctx->disc.static_solve) { /* one step from rest to t = max_time with A = K: the right-hand side is 0 */
     ctx->ts.dt        = ctx->ts.max_time;

@@ -1,4 +1,4 @@
-/* -sweep F.csv (docs/squeal-sweep.md): a stability map in one run. The cases are the Cartesian product of the values
+/* -sweep F.csv (docs/squeal.md section 6): a stability map in one run. The cases are the Cartesian product of the values
    given to a few scene options (-sweep_omega 0,0.1,0.2 -sweep_young_range 0.05,0.2,4 ...); MPI_COMM_WORLD is split
    into -sweep_subcomms sub-communicators and the j-th case of the run goes to sub-communicator j % k, which solves it
    as a separate `roller -modes` would: the case's values are set in this process's options database, a Roller is
@@ -131,7 +131,7 @@ PetscErrorCode RollerSweepSetFromOptions(MPI_Comm comm, RollerSweepPlan *plan)
   PetscCall(PetscMemzero(plan, sizeof(*plan)));
   plan->nsub     = size;
   plan->slice[1] = 1;
-  PetscOptionsBegin(comm, NULL, "Roller: sweep (docs/squeal-sweep.md): -modes for every case of a product of scene option values, the cases spread over sub-communicators", NULL);
+  PetscOptionsBegin(comm, NULL, "Roller: sweep (docs/squeal.md section 6): -modes for every case of a product of scene option values, the cases spread over sub-communicators", NULL);
   PetscCall(PetscOptionsString("-sweep", "Run a sweep of -modes; F.csv gathers every case's eigenvalues: case,<swept options>,re,im,frequency,growth_rate,order,wave,error", NULL, plan->csv, plan->csv, sizeof(plan->csv), NULL));
   for (PetscInt p = 0; p < NPARAMS; ++p) {
     char opt[64], help[128], list[PETSC_MAX_PATH_LEN] = "", range[PETSC_MAX_PATH_LEN] = "";

@@ -1,4 +1,4 @@
-/* The sweep (-sweep F.csv, docs/squeal-sweep.md): many scenes, the Cartesian product of the values of a few scene
+/* The sweep (-sweep F.csv, docs/squeal.md section 6): many scenes, the Cartesian product of the values of a few scene
    options, each solved by -modes on a sub-communicator; the eigenvalues of every case gathered into one CSV.
      sweep.c      the "Roller: sweep" options, the cases, the sub-communicators and the runs
      sweep_csv.c  the eigenvalues of every case gathered to rank 0 and written, one row per eigenvalue */

@@ -65,7 +65,7 @@ struct _n_RollerOutput {
 };
 
 /* output.c: what the fields output shares with the mode shapes (output_modes.c) */
-PETSC_INTERN PetscErrorCode RollerOutputSpace(Roller, PetscInt, const char[], DM *);           /* P1, nc components */
+PETSC_INTERN PetscErrorCode RollerOutputSpace(Roller, PetscInt, const char[], DM *); /* P1, nc components */
 PETSC_INTERN PetscErrorCode RollerFieldCreate(DM, const char[], OutputField *);
 PETSC_INTERN PetscErrorCode RollerProjectAtVertices(Roller, Vec, RollerPointFunc, InsertMode, Vec); /* u on ctx->mesh.dm */
 PETSC_INTERN PetscErrorCode RollerWriteParameters(Roller, PetscViewer);

@@ -35,9 +35,9 @@ PETSC_INTERN PetscErrorCode RollerOperatorDMCreate(Roller, PetscFE, DM *); /* a 
 /* operators.c */
 PETSC_INTERN PetscErrorCode RollerOperatorsSetUp(Roller);
 PETSC_INTERN PetscErrorCode RollerUpdateGyroscopic(Roller, PetscReal);
-PETSC_INTERN PetscErrorCode RollerAddLoad(DM, Vec);                                                          /* b += the residual kernel's load on an operator's DM */
+PETSC_INTERN PetscErrorCode RollerAddLoad(DM, Vec);                                                                         /* b += the residual kernel's load on an operator's DM */
 PETSC_INTERN PetscErrorCode RollerAssembleMatrix(Roller, const char *, PetscPointJac, PetscPointJac, PetscPointJac, Mat *); /* g0, g1, g3 on its own DM */
-PETSC_INTERN PetscErrorCode RollerAssembleLoad(Roller, PetscPointFunc, Vec *);                               /* (f0, v) on its own DM */
+PETSC_INTERN PetscErrorCode RollerAssembleLoad(Roller, PetscPointFunc, Vec *);                                              /* (f0, v) on its own DM */
 
 /* mass.c, mass_transfer.c */
 PETSC_INTERN PetscErrorCode RollerMassSetFromOptions(Roller);  /* after the obstacle's options: the default follows -obstacle */

@@ -12,9 +12,9 @@ const char *const RollerWaves[] = {"forward", "backward", "standing", "RollerWav
 #define MAX_ORDER 48
 
 struct _n_RollerModeClassifier {
-  MPI_Comm  comm;
-  PetscInt  n;                  /* local nodes */
-  PetscReal omega;              /* theta': the sense of "forward" */
+  MPI_Comm   comm;
+  PetscInt   n;                 /* local nodes */
+  PetscReal  omega;             /* theta': the sense of "forward" */
   PetscReal *phi, *weight, *cs; /* angle, mass, (cos, sin) of the angle at every local node */
 };
 
@@ -41,9 +41,9 @@ PetscErrorCode RollerModeClassifierCreate(Roller ctx, RollerModeClassifier *p)
   for (PetscInt j = 0; j < c->n; ++j) {
     const PetscReal r = PetscSqrtReal(PetscSqr(PetscRealPart(x[2 * j])) + PetscSqr(PetscRealPart(x[2 * j + 1])));
 
-    c->phi[j]       = PetscAtan2Real(PetscRealPart(x[2 * j + 1]), PetscRealPart(x[2 * j]));
-    c->weight[j]    = PetscRealPart(m[2 * j]);
-    c->cs[2 * j]    = PetscRealPart(x[2 * j]) / r;
+    c->phi[j]        = PetscAtan2Real(PetscRealPart(x[2 * j + 1]), PetscRealPart(x[2 * j]));
+    c->weight[j]     = PetscRealPart(m[2 * j]);
+    c->cs[2 * j]     = PetscRealPart(x[2 * j]) / r;
     c->cs[2 * j + 1] = PetscRealPart(x[2 * j + 1]) / r;
   }
   PetscCall(VecRestoreArrayRead(ctx->ops.coordinates, &x));
@@ -71,7 +71,7 @@ PetscErrorCode RollerModeClassify(RollerModeClassifier c, Vec xr, Vec xi, PetscI
 
     for (PetscInt m = -MAX_ORDER; m <= MAX_ORDER; ++m) {
       const PetscReal cm = PetscCosReal(m * c->phi[j]), sm = -PetscSinReal(m * c->phi[j]); /* e^{-i m phi} */
-      const PetscReal w  = c->weight[j];
+      const PetscReal w = c->weight[j];
 
       sum[0][m + MAX_ORDER][0] += w * (zr[0] * cm - zr[1] * sm);
       sum[0][m + MAX_ORDER][1] += w * (zr[0] * sm + zr[1] * cm);

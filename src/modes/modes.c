@@ -13,7 +13,8 @@ PetscErrorCode RollerModesSetFromOptions(Roller ctx)
   PetscOptionsBegin(ctx->comm, NULL, "Roller: modes (docs/squeal.md); the eigensolver takes -pep_* and -st_* options (SLEPc PEP, TOAR, shift-and-invert about -pep_target 0)", NULL);
   PetscCall(PetscOptionsBool("-modes", "Compute the modes of the scene (the quadratic eigenproblem) instead of stepping", NULL, ctx->eig.on, &ctx->eig.on, NULL));
   ctx->eig.frame = ctx->obstacle.on ? ROLLER_FRAME_LAB : ROLLER_FRAME_ROTATING; /* steady sliding is steady in the lab only */
-  PetscCall(PetscOptionsEnum("-modes_frame", "Frame of the linearization: rotating (co-rotating, Lagrangian) or lab (Eulerian; the default and the only one with -obstacle)", "RollerFrame", RollerFrames, (PetscEnum)ctx->eig.frame, (PetscEnum *)&ctx->eig.frame, NULL));
+  PetscCall(
+    PetscOptionsEnum("-modes_frame", "Frame of the linearization: rotating (co-rotating, Lagrangian) or lab (Eulerian; the default and the only one with -obstacle)", "RollerFrame", RollerFrames, (PetscEnum)ctx->eig.frame, (PetscEnum *)&ctx->eig.frame, NULL));
   PetscCall(PetscOptionsInt("-modes_nev", "Number of eigenvalues wanted (-pep_nev overrides); each complex pair counts twice", NULL, ctx->eig.nev, &ctx->eig.nev, NULL));
   PetscCall(PetscOptionsString("-modes_csv", "Eigenvalue CSV: re,im,frequency,growth_rate,order,wave,error", NULL, ctx->eig.csv, ctx->eig.csv, sizeof(ctx->eig.csv), NULL));
   PetscCall(PetscOptionsString("-modes_steady_csv", "With -obstacle: the steady state's contact nodes x,y,normal_force,tangential_force,gap,slip_velocity,mu", NULL, ctx->eig.steady_csv, ctx->eig.steady_csv, sizeof(ctx->eig.steady_csv), NULL));
@@ -63,8 +64,8 @@ static PetscErrorCode Normalize(Vec xr, Vec xi, Vec w)
 static PetscErrorCode WriteCsv(Roller ctx)
 {
   const RollerEigen *e = &ctx->eig;
-  char        part[PETSC_MAX_PATH_LEN];
-  PetscMPIInt rank;
+  char               part[PETSC_MAX_PATH_LEN];
+  PetscMPIInt        rank;
 
   PetscFunctionBeginUser;
   PetscCall(RollerJoinPath(part, sizeof(part), ctx->eig.csv, ".part", "-modes_csv"));
@@ -76,7 +77,8 @@ static PetscErrorCode WriteCsv(Roller ctx)
 
     PetscCall(PetscFOpen(PETSC_COMM_SELF, part, "w", &fp));
     PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "re,im,frequency,growth_rate,order,wave,error\n"));
-    for (PetscInt j = 0; j < e->n; ++j) PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%s,%.3e\n", (double)e->re[j], (double)e->im[j], (double)e->im[j], (double)e->re[j], e->order[j], RollerWaves[e->wave[j]], (double)e->error[j]));
+    for (PetscInt j = 0; j < e->n; ++j)
+      PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%s,%.3e\n", (double)e->re[j], (double)e->im[j], (double)e->im[j], (double)e->re[j], e->order[j], RollerWaves[e->wave[j]], (double)e->error[j]));
     PetscCall(PetscFClose(PETSC_COMM_SELF, fp));
   }
   PetscCall(RollerRenameFile(ctx->comm, part, ctx->eig.csv));
@@ -138,7 +140,9 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   PetscCall(MatGetSize(M, &e->dofs, NULL));
   if (!ctx->ts.quiet) {
     PetscCall(PetscPrintf(ctx->comm, "roller: %" PetscInt_FMT " modes (%s frame, omega %g, %" PetscInt_FMT " unknowns), lambda = re + i im:\n  %4s %14s %14s %12s %5s %9s %9s\n", e->n, RollerFrames[e->frame], (double)ctx->rotation.omega, e->dofs, "#", "growth_rate", "frequency", "period", "order", "wave", "error"));
-    for (PetscInt j = 0; j < e->n; ++j) PetscCall(PetscPrintf(ctx->comm, "  %4" PetscInt_FMT " %14.6e %14.8f %12.6f %5" PetscInt_FMT " %9s %9.1e\n", j, (double)e->re[j], (double)e->im[j], e->im[j] > 0 ? (double)(2 * PETSC_PI / e->im[j]) : 0.0, e->order[j], RollerWaves[e->wave[j]], (double)e->error[j]));
+    for (PetscInt j = 0; j < e->n; ++j)
+      PetscCall(
+        PetscPrintf(ctx->comm, "  %4" PetscInt_FMT " %14.6e %14.8f %12.6f %5" PetscInt_FMT " %9s %9.1e\n", j, (double)e->re[j], (double)e->im[j], e->im[j] > 0 ? (double)(2 * PETSC_PI / e->im[j]) : 0.0, e->order[j], RollerWaves[e->wave[j]], (double)e->error[j]));
   }
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_OUTPUT]));
   if (e->csv[0]) PetscCall(WriteCsv(ctx));

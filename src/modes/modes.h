@@ -15,10 +15,10 @@
 
 /* pep.c: the converged eigenpairs with im >= 0 (one of each conjugate pair), sorted by frequency im, then re. */
 typedef struct _n_RollerPEP *RollerPEP;
-PETSC_INTERN PetscErrorCode  RollerPEPCreate(MPI_Comm, Mat, Mat, Mat, PetscInt, RollerPEP *); /* M, C, K, nev (-pep_* may override) */
-PETSC_INTERN PetscErrorCode  RollerPEPSolve(RollerPEP, PetscInt *);                          /* the number of pairs kept */
+PETSC_INTERN PetscErrorCode  RollerPEPCreate(MPI_Comm, Mat, Mat, Mat, PetscInt, RollerPEP *);           /* M, C, K, nev (-pep_* may override) */
+PETSC_INTERN PetscErrorCode  RollerPEPSolve(RollerPEP, PetscInt *);                                     /* the number of pairs kept */
 PETSC_INTERN PetscErrorCode  RollerPEPGetPair(RollerPEP, PetscInt, PetscReal *, PetscReal *, Vec, Vec); /* re, im, x_re, x_im (vectors may be NULL) */
-PETSC_INTERN PetscErrorCode  RollerPEPGetError(RollerPEP, PetscInt, PetscReal *);                      /* backward error of pair i */
+PETSC_INTERN PetscErrorCode  RollerPEPGetError(RollerPEP, PetscInt, PetscReal *);                       /* backward error of pair i */
 PETSC_INTERN PetscErrorCode  RollerPEPDestroy(RollerPEP *);
 
 /* operators.c: the (M, C, K) of the linearized free annulus in ctx->eig.frame (docs/squeal.md section 1) */
@@ -27,7 +27,7 @@ PETSC_INTERN PetscErrorCode RollerModeOperators(Roller, Mat *, Mat *, Mat *);
 /* classify.c: the dominant circumferential order n >= 0 and the wave (forward: travelling with the rotation) of
    the mode x_re + i x_im, e^{lambda t}, im >= 0; from the mass-weighted Fourier spectrum over the nodes */
 typedef enum { ROLLER_WAVE_FORWARD, ROLLER_WAVE_BACKWARD, ROLLER_WAVE_STANDING } RollerWave;
-PETSC_EXTERN const char *const RollerWaves[];
+PETSC_EXTERN const char *const          RollerWaves[];
 typedef struct _n_RollerModeClassifier *RollerModeClassifier;
 PETSC_INTERN PetscErrorCode             RollerModeClassifierCreate(Roller, RollerModeClassifier *);
 PETSC_INTERN PetscErrorCode             RollerModeClassify(RollerModeClassifier, Vec, Vec, PetscInt *, RollerWave *);

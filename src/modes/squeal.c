@@ -15,7 +15,7 @@
 
 PetscErrorCode RollerSquealOperators(Roller ctx, const RollerSteady *st, Mat M, Mat C, Mat K, Mat *Mr, Mat *Cr, Mat *Kr, IS *kept)
 {
-  const PetscReal tol = 1e-12;
+  const PetscReal tol  = 1e-12;
   PetscReal       nmax = 0;
   Mat             R, RM, RC, RK;
   PetscInt        lo, hi, m, nk = 0, *idx;

@@ -72,11 +72,11 @@ static PetscErrorCode Candidates(Roller ctx, PetscReal g, PetscReal reach, Rolle
     PetscInt        k = i - 1;
 
     for (; k >= 0 && PetscAtan2Real(st->xy[2 * k + 1], st->xy[2 * k]) > t; --k) {
-      st->dof[k + 1]        = st->dof[k];
+      st->dof[k + 1]          = st->dof[k];
       st->xy[2 * (k + 1)]     = st->xy[2 * k];
       st->xy[2 * (k + 1) + 1] = st->xy[2 * k + 1];
     }
-    st->dof[k + 1]        = d;
+    st->dof[k + 1]          = d;
     st->xy[2 * (k + 1)]     = a;
     st->xy[2 * (k + 1) + 1] = b;
   }
@@ -192,7 +192,7 @@ PetscErrorCode RollerSteadySolve(Roller ctx, Mat Klab, RollerSteady *st)
     PetscCheck(st->n > 1, ctx->comm, PETSC_ERR_ARG_WRONG, "-obstacle_depth %g: fewer than two Gamma_C nodes within reach of the sheet; press deeper or refine the mesh", (double)ctx->obstacle.depth);
     PetscCall(PetscMalloc5(st->n, &st->normal, st->n, &st->mu, st->n, &st->dmu, st->n, &st->slip, st->n, &st->gap));
     {
-      IS is;
+      IS        is;
       PetscInt *idx;
 
       PetscCall(PetscMalloc1(2 * st->n, &idx));
@@ -287,7 +287,9 @@ PetscErrorCode RollerSteadyReport(Roller ctx, const RollerSteady *st)
     a1 = PetscMax(a1, st->xy[2 * j]);
     ++active;
   }
-  if (!ctx->ts.quiet) PetscCall(PetscPrintf(ctx->comm, "roller: steady %s state (lab frame): %" PetscInt_FMT " of %" PetscInt_FMT " candidate nodes in contact over x in [%g, %g], normal force %.6g, friction force %.6g, slip speed %g, %" PetscInt_FMT " mu(v) passes\n", st->sign != 0 ? "sliding" : "frictionless rolling", active, st->n, (double)a0, (double)a1, (double)N, (double)T, (double)(ctx->rotation.omega * ctx->mesh.r_outer - ctx->obstacle.sheet_speed), st->iterations));
+  if (!ctx->ts.quiet)
+    PetscCall(PetscPrintf(ctx->comm, "roller: steady %s state (lab frame): %" PetscInt_FMT " of %" PetscInt_FMT " candidate nodes in contact over x in [%g, %g], normal force %.6g, friction force %.6g, slip speed %g, %" PetscInt_FMT " mu(v) passes\n", st->sign != 0 ? "sliding" : "frictionless rolling", active, st->n, (double)a0, (double)a1, (double)N, (double)T,
+                          (double)(ctx->rotation.omega * ctx->mesh.r_outer - ctx->obstacle.sheet_speed), st->iterations));
   if (!ctx->eig.steady_csv[0]) PetscFunctionReturn(0);
   {
     char part[PETSC_MAX_PATH_LEN];
@@ -302,7 +304,8 @@ PetscErrorCode RollerSteadyReport(Roller ctx, const RollerSteady *st)
       PetscCall(PetscFOpen(PETSC_COMM_SELF, part, "w", &fp));
       PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "x,y,normal_force,tangential_force,gap,slip_velocity,mu\n"));
       for (PetscInt j = 0; j < st->n; ++j)
-        PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", (double)st->xy[2 * j], (double)st->xy[2 * j + 1], (double)st->normal[j], (double)(-st->sign * st->mu[j] * st->normal[j]), (double)st->gap[j], (double)st->slip[j], (double)st->mu[j]));
+        PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", (double)st->xy[2 * j], (double)st->xy[2 * j + 1], (double)st->normal[j], (double)(-st->sign * st->mu[j] * st->normal[j]), (double)st->gap[j],
+                               (double)st->slip[j], (double)st->mu[j]));
       PetscCall(PetscFClose(PETSC_COMM_SELF, fp));
     }
     PetscCall(RollerRenameFile(ctx->comm, part, ctx->eig.steady_csv));

@@ -1,7 +1,7 @@
 static const char help[] = "Unit test: the 2-DOF mode-coupling (flutter) model of friction of Hoffmann, Fischer, Allgaier and Gaul (2002)\n"
                            "through the roller's quadratic-eigenproblem path (modes/pep.c: SLEPc PEP, TOAR, shift-and-invert). A point\n"
                            "mass m (x tangential, y normal) on two springs k1, k2 at angles alpha1, alpha2 and a contact spring k3 on a\n"
-                           "belt sliding in +x: the friction mu N, N = -k3 y, makes K non-symmetric. Checks (docs/squeal-hoffmann.md):\n"
+                           "belt sliding in +x: the friction mu N, N = -k3 y, makes K non-symmetric. Checks (docs/squeal.md section 5):\n"
                            "(a) undamped, mu below, at and above mu_c: every eigenvalue equals the closed-form root of the biquadratic\n"
                            "to 1e-10 relative (1e-7 at mu_c, where the pair is defective: rounding moves it by sqrt(eps));\n"
                            "(b) below mu_c every |re| < 1e-10 |lambda|; above, exactly one kept pair has re > 0, the closed-form growth rate\n"
@@ -14,7 +14,7 @@ static const char help[] = "Unit test: the 2-DOF mode-coupling (flutter) model o
 #include <slepcsys.h>
 #include "modes/modes.h"
 
-/* The model (SI-free, the values of docs/squeal-hoffmann.md): the springs' unit vectors e_i = (cos alpha_i,
+/* The model (SI-free, the values of docs/squeal.md section 5): the springs' unit vectors e_i = (cos alpha_i,
    sin alpha_i) point from the mass to their anchors above the belt; the stiffer spring upstream (alpha1 = 150 deg). */
 typedef struct {
   PetscReal m, k1, k2, k3, alpha1, alpha2;
