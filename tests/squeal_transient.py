@@ -9,9 +9,9 @@ mu = 0.3 (the transient stays in the CEA's regime, full sliding on a bilateral p
   friction ratio averaged over 5 time units below 0.98 mu, or a step without contact): its growth rate equals
   the CEA's within 5 % and its frequency within 2 %. The DMF's map of the CEA eigenvalue at this dt changes
   the growth by 3e-5 relative (printed): the comparison is with the continuous eigenvalue.
-  Measured (2 cores): growth -5.2 % (pencil; -3.0 % by a log-amplitude fit), frequency -0.16 %: the growth
-  check FAILS by a hair at present (docs/squeal-cea.md section 3: the estimate moves by several % with the
-  window; faster high-frequency modes grow alongside).
+  Measured: growth -5.2 % (pencil; -3.0 % by a log-amplitude fit), frequency -0.16 %: the growth check
+  FAILS by a hair at present. Over other runs (dt 0.005, a damped press) and windows the growth estimates
+  scatter from +5 % to -15 % of the CEA's (docs/squeal-cea.md section 3): the agreement is not robustly 5 %.
 
 mu = 0.8: the CEA's full spectrum (-modes_nev 400) has modes faster than the order-1 pair (growth >= 0.1 near
 5.9 rad, order 8 forward): the transient leaves full sliding (contact lost at some step, or the friction ratio
