@@ -1,0 +1,98 @@
+"""The squeal CEA against the transient (docs/squeal-cea.md): the DMF in the co-rotating frame with Coulomb's law
+solved every step, undamped, V = 0, on the CEA's mesh (coarse graded: -mesh_h 0.05 -mesh_h_contact 0.0112).
+
+mu = 0.3 (the transient stays in the CEA's regime, full sliding on a bilateral patch, until t ~ 74):
+- the steady state: the transient's mean normal force over the fit window equals the CEA's steady normal
+  force (2 %), its friction force / normal force equals mu (1 %);
+- the order-1 backward whirl (the lab-frame displacement of the centre of Gamma_C, scripts/squeal_fit.py),
+  fitted by the matrix pencil on the window from t = 20 (after the press) to the first sign of saturation (the
+  friction ratio averaged over 5 time units below 0.98 mu, or a step without contact): its growth rate equals
+  the CEA's within 5 % and its frequency within 2 %. The DMF's map of the CEA eigenvalue at this dt changes
+  the growth by 3e-5 relative (printed): the comparison is with the continuous eigenvalue.
+  Measured: growth -5.2 % (pencil; -3.0 % by a log-amplitude fit), frequency -0.16 %: the growth check
+  FAILS by a hair at present. Over other runs (dt 0.005, a damped press) and windows the growth estimates
+  scatter from +5 % to -15 % of the CEA's (docs/squeal-cea.md section 3): the agreement is not robustly 5 %.
+
+mu = 0.8: the CEA's full spectrum (-modes_nev 400) has modes faster than the order-1 pair (growth >= 0.1 near
+5.9 rad, order 8 forward): the transient leaves full sliding (contact lost at some step, or the friction ratio
+below 0.98 mu) before t = 20, so the order-1 pair's growth cannot be compared there (asserted as such)."""
+import csv
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from rollertest import Checker, SOURCE, read_csv, run  # noqa: E402
+
+sys.path.insert(0, os.path.join(SOURCE, "scripts"))
+import squeal_fit as sf  # noqa: E402
+
+MESH = ["-mesh_h", "0.05", "-mesh_h_contact", "0.0112", "-mesh_contact_layer", "0.0224"]
+DT = 0.01
+c = Checker("squeal_transient")
+
+
+def cea(name, mu, nev=40):
+    out = run(["-modes", "-obstacle", "-friction", mu, "-modes_nev", nev, "-modes_csv", f"{name}.csv",
+               "-modes_steady_csv", f"{name}_steady.csv"] + MESH)[1]
+    with open(f"{name}.csv") as f:
+        rows = [{k: (v if k == "wave" else float(v)) for k, v in r.items()} for r in csv.DictReader(f)]
+    with open(f"{name}_steady.csv") as f:
+        N = sum(float(r["normal_force"]) for r in csv.DictReader(f))
+    return rows, N, out
+
+
+def transient(name, mu, T):
+    run(["-obstacle", "-friction", mu, "-sheet_speed", 0, "-viscosity", 0, "-damping", 0, "-ts_dt", DT,
+         "-ts_max_time", T, "-monitor_csv", f"{name}.csv", "-output", f"{name}.h5", "-output_every", 20, "-quiet"] + MESH)
+    return read_csv(f"{name}.csv")
+
+
+def saturation(d, mu, t0):
+    """The first time after t0 with a step without contact or the 5-unit mean friction ratio below 0.98 mu."""
+    t = d["t"]
+    k = np.ones(int(round(5 / DT))) / round(5 / DT)
+    ratio = np.convolve(-d["friction_force"], k, "same") / np.maximum(np.convolve(d["contact_force"], k, "same"), 1e-300)
+    inside = (t > t0) & (t < t[-1] - 2.5)
+    bad = t[inside & ((d["contact_nodes"] == 0) | (ratio < 0.98 * mu))]
+    return bad[0] if len(bad) else t[-1] - 2.5
+
+
+# mu = 0.3
+rows, N_cea, _ = cea("cea03", 0.3)
+p1 = max((r for r in rows if int(r["order"]) == 1 and r["wave"] == "backward"), key=lambda r: r["growth_rate"])
+g, w = p1["growth_rate"], p1["frequency"]
+gd, wd = sf.dmf_map(complex(g, w), DT)
+print(f"CEA mu 0.3: order-1 backward growth {g:.6f} frequency {w:.6f}; DMF map at dt {DT}: {gd:.6f} ({gd / g - 1:+.1e}), {wd:.6f}")
+d = transient("tr03", 0.3, 90)
+t0 = 20.0
+t1 = saturation(d, 0.3, t0)
+c.check(t1 - t0 > 40, f"mu 0.3: the transient stays in full sliding with contact from t = {t0:g} to {t1:.1f} (> 40 time units)")
+m = (d["t"] >= t0) & (d["t"] <= t1)
+N_tr = d["contact_force"][m].mean()
+c.check(abs(N_tr / N_cea - 1) < 0.02, f"mu 0.3: mean normal force {N_tr:.6f} vs CEA steady {N_cea:.6f} ({100 * (N_tr / N_cea - 1):+.2f} %, 2 %)")
+ratio = -d["friction_force"][m].mean() / N_tr
+c.check(abs(ratio / 0.3 - 1) < 0.01, f"mu 0.3: friction / normal force {ratio:.5f} = mu (1 %)")
+t, U = sf.whirl("tr03.h5")
+r = sf.fit(t, U, -w, t0, t1)
+m = (t >= t0) & (t <= t1)
+glog = np.polyfit(t[m], np.log(np.abs(U[m] - U[m].mean())), 1)[0]
+print(f"mu 0.3 window {t0:g}-{t1:.1f}: log-amplitude fit growth {glog:.6f} ({100 * (glog / g - 1):+.1f} %)")
+eg = r["pencil_growth"] / g - 1
+ew = abs(r["pencil_frequency"]) / w - 1
+c.check(r["pencil_frequency"] < 0 and abs(ew) < 0.02,
+        f"mu 0.3: whirl frequency {r['pencil_frequency']:+.5f} (backward) vs CEA {w:.5f}: {100 * ew:+.2f} % (2 %)")
+c.check(abs(eg) < 0.05, f"mu 0.3: whirl growth {r['pencil_growth']:.5f} (matrix pencil) vs CEA {g:.5f}: {100 * eg:+.1f} % (5 %)")
+
+# mu = 0.8
+rows, N_cea, _ = cea("cea08", 0.8, nev=400)
+top = max(rows, key=lambda r: r["growth_rate"])
+p1 = max((r for r in rows if int(r["order"]) == 1 and r["wave"] == "backward"), key=lambda r: r["growth_rate"])
+c.check(top["growth_rate"] > 1.5 * p1["growth_rate"],
+        f"mu 0.8: the CEA's fastest mode, growth {top['growth_rate']:.4f} at {top['frequency']:.3f} (order {int(top['order'])} {top['wave']}), "
+        f"outgrows the order-1 backward pair ({p1['growth_rate']:.4f} at {p1['frequency']:.4f})")
+d = transient("tr08", 0.8, 25)
+t1 = saturation(d, 0.8, 7.5)
+c.check(t1 < 20, f"mu 0.8: the transient leaves full sliding at t = {t1:.1f} < 20: the order-1 pair cannot be measured in the linear regime")
+c.close()
