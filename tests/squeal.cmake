@@ -1,9 +1,9 @@
-# The squeal CEA of the paper's roller (docs/squeal-cea.md): mu = 0 conservative, the steady sliding forces, the
+# The squeal CEA of the paper's roller (docs/squeal.md section 4.2): mu = 0 conservative, the steady sliding forces, the
 # order-1 backward pair unstable at mu = 0.8, the linear onset in mu (no threshold: unstable at mu = 0.3 too),
 # sign reversal with the slip, without rotation the coalescence of the order-3 pair at mu_c (bisection); coarse
 # graded mesh, about 40 s of CPU
 roller_test(squeal_quick squeal_quick.py LABELS quick TIMEOUT 300)
-# The transient (DMF, co-rotating frame, Coulomb every step) against the CEA's growth rate (5 %) and frequency
-# (2 %) of the order-1 backward pair at mu = 0.3, and mu = 0.8 leaving the CEA's regime; about 2 min of CPU. Fails at
-# present: the growth is 5.2 % below the CEA's (the estimates scatter from +5 % to -15 %, docs/squeal-cea.md section 3)
+# The transient (DMF, co-rotating frame, Coulomb every step) seeded on the steady state plus the order-1 backward
+# mode at mu = 0.3 against the CEA's growth rate (5 %) and frequency (2 %), and mu = 0.8 leaving the CEA's regime;
+# about 3 min of CPU (docs/squeal.md section 4.2)
 roller_test(squeal_transient squeal_transient.py LABELS long TIMEOUT 1800)

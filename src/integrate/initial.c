@@ -2,8 +2,6 @@
    verifies the scheme (-mms, verify/mms.c), whose L2 and H1 errors at the end of the run are reported by an
    observer (-mms_view: stdout by default, or e.g. ascii:errors.csv:ascii_csv for a CSV t,L2,H1). */
 #include "integrate/integrate.h"
-#include "model/model.h"
-#include <petscviewerhdf5.h>
 
 PetscErrorCode RollerInitialSetFromOptions(Roller ctx)
 {
@@ -21,57 +19,6 @@ PetscErrorCode RollerInitialSetFromOptions(Roller ctx)
   PetscCheck(ctx->init.amplitude >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ic_amplitude %g must be >= 0", (double)ctx->init.amplitude);
   PetscCheck(ctx->init.type != ROLLER_IC_MODE || ctx->init.mode_file[0], ctx->comm, PETSC_ERR_ARG_WRONG, "-initial_condition mode needs -initial_mode_file F.h5 (written by -modes -modes_frame rotating -modes_output F.h5)");
   PetscCheck(ctx->init.type != ROLLER_IC_MMS || ctx->init.mms != ROLLER_MMS_NONE, ctx->comm, PETSC_ERR_ARG_INCOMP, "-initial_condition mms needs -mms linear or sine");
-  PetscFunctionReturn(0);
-}
-
-/* -initial_condition mode: the steady state of the rotation xi_s ((K - rho omega^2 M) xi_s = rho omega^2 L_centrifugal,
-   which the DMF keeps exactly) plus the mode A Re(z e^{lambda t}) at t = 0, -dt, -2 dt (docs/squeal.md section 4):
-   the transient then follows the mode from its exact history. */
-static PetscErrorCode ModeState(Roller ctx)
-{
-  const PetscReal A = ctx->init.amplitude, w = ctx->rotation.omega, rho = ctx->material.density;
-  Vec             lev[3] = {ctx->state.cur, ctx->state.prev, ctx->state.prev2}, xr, xi, steady;
-  PetscReal       re, im, frame = 0;
-  PetscViewer     h5;
-  PetscBool       has;
-
-  PetscFunctionBeginUser;
-  PetscCall(VecDuplicate(ctx->state.cur, &xr));
-  PetscCall(VecDuplicate(ctx->state.cur, &xi));
-  PetscCall(VecDuplicate(ctx->state.cur, &steady));
-  PetscCall(RollerModeShapeRead(ctx, ctx->init.mode_file, ctx->init.mode_index, &re, &im, xr, xi));
-  PetscCall(PetscViewerHDF5Open(ctx->comm, ctx->init.mode_file, FILE_MODE_READ, &h5));
-  PetscCall(PetscViewerHDF5HasAttribute(h5, "/parameters", "modes_frame", &has));
-  if (has) PetscCall(PetscViewerHDF5ReadAttribute(h5, "/parameters", "modes_frame", PETSC_REAL, NULL, &frame));
-  PetscCall(PetscViewerDestroy(&h5));
-  PetscCheck(frame == ROLLER_FRAME_ROTATING, ctx->comm, PETSC_ERR_ARG_WRONG, "-initial_mode_file %s holds lab-frame modes; the time step is in the co-rotating frame: compute the modes with -modes_frame rotating", ctx->init.mode_file);
-  PetscCall(VecZeroEntries(steady));
-  if (w != 0) {
-    Mat B;
-    KSP ksp;
-
-    PetscCall(MatDuplicate(ctx->ops.K, MAT_COPY_VALUES, &B));
-    PetscCall(MatAXPY(B, -rho * w * w, ctx->ops.M, DIFFERENT_NONZERO_PATTERN));
-    PetscCall(KSPCreate(ctx->comm, &ksp));
-    PetscCall(KSPSetOperators(ksp, B, B));
-    PetscCall(RollerDirectSolverDefaults(ksp, PCLU));
-    PetscCall(KSPSetOptionsPrefix(ksp, "initial_"));
-    PetscCall(KSPSetFromOptions(ksp));
-    PetscCall(VecCopy(ctx->ops.L_centrifugal, ctx->state.rhs));
-    PetscCall(VecScale(ctx->state.rhs, rho * w * w));
-    PetscCall(KSPSolve(ksp, ctx->state.rhs, steady));
-    PetscCall(KSPDestroy(&ksp));
-    PetscCall(MatDestroy(&B));
-  }
-  for (PetscInt k = 0; k < 3; ++k) { /* A Re(z e^{lambda t}), t = -k dt: e^{lambda t} = e^{re t}(cos(im t) + i sin(im t)) */
-    const PetscReal t = -k * ctx->ts.dt, cr = PetscExpReal(re * t) * PetscCosReal(im * t), ci = PetscExpReal(re * t) * PetscSinReal(im * t);
-
-    PetscCall(VecCopy(steady, lev[k]));
-    PetscCall(VecAXPBYPCZ(lev[k], A * cr, -A * ci, 1.0, xr, xi));
-  }
-  PetscCall(VecDestroy(&xr));
-  PetscCall(VecDestroy(&xi));
-  PetscCall(VecDestroy(&steady));
   PetscFunctionReturn(0);
 }
 
@@ -102,7 +49,7 @@ PetscErrorCode RollerInitialState(Roller ctx)
     PetscCall(VecCopy(ctx->state.cur, ctx->state.prev2));
     break;
   case ROLLER_IC_MODE:
-    PetscCall(ModeState(ctx));
+    PetscCall(RollerInitialModeState(ctx));
     break;
   case ROLLER_IC_MMS: /* the exact solution at t = 0, -dt, -2 dt */
     PetscCall(RollerMMSExact(ctx, 0.0, ctx->state.cur));

@@ -1,6 +1,7 @@
 /* The time integration layer (docs/model.md section 2):
      timestep.c     the time-stepping options, the number of steps, the -ts_monitor and progress lines
      initial.c      the initial state, -mms and its error report at the end
+     initial_mode.c the initial state on a mode of -modes: co-rotating, or lab (squeal: about the steady state)
      step.c         one DMF step
      diagnostics.c  R, alpha, energy and the contact columns of a step
      checkpoint.c   checkpoint, restart, signals, -checkpoint_every
@@ -41,6 +42,9 @@ PETSC_INTERN PetscErrorCode RollerSignalCaught(Roller, PetscInt *);
 
 /* monitor.c (RollerMonitorSet and RollerMonitorCancel are public) */
 PETSC_INTERN PetscErrorCode RollerMonitorRun(Roller, RollerMonitorEvent);
+
+/* initial_mode.c: -initial_condition mode (docs/squeal.md section 4) */
+PETSC_INTERN PetscErrorCode RollerInitialModeState(Roller);
 
 /* driver.c: the time loop (RollerSolve without -modes) */
 PETSC_INTERN PetscErrorCode RollerRun(Roller);

@@ -39,7 +39,8 @@ typedef struct _n_RollerOutput *RollerOutput;
 PETSC_INTERN PetscErrorCode     RollerOutputSetUp(Roller);
 
 /* output_modes.c: the shapes of -modes (HDF5 + XDMF) and one of them read back */
-PETSC_INTERN PetscErrorCode RollerModeShapesWrite(Roller, const char[], PetscInt, const PetscReal[], const PetscReal[], const PetscInt[], Vec[], Vec[]);
+PETSC_INTERN PetscErrorCode RollerModeShapesWrite(Roller, const char[], PetscInt, const PetscReal[], const PetscReal[], const PetscInt[], Vec[], Vec[], Vec);
+PETSC_INTERN PetscErrorCode RollerModeSteadyRead(Roller, const char[], Vec, PetscBool *);
 PETSC_INTERN PetscErrorCode RollerModeShapeRead(Roller, const char[], PetscInt, PetscReal *, PetscReal *, Vec, Vec);
 
 #endif

@@ -1,11 +1,11 @@
 /* The mode shapes of -modes (-modes_output F.h5, docs/squeal.md): the straight-sided mesh, every mode's real and
    imaginary parts at the vertices (mode_re, mode_im: P1, 3 components, as /vertex_fields series indexed by the
    mode, whose XDMF "time" is the mode's row in the eigenvalue CSV), the eigenvalues (/modes attributes re, im,
-   order), the run's /parameters, and the full FE vectors shape_<j>_re, shape_<j>_im that -initial_condition
-   mode reads back. Written as F.part and renamed when complete; the index F.xmf beside it. */
+   order), the run's /parameters, and the full FE vectors shape_<j>_re, shape_<j>_im (and with -obstacle the
+   steady state, steady) that -initial_condition mode reads back. Written as F.part and renamed when complete; the index F.xmf beside it. */
 #include "output.h"
 
-PetscErrorCode RollerModeShapesWrite(Roller ctx, const char path[], PetscInt n, const PetscReal re[], const PetscReal im[], const PetscInt order[], Vec xr[], Vec xi[])
+PetscErrorCode RollerModeShapesWrite(Roller ctx, const char path[], PetscInt n, const PetscReal re[], const PetscReal im[], const PetscInt order[], Vec xr[], Vec xi[], Vec steady)
 {
   struct _n_RollerOutput out;
   PetscBool              has;
@@ -51,6 +51,7 @@ PetscErrorCode RollerModeShapesWrite(Roller ctx, const char path[], PetscInt n, 
     PetscCall(PetscViewerHDF5WriteAttribute(out.h5, "/parameters", "modes", PETSC_INT, &n));
     PetscCall(PetscViewerHDF5WriteAttribute(out.h5, "/parameters", "modes_frame", PETSC_REAL, &frame));
   }
+  if (steady) PetscCall(RollerPlainVecView(steady, "steady", out.h5, PETSC_FALSE)); /* the state the modes linearize about (lab frame) */
   if (n) {
     for (PetscInt j = 0; j < n; ++j) {
       char group[64];
@@ -69,6 +70,19 @@ PetscErrorCode RollerModeShapesWrite(Roller ctx, const char path[], PetscInt n, 
   PetscCall(VecDestroy(&out.field[1].vec));
   PetscCall(DMDestroy(&vdm));
   PetscCall(PetscFree(out.xdmf.times));
+  PetscFunctionReturn(0);
+}
+
+/* The steady state of a -modes -obstacle file (lab frame), into u; *has false (u untouched) without one. */
+PetscErrorCode RollerModeSteadyRead(Roller ctx, const char path[], Vec u, PetscBool *has)
+{
+  PetscViewer h5;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerHDF5Open(ctx->comm, path, FILE_MODE_READ, &h5));
+  PetscCall(PetscViewerHDF5HasDataset(h5, "/steady", has));
+  if (*has) PetscCall(RollerPlainVecView(u, "steady", h5, PETSC_TRUE));
+  PetscCall(PetscViewerDestroy(&h5));
   PetscFunctionReturn(0);
 }
 

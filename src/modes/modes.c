@@ -91,7 +91,7 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   Mat                  M, C, K;
   RollerPEP            pep;
   RollerModeClassifier cls;
-  Vec                 *xr, *xi, w, zr = NULL, zi = NULL;
+  Vec                 *xr, *xi, w, zr = NULL, zi = NULL, steady = NULL;
   IS                   kept = NULL; /* with -obstacle: the dofs of the reduced problem */
 
   PetscFunctionBeginUser;
@@ -104,6 +104,8 @@ PetscErrorCode RollerModesSolve(Roller ctx)
     PetscCall(RollerSteadySolve(ctx, K, &st));
     PetscCall(RollerSteadyReport(ctx, &st));
     PetscCall(RollerSquealOperators(ctx, &st, M, C, K, &Mr, &Cr, &Kr, &kept));
+    steady = st.u; /* kept for the shapes' file */
+    st.u   = NULL;
     PetscCall(RollerSteadyDestroy(&st, PETSC_TRUE));
     PetscCall(MatDestroy(&M));
     PetscCall(MatDestroy(&C));
@@ -146,11 +148,12 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   }
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_OUTPUT]));
   if (e->csv[0]) PetscCall(WriteCsv(ctx));
-  if (e->output[0]) PetscCall(RollerModeShapesWrite(ctx, e->output, e->n, e->re, e->im, e->order, xr, xi));
+  if (e->output[0]) PetscCall(RollerModeShapesWrite(ctx, e->output, e->n, e->re, e->im, e->order, xr, xi, steady));
   PetscCall(PetscLogStagePop());
   PetscCall(VecDestroyVecs(e->n, &xr));
   PetscCall(VecDestroyVecs(e->n, &xi));
   PetscCall(VecDestroy(&w));
+  PetscCall(VecDestroy(&steady));
   PetscCall(VecDestroy(&zr));
   PetscCall(VecDestroy(&zi));
   PetscCall(ISDestroy(&kept));
