@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""docs/figures/squeal_transient.png: the order-1 whirl of transient runs against the CEA (docs/squeal-cea.md).
+"""docs/figures/squeal_transient.png: the order-1 whirl of transient runs against the CEA (docs/squeal.md section 4.2).
 
   plot_squeal_transient.py --run LABEL RUN.h5 CEA.csv T0 T1 [--run ...] --out F.png
 

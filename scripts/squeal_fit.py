@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Growth rate and frequency of the squeal whirl in a transient run (docs/squeal-cea.md).
+"""Growth rate and frequency of the squeal whirl in a transient run (docs/squeal.md section 4.2).
 
 The transient (roller -obstacle -friction mu -output F.h5) stores the displacement xi of the co-rotating mesh
 vertices. The mean of xi over the Gamma_C vertices, turned into the lab by R(theta(t)), is the lab-frame

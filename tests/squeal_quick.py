@@ -1,4 +1,4 @@
-"""The squeal CEA of the paper's roller (docs/squeal-cea.md): roller -modes -obstacle on a coarse graded mesh.
+"""The squeal CEA of the paper's roller (docs/squeal.md section 4.2): roller -modes -obstacle on a coarse graded mesh.
 
 - mu = 0: the frictionless linearization about steady rolling is conservative (gyroscopic): every
   |growth_rate| < 1e-8 frequency;
