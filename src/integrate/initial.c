@@ -9,7 +9,7 @@ PetscErrorCode RollerInitialSetFromOptions(Roller ctx)
   PetscOptionsBegin(ctx->comm, NULL, "Roller: initial condition and manufactured solution", NULL);
   PetscCall(PetscOptionsEnum("-initial_condition", "Initial state xi0, eta0", "RollerInitialCondition", RollerInitialConditions, (PetscEnum)ctx->init.type, (PetscEnum *)&ctx->init.type, NULL));
   PetscCall(PetscOptionsReal("-ic_amplitude", "Amplitude of the bump, or of the mode's largest displacement (-initial_condition mode)", NULL, ctx->init.amplitude, &ctx->init.amplitude, NULL));
-  PetscCall(PetscOptionsString("-initial_mode_file", "-initial_condition mode: the -modes_output file (co-rotating frame) holding the mode", NULL, ctx->init.mode_file, ctx->init.mode_file, sizeof(ctx->init.mode_file), NULL));
+  PetscCall(PetscOptionsString("-initial_mode_file", "-initial_condition mode: the -modes_output file holding the mode (co-rotating; or lab, the squeal modes with the steady state)", NULL, ctx->init.mode_file, ctx->init.mode_file, sizeof(ctx->init.mode_file), NULL));
   PetscCall(PetscOptionsInt("-initial_mode", "-initial_condition mode: the mode's row in that file's eigenvalue CSV", NULL, ctx->init.mode_index, &ctx->init.mode_index, NULL));
   PetscCall(PetscOptionsEnum("-mms", "Manufactured solution for verification (adds its body force)", "RollerMMSType", RollerMMSTypes, (PetscEnum)ctx->init.mms, (PetscEnum *)&ctx->init.mms, NULL));
   PetscCall(PetscViewerDestroy(&ctx->init.mms_view));
@@ -17,7 +17,7 @@ PetscErrorCode RollerInitialSetFromOptions(Roller ctx)
   PetscOptionsEnd();
   if (ctx->init.mms != ROLLER_MMS_NONE) ctx->init.type = ROLLER_IC_MMS; /* -mms implies its initial condition */
   PetscCheck(ctx->init.amplitude >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ic_amplitude %g must be >= 0", (double)ctx->init.amplitude);
-  PetscCheck(ctx->init.type != ROLLER_IC_MODE || ctx->init.mode_file[0], ctx->comm, PETSC_ERR_ARG_WRONG, "-initial_condition mode needs -initial_mode_file F.h5 (written by -modes -modes_frame rotating -modes_output F.h5)");
+  PetscCheck(ctx->init.type != ROLLER_IC_MODE || ctx->init.mode_file[0], ctx->comm, PETSC_ERR_ARG_WRONG, "-initial_condition mode needs -initial_mode_file F.h5 (written by -modes -modes_output F.h5)");
   PetscCheck(ctx->init.type != ROLLER_IC_MMS || ctx->init.mms != ROLLER_MMS_NONE, ctx->comm, PETSC_ERR_ARG_INCOMP, "-initial_condition mms needs -mms linear or sine");
   PetscFunctionReturn(0);
 }
