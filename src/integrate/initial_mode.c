@@ -40,7 +40,7 @@ static PetscErrorCode CorotatingRate(Roller ctx, Mat M0, Mat D, Vec u, Vec v)
   PetscCall(VecDuplicate(u, &t));
   PetscCall(MatMult(D, u, ctx->state.rhs));
   PetscCall(DirectSolve(ctx, M0, ctx->state.rhs, v)); /* d_phi u */
-  PetscCall(RollerApplyRotate90(u, t));                       /* R(-pi/2) u = -J u */
+  PetscCall(RollerApplyRotate90(u, t));               /* R(-pi/2) u = -J u */
   PetscCall(VecAXPY(v, 1.0, t));
   PetscCall(VecScale(v, ctx->rotation.omega));
   PetscCall(VecDestroy(&t));
@@ -92,8 +92,8 @@ PetscErrorCode RollerInitialModeState(Roller ctx)
     PetscCall(VecDuplicate(steady, &v));
     PetscCall(RollerAssembleMatrix(ctx, "D", NULL, g1_convective, NULL, &D));
     PetscCall(RollerAssembleMatrix(ctx, "M", g0_mass, NULL, NULL, &M0));
-    PetscCall(VecWAXPY(lev[0], A, xr, steady));      /* xi^0 = u_s + A Re z */
-    PetscCall(CorotatingRate(ctx, M0, D, lev[0], rate)); /* omega (d_phi - J) xi^0 */
+    PetscCall(VecWAXPY(lev[0], A, xr, steady));                 /* xi^0 = u_s + A Re z */
+    PetscCall(CorotatingRate(ctx, M0, D, lev[0], rate));        /* omega (d_phi - J) xi^0 */
     PetscCall(VecAXPBYPCZ(rate, A * re, -A * im, 1.0, xr, xi)); /* + A Re(lambda z) */
     for (PetscInt k = 1; k < 3; ++k) PetscCall(VecWAXPY(lev[k], -k * dt, rate, lev[0]));
     PetscCall(MatDestroy(&D));

@@ -13,8 +13,8 @@ PetscErrorCode RollerModesSetFromOptions(Roller ctx)
   PetscOptionsBegin(ctx->comm, NULL, "Roller: modes (docs/squeal.md); the eigensolver takes -pep_* and -st_* options (SLEPc PEP, TOAR, shift-and-invert about -pep_target 0)", NULL);
   PetscCall(PetscOptionsBool("-modes", "Compute the modes of the scene (the quadratic eigenproblem) instead of stepping", NULL, ctx->eig.on, &ctx->eig.on, NULL));
   ctx->eig.frame = ctx->obstacle.on ? ROLLER_FRAME_LAB : ROLLER_FRAME_ROTATING; /* steady sliding is steady in the lab only */
-  PetscCall(
-    PetscOptionsEnum("-modes_frame", "Frame of the linearization: rotating (co-rotating, Lagrangian; the default without -obstacle) or lab (Eulerian; the default and the only one with -obstacle)", "RollerFrame", RollerFrames, (PetscEnum)ctx->eig.frame, (PetscEnum *)&ctx->eig.frame, NULL));
+  PetscCall(PetscOptionsEnum("-modes_frame", "Frame of the linearization: rotating (co-rotating, Lagrangian; the default without -obstacle) or lab (Eulerian; the default and the only one with -obstacle)", "RollerFrame", RollerFrames,
+                             (PetscEnum)ctx->eig.frame, (PetscEnum *)&ctx->eig.frame, NULL));
   PetscCall(PetscOptionsInt("-modes_nev", "Number of eigenvalues wanted (-pep_nev overrides); each complex pair counts twice", NULL, ctx->eig.nev, &ctx->eig.nev, NULL));
   PetscCall(PetscOptionsString("-modes_csv", "Eigenvalue CSV: re,im,frequency,growth_rate,order,wave,error", NULL, ctx->eig.csv, ctx->eig.csv, sizeof(ctx->eig.csv), NULL));
   PetscCall(PetscOptionsString("-modes_steady_csv", "With -obstacle: the steady state's contact nodes x,y,normal_force,tangential_force,gap,slip_velocity,mu", NULL, ctx->eig.steady_csv, ctx->eig.steady_csv, sizeof(ctx->eig.steady_csv), NULL));
