@@ -71,6 +71,12 @@ for args, name, value in cases:
 
 c.check(not os.path.exists("bad_sweep.csv"), "no sweep CSV left by a refused -sweep")
 
+# a modes file of another roller: refused, naming the parameter
+run(["-mesh_h", "0.05", "-modes", "-modes_output", "bad_modes.h5", "-quiet"])
+code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet", "-initial_condition", "mode", "-initial_mode_file", "bad_modes.h5", "-omega", "0.2"], check=False)
+first = next((line for line in (out + err).splitlines() if "-initial_mode_file" in line), "")
+c.check(code != 0 and "-omega" in first and "0.2" in first, f"a modes file of another omega: exit {code}, message: {first.strip()[:150]}")
+
 # an output path that cannot be written: no file left that looks complete
 for opt in ("-monitor_csv", "-output", "-modes_csv", "-modes_output"):
     path = f"no-such-dir/out.{'h5' if opt.endswith('output') else 'csv'}"
