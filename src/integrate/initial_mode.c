@@ -13,7 +13,6 @@
 #include "integrate/integrate.h"
 #include "model/model.h"
 #include "model/kernels.h"
-#include <petscviewerhdf5.h>
 
 static PetscErrorCode DirectSolve(Roller ctx, Mat B, Vec b, Vec x)
 {
@@ -47,58 +46,19 @@ static PetscErrorCode CorotatingRate(Roller ctx, Mat M0, Mat D, Vec u, Vec v)
   PetscFunctionReturn(0);
 }
 
-/* The modes file must describe this run's roller: the physical parameters it was computed with (its /parameters) equal
-   this run's, so that the mode is a mode of what is stepped (the sizes are checked when the vectors are read). */
-static PetscErrorCode CheckParameters(Roller ctx, PetscViewer h5)
-{
-  const struct {
-    const char *name;
-    PetscReal   value;
-  } p[] = {
-    {"r_inner",   ctx->mesh.r_inner      },
-    {"r_outer",   ctx->mesh.r_outer      },
-    {"young",     ctx->material.young    },
-    {"poisson",   ctx->material.poisson  },
-    {"density",   ctx->material.density  },
-    {"viscosity", ctx->material.viscosity},
-    {"omega",     ctx->rotation.omega    },
-    {"friction",  ctx->obstacle.friction },
-  };
-
-  PetscFunctionBeginUser;
-  for (size_t i = 0; i < sizeof(p) / sizeof(p[0]); ++i) {
-    PetscReal v;
-    PetscBool has;
-
-    PetscCall(PetscViewerHDF5HasAttribute(h5, "/parameters", p[i].name, &has));
-    if (!has) continue;
-    PetscCall(PetscViewerHDF5ReadAttribute(h5, "/parameters", p[i].name, PETSC_REAL, NULL, &v));
-    PetscCheck(PetscAbsReal(v - p[i].value) <= 1e-12 * PetscMax(PetscAbsReal(v), PetscAbsReal(p[i].value)), ctx->comm, PETSC_ERR_ARG_INCOMP, "-initial_mode_file %s: its modes were computed with -%s %g, this run has -%s %g: give the same", ctx->init.mode_file,
-               p[i].name, (double)v, p[i].name, (double)p[i].value);
-  }
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode RollerInitialModeState(Roller ctx)
 {
   const PetscReal A = ctx->init.amplitude, w = ctx->rotation.omega, rho = ctx->material.density, dt = ctx->ts.dt;
   Vec             lev[3] = {ctx->state.cur, ctx->state.prev, ctx->state.prev2}, xr, xi, steady;
-  PetscReal       re, im, frame = 0;
-  PetscViewer     h5;
+  PetscReal       re, im;
+  RollerFrame     frame;
   PetscBool       has;
 
   PetscFunctionBeginUser;
   PetscCall(VecDuplicate(ctx->state.cur, &xr));
   PetscCall(VecDuplicate(ctx->state.cur, &xi));
   PetscCall(VecDuplicate(ctx->state.cur, &steady));
-  PetscCall(PetscTestFile(ctx->init.mode_file, 'r', &has));
-  PetscCheck(has, ctx->comm, PETSC_ERR_FILE_OPEN, "-initial_mode_file %s: no such readable file (write one with -modes -modes_output)", ctx->init.mode_file);
-  PetscCall(PetscViewerHDF5Open(ctx->comm, ctx->init.mode_file, FILE_MODE_READ, &h5));
-  PetscCall(PetscViewerHDF5HasAttribute(h5, "/parameters", "modes_frame", &has));
-  if (has) PetscCall(PetscViewerHDF5ReadAttribute(h5, "/parameters", "modes_frame", PETSC_REAL, NULL, &frame));
-  PetscCall(CheckParameters(ctx, h5));
-  PetscCall(PetscViewerDestroy(&h5));
-  PetscCall(RollerModeShapeRead(ctx, ctx->init.mode_file, ctx->init.mode_index, &re, &im, xr, xi));
+  PetscCall(RollerModeFileRead(ctx, ctx->init.mode_file, ctx->init.mode_index, &frame, &re, &im, xr, xi, steady, &has));
   if (frame == ROLLER_FRAME_ROTATING) {
     PetscCall(VecZeroEntries(steady));
     if (w != 0) {
@@ -119,12 +79,10 @@ PetscErrorCode RollerInitialModeState(Roller ctx)
     }
   } else {
     Mat D, M0;
-    Vec rate, v;
+    Vec rate;
 
-    PetscCall(RollerModeSteadyRead(ctx, ctx->init.mode_file, steady, &has));
     if (!has) PetscCall(VecZeroEntries(steady)); /* the free annulus in the lab: about the undeformed state */
     PetscCall(VecDuplicate(steady, &rate));
-    PetscCall(VecDuplicate(steady, &v));
     PetscCall(RollerAssembleMatrix(ctx, "D", NULL, g1_convective, NULL, &D));
     PetscCall(RollerAssembleMatrix(ctx, "M", g0_mass, NULL, NULL, &M0));
     PetscCall(VecWAXPY(lev[0], A, xr, steady));                 /* xi^0 = u_s + A Re z */
@@ -134,7 +92,6 @@ PetscErrorCode RollerInitialModeState(Roller ctx)
     PetscCall(MatDestroy(&D));
     PetscCall(MatDestroy(&M0));
     PetscCall(VecDestroy(&rate));
-    PetscCall(VecDestroy(&v));
   }
   PetscCall(VecDestroy(&xr));
   PetscCall(VecDestroy(&xi));

@@ -17,7 +17,9 @@ PETSC_INTERN PetscErrorCode RollerJoinPath(char[], size_t, const char[], const c
 PETSC_INTERN PetscErrorCode RollerRenameFile(MPI_Comm, const char[], const char[]);
 PETSC_INTERN PetscErrorCode RollerRemoveStale(MPI_Comm, const char[]);
 PETSC_INTERN PetscErrorCode RollerCheckWritable(MPI_Comm, const char[], const char[]);
-PETSC_INTERN PetscErrorCode RollerPlainVecView(Vec, const char[], PetscViewer, PetscBool); /* a flat dataset by name: view, or load (PETSC_TRUE) */
+PETSC_INTERN PetscErrorCode RollerPartFileOpen(MPI_Comm, const char[], const char[], char[], size_t, FILE **); /* path, option, part */
+PETSC_INTERN PetscErrorCode RollerPartFileClose(MPI_Comm, FILE **, const char[], const char[]);                /* part, path */
+PETSC_INTERN PetscErrorCode RollerPlainVecView(Vec, const char[], PetscViewer, PetscBool);                     /* a flat dataset by name: view, or load (PETSC_TRUE) */
 
 /* series.c: the diagnostics time series written into the HDF5 output */
 typedef struct _n_RollerSeries *RollerSeries;
@@ -40,7 +42,6 @@ PETSC_INTERN PetscErrorCode     RollerOutputSetUp(Roller);
 
 /* output_modes.c: the shapes of -modes (HDF5 + XDMF) and one of them read back */
 PETSC_INTERN PetscErrorCode RollerModeShapesWrite(Roller, const char[], PetscInt, const PetscReal[], const PetscReal[], const PetscInt[], Vec[], Vec[], Vec);
-PETSC_INTERN PetscErrorCode RollerModeSteadyRead(Roller, const char[], Vec, PetscBool *);
-PETSC_INTERN PetscErrorCode RollerModeShapeRead(Roller, const char[], PetscInt, PetscReal *, PetscReal *, Vec, Vec);
+PETSC_INTERN PetscErrorCode RollerModeFileRead(Roller, const char[], PetscInt, RollerFrame *, PetscReal *, PetscReal *, Vec, Vec, Vec, PetscBool *);
 
 #endif

@@ -88,38 +88,75 @@ PetscErrorCode RollerFieldCreate(DM dm, const char name[], OutputField *field)
   PetscFunctionReturn(0);
 }
 
-/* The run's parameters as attributes of /parameters, so that scripts (plot_fields.py) need not be told. */
+/* The run's parameters: written as attributes of /parameters (RollerWriteParameters), so that scripts
+   (plot_fields.py) need not be told; the physical ones (the roller, its material, rotation and friction) are those a
+   file computed for another roller differs in (RollerCheckParameters). */
+typedef struct {
+  const char *name;
+  PetscReal   value;
+  PetscBool   physical;
+} Parameter;
+
+#define NUM_PARAMETERS 18
+
+static void Parameters(Roller ctx, Parameter p[NUM_PARAMETERS])
+{
+  const Parameter all[NUM_PARAMETERS] = {
+    {"r_inner",         ctx->mesh.r_inner,             PETSC_TRUE },
+    {"r_outer",         ctx->mesh.r_outer,             PETSC_TRUE },
+    {"young",           ctx->material.young,           PETSC_TRUE },
+    {"poisson",         ctx->material.poisson,         PETSC_TRUE },
+    {"density",         ctx->material.density,         PETSC_TRUE },
+    {"viscosity",       ctx->material.viscosity,       PETSC_TRUE },
+    {"omega",           ctx->rotation.omega,           PETSC_TRUE },
+    {"theta_a",         ctx->rotation.a,               PETSC_FALSE},
+    {"theta_b",         ctx->rotation.b,               PETSC_FALSE},
+    {"theta_start",     ctx->rotation.start,           PETSC_FALSE},
+    {"obstacle_speed",  ctx->obstacle.speed,           PETSC_FALSE},
+    {"obstacle_depth",  ctx->obstacle.depth,           PETSC_FALSE},
+    {"sheet_speed",     ctx->obstacle.sheet_speed,     PETSC_FALSE},
+    {"friction",        ctx->obstacle.friction,        PETSC_TRUE },
+    {"friction_static", ctx->obstacle.friction_static, PETSC_FALSE},
+    {"friction_decay",  ctx->obstacle.friction_decay,  PETSC_FALSE},
+    {"damping",         ctx->disc.damping,             PETSC_FALSE},
+    {"dt",              ctx->ts.dt,                    PETSC_FALSE},
+  };
+
+  for (PetscInt i = 0; i < NUM_PARAMETERS; ++i) p[i] = all[i];
+}
+
 PetscErrorCode RollerWriteParameters(Roller ctx, PetscViewer h5)
 {
-  const struct {
-    const char *name;
-    PetscReal   value;
-  } p[] = {
-    {"r_inner",         ctx->mesh.r_inner            },
-    {"r_outer",         ctx->mesh.r_outer            },
-    {"young",           ctx->material.young          },
-    {"poisson",         ctx->material.poisson        },
-    {"density",         ctx->material.density        },
-    {"viscosity",       ctx->material.viscosity      },
-    {"omega",           ctx->rotation.omega          },
-    {"theta_a",         ctx->rotation.a              },
-    {"theta_b",         ctx->rotation.b              },
-    {"theta_start",     ctx->rotation.start          },
-    {"obstacle_speed",  ctx->obstacle.speed          },
-    {"obstacle_depth",  ctx->obstacle.depth          },
-    {"sheet_speed",     ctx->obstacle.sheet_speed    },
-    {"friction",        ctx->obstacle.friction       },
-    {"friction_static", ctx->obstacle.friction_static},
-    {"friction_decay",  ctx->obstacle.friction_decay },
-    {"damping",         ctx->disc.damping            },
-    {"dt",              ctx->ts.dt                   },
-  };
+  Parameter      p[NUM_PARAMETERS];
   const PetscInt obstacle = ctx->obstacle.on ? 1 : 0;
 
   PetscFunctionBeginUser;
-  for (size_t i = 0; i < sizeof(p) / sizeof(p[0]); ++i) PetscCall(PetscViewerHDF5WriteAttribute(h5, "/parameters", p[i].name, PETSC_REAL, &p[i].value));
+  Parameters(ctx, p);
+  for (PetscInt i = 0; i < NUM_PARAMETERS; ++i) PetscCall(PetscViewerHDF5WriteAttribute(h5, "/parameters", p[i].name, PETSC_REAL, &p[i].value));
   PetscCall(PetscViewerHDF5WriteAttribute(h5, "/parameters", "obstacle", PETSC_INT, &obstacle));
   PetscCall(PetscViewerHDF5WriteAttribute(h5, "/parameters", "degree", PETSC_INT, &ctx->disc.degree));
+  PetscFunctionReturn(0);
+}
+
+/* A file's physical parameters (its /parameters, where present) equal this run's (1e-12): an error naming the option
+   that gave the file, the parameter and both values otherwise. */
+PetscErrorCode RollerCheckParameters(Roller ctx, PetscViewer h5, const char option[], const char file[])
+{
+  Parameter p[NUM_PARAMETERS];
+
+  PetscFunctionBeginUser;
+  Parameters(ctx, p);
+  for (PetscInt i = 0; i < NUM_PARAMETERS; ++i) {
+    PetscReal v;
+    PetscBool has;
+
+    if (!p[i].physical) continue;
+    PetscCall(PetscViewerHDF5HasAttribute(h5, "/parameters", p[i].name, &has));
+    if (!has) continue;
+    PetscCall(PetscViewerHDF5ReadAttribute(h5, "/parameters", p[i].name, PETSC_REAL, NULL, &v));
+    PetscCheck(PetscAbsReal(v - p[i].value) <= 1e-12 * PetscMax(PetscAbsReal(v), PetscAbsReal(p[i].value)), ctx->comm, PETSC_ERR_ARG_INCOMP, "%s %s: it was computed with -%s %g, this run has -%s %g: give the same", option, file, p[i].name, (double)v,
+               p[i].name, (double)p[i].value);
+  }
   PetscFunctionReturn(0);
 }
 

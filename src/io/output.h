@@ -69,6 +69,7 @@ PETSC_INTERN PetscErrorCode RollerOutputSpace(Roller, PetscInt, const char[], DM
 PETSC_INTERN PetscErrorCode RollerFieldCreate(DM, const char[], OutputField *);
 PETSC_INTERN PetscErrorCode RollerProjectAtVertices(Roller, Vec, RollerPointFunc, InsertMode, Vec); /* u on ctx->mesh.dm */
 PETSC_INTERN PetscErrorCode RollerWriteParameters(Roller, PetscViewer);
+PETSC_INTERN PetscErrorCode RollerCheckParameters(Roller, PetscViewer, const char[], const char[]); /* option, file */
 PETSC_INTERN void           RollerPadVector(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f[]);
 
 /* output_xdmf.c */

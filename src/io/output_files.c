@@ -65,6 +65,32 @@ PetscErrorCode RollerCheckWritable(MPI_Comm comm, const char option[], const cha
   PetscFunctionReturn(0);
 }
 
+/* A small file that rank 0 writes whole (the -modes CSVs): the stale path removed, path.part checked writable (option
+   named in the message) and opened on rank 0 (*fp NULL on the others); RollerPartFileClose closes it and renames
+   it to path. */
+PetscErrorCode RollerPartFileOpen(MPI_Comm comm, const char path[], const char option[], char part[], size_t len, FILE **fp)
+{
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  *fp = NULL;
+  PetscCall(RollerJoinPath(part, len, path, ".part", option));
+  PetscCall(RollerRemoveStale(comm, path));
+  PetscCall(RollerCheckWritable(comm, option, part));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (!rank) PetscCall(PetscFOpen(PETSC_COMM_SELF, part, "w", fp));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerPartFileClose(MPI_Comm comm, FILE **fp, const char part[], const char path[])
+{
+  PetscFunctionBeginUser;
+  if (*fp) PetscCall(PetscFClose(PETSC_COMM_SELF, *fp));
+  *fp = NULL;
+  PetscCall(RollerRenameFile(comm, part, path));
+  PetscFunctionReturn(0);
+}
+
 /* Through a plain MPI vector of the same layout, HDF5 writes a flat dataset by name, not the DM's fields.
    (VecLoad replaces a vector's array, so the load goes through a copy.) */
 PetscErrorCode RollerPlainVecView(Vec v, const char *name, PetscViewer viewer, PetscBool load)

@@ -73,24 +73,14 @@ PetscErrorCode RollerModeShapesWrite(Roller ctx, const char path[], PetscInt n, 
   PetscFunctionReturn(0);
 }
 
-/* The steady state of a -modes -obstacle file (lab frame), into u; *has false (u untouched) without one. */
-PetscErrorCode RollerModeSteadyRead(Roller ctx, const char path[], Vec u, PetscBool *has)
-{
-  PetscViewer h5;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscViewerHDF5Open(ctx->comm, path, FILE_MODE_READ, &h5));
-  PetscCall(PetscViewerHDF5HasDataset(h5, "/steady", has));
-  if (*has) PetscCall(RollerPlainVecView(u, "steady", h5, PETSC_TRUE));
-  PetscCall(PetscViewerDestroy(&h5));
-  PetscFunctionReturn(0);
-}
-
-/* Mode j of a -modes_output file: its eigenvalue and shape (for -initial_condition mode). */
-PetscErrorCode RollerModeShapeRead(Roller ctx, const char path[], PetscInt j, PetscReal *re, PetscReal *im, Vec xr, Vec xi)
+/* Mode j of a -modes_output file, for -initial_condition mode, in one opening: the frame it was computed in, its
+   eigenvalue and shape, and (lab-frame squeal modes) the steady state in steady (*has_steady false, steady untouched,
+   without one). The file must be readable and describe this run's roller (RollerCheckParameters). */
+PetscErrorCode RollerModeFileRead(Roller ctx, const char path[], PetscInt j, RollerFrame *frame, PetscReal *re, PetscReal *im, Vec xr, Vec xi, Vec steady, PetscBool *has_steady)
 {
   PetscViewer h5;
   PetscInt    n = 0;
+  PetscReal   f = ROLLER_FRAME_ROTATING;
   PetscBool   has;
   char        name[64];
 
@@ -98,6 +88,10 @@ PetscErrorCode RollerModeShapeRead(Roller ctx, const char path[], PetscInt j, Pe
   PetscCall(PetscTestFile(path, 'r', &has));
   PetscCheck(has, ctx->comm, PETSC_ERR_FILE_OPEN, "-initial_mode_file %s: no such readable file (write one with -modes -modes_output)", path);
   PetscCall(PetscViewerHDF5Open(ctx->comm, path, FILE_MODE_READ, &h5));
+  PetscCall(RollerCheckParameters(ctx, h5, "-initial_mode_file", path));
+  PetscCall(PetscViewerHDF5HasAttribute(h5, "/parameters", "modes_frame", &has));
+  if (has) PetscCall(PetscViewerHDF5ReadAttribute(h5, "/parameters", "modes_frame", PETSC_REAL, NULL, &f));
+  *frame = (RollerFrame)(PetscInt)f;
   PetscCall(PetscViewerHDF5HasAttribute(h5, "/parameters", "modes", &has));
   if (has) PetscCall(PetscViewerHDF5ReadAttribute(h5, "/parameters", "modes", PETSC_INT, NULL, &n));
   PetscCheck(j >= 0 && j < n, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-initial_mode %" PetscInt_FMT ": %s has modes 0..%" PetscInt_FMT, j, path, n - 1);
@@ -108,6 +102,8 @@ PetscErrorCode RollerModeShapeRead(Roller ctx, const char path[], PetscInt j, Pe
   PetscCall(RollerPlainVecView(xr, name, h5, PETSC_TRUE));
   PetscCall(PetscSNPrintf(name, sizeof(name), "shape_%" PetscInt_FMT "_im", j));
   PetscCall(RollerPlainVecView(xi, name, h5, PETSC_TRUE));
+  PetscCall(PetscViewerHDF5HasDataset(h5, "/steady", has_steady));
+  if (*has_steady) PetscCall(RollerPlainVecView(steady, "steady", h5, PETSC_TRUE));
   PetscCall(PetscViewerDestroy(&h5));
   PetscFunctionReturn(0);
 }

@@ -65,23 +65,16 @@ static PetscErrorCode WriteCsv(Roller ctx)
 {
   const RollerEigen *e = &ctx->eig;
   char               part[PETSC_MAX_PATH_LEN];
-  PetscMPIInt        rank;
+  FILE              *fp;
 
   PetscFunctionBeginUser;
-  PetscCall(RollerJoinPath(part, sizeof(part), ctx->eig.csv, ".part", "-modes_csv"));
-  PetscCall(RollerRemoveStale(ctx->comm, ctx->eig.csv));
-  PetscCall(RollerCheckWritable(ctx->comm, "-modes_csv", part));
-  PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
-  if (!rank) {
-    FILE *fp;
-
-    PetscCall(PetscFOpen(PETSC_COMM_SELF, part, "w", &fp));
+  PetscCall(RollerPartFileOpen(ctx->comm, e->csv, "-modes_csv", part, sizeof(part), &fp));
+  if (fp) {
     PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "re,im,frequency,growth_rate,order,wave,error\n"));
     for (PetscInt j = 0; j < e->n; ++j)
       PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%s,%.3e\n", (double)e->re[j], (double)e->im[j], (double)e->im[j], (double)e->re[j], e->order[j], RollerWaves[e->wave[j]], (double)e->error[j]));
-    PetscCall(PetscFClose(PETSC_COMM_SELF, fp));
   }
-  PetscCall(RollerRenameFile(ctx->comm, part, ctx->eig.csv));
+  PetscCall(RollerPartFileClose(ctx->comm, &fp, part, e->csv));
   PetscFunctionReturn(0);
 }
 

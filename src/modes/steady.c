@@ -25,6 +25,12 @@ static void FrictionLaw(Roller ctx, PetscReal v, PetscReal *mu, PetscReal *dmu)
   *dmu = o->friction_decay > 0 ? -(o->friction_static - o->friction) / o->friction_decay * e : 0.0;
 }
 
+/* A node on Gamma_C: |x| = r_outer (vertices, and the curved P2 boundary's edge nodes) */
+static PetscBool OnOuterCircle(Roller ctx, PetscReal x0, PetscReal x1)
+{
+  return PetscAbsReal(PetscSqrtReal(x0 * x0 + x1 * x1) - ctx->mesh.r_outer) <= 1e-8 * ctx->mesh.r_outer ? PETSC_TRUE : PETSC_FALSE;
+}
+
 /* The Gamma_C nodes (|x| = r_outer) with rigid gap y_2 - g below reach, gathered on every rank, sorted by angle. */
 static PetscErrorCode Candidates(Roller ctx, PetscReal g, PetscReal reach, RollerSteady *st)
 {
@@ -41,7 +47,7 @@ static PetscErrorCode Candidates(Roller ctx, PetscReal g, PetscReal reach, Rolle
   for (PetscInt j = 0; j < n; j += 2) {
     const PetscReal x0 = PetscRealPart(x[j]), x1 = PetscRealPart(x[j + 1]);
 
-    if (PetscAbsReal(PetscSqrtReal(x0 * x0 + x1 * x1) - ctx->mesh.r_outer) > 1e-8 * ctx->mesh.r_outer || x1 - g > reach) continue;
+    if (!OnOuterCircle(ctx, x0, x1) || x1 - g > reach) continue;
     dof[nloc]        = lo + j;
     xy[2 * nloc]     = x0;
     xy[2 * nloc + 1] = x1;
@@ -235,7 +241,7 @@ PetscErrorCode RollerSteadySolve(Roller ctx, Mat Klab, RollerSteady *st)
       for (PetscInt j = 0; j < n; j += 2) {
         const PetscReal x0 = PetscRealPart(x[j]), x1 = PetscRealPart(x[j + 1]);
 
-        if (PetscAbsReal(PetscSqrtReal(x0 * x0 + x1 * x1) - ctx->mesh.r_outer) > 1e-8 * ctx->mesh.r_outer || x1 - g <= reach) continue;
+        if (!OnOuterCircle(ctx, x0, x1) || x1 - g <= reach) continue;
         gmin = PetscMin(gmin, x1 + PetscRealPart(u[j + 1]) - g);
       }
       PetscCall(VecRestoreArrayRead(ctx->ops.coordinates, &x));
@@ -274,9 +280,10 @@ PetscErrorCode RollerSteadyDestroy(RollerSteady *st, PetscBool all)
    x,y,normal_force,tangential_force,gap,slip_velocity,mu (rank 0 writes F.part, renamed when complete). */
 PetscErrorCode RollerSteadyReport(Roller ctx, const RollerSteady *st)
 {
-  PetscReal   N = 0, T = 0, a0 = PETSC_MAX_REAL, a1 = -PETSC_MAX_REAL;
-  PetscInt    active = 0;
-  PetscMPIInt rank;
+  PetscReal N = 0, T = 0, a0 = PETSC_MAX_REAL, a1 = -PETSC_MAX_REAL;
+  PetscInt  active = 0;
+  char      part[PETSC_MAX_PATH_LEN];
+  FILE     *fp;
 
   PetscFunctionBeginUser;
   for (PetscInt j = 0; j < st->n; ++j) {
@@ -291,24 +298,13 @@ PetscErrorCode RollerSteadyReport(Roller ctx, const RollerSteady *st)
     PetscCall(PetscPrintf(ctx->comm, "roller: steady %s state (lab frame): %" PetscInt_FMT " of %" PetscInt_FMT " candidate nodes in contact over x in [%g, %g], normal force %.6g, friction force %.6g, slip speed %g, %" PetscInt_FMT " mu(v) passes\n", st->sign != 0 ? "sliding" : "frictionless rolling", active, st->n, (double)a0, (double)a1, (double)N, (double)T,
                           (double)(ctx->rotation.omega * ctx->mesh.r_outer - ctx->obstacle.sheet_speed), st->iterations));
   if (!ctx->eig.steady_csv[0]) PetscFunctionReturn(0);
-  {
-    char part[PETSC_MAX_PATH_LEN];
-
-    PetscCall(RollerJoinPath(part, sizeof(part), ctx->eig.steady_csv, ".part", "-modes_steady_csv"));
-    PetscCall(RollerRemoveStale(ctx->comm, ctx->eig.steady_csv));
-    PetscCall(RollerCheckWritable(ctx->comm, "-modes_steady_csv", part));
-    PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
-    if (!rank) {
-      FILE *fp;
-
-      PetscCall(PetscFOpen(PETSC_COMM_SELF, part, "w", &fp));
-      PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "x,y,normal_force,tangential_force,gap,slip_velocity,mu\n"));
-      for (PetscInt j = 0; j < st->n; ++j)
-        PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", (double)st->xy[2 * j], (double)st->xy[2 * j + 1], (double)st->normal[j], (double)(-st->sign * st->mu[j] * st->normal[j]), (double)st->gap[j],
-                               (double)st->slip[j], (double)st->mu[j]));
-      PetscCall(PetscFClose(PETSC_COMM_SELF, fp));
-    }
-    PetscCall(RollerRenameFile(ctx->comm, part, ctx->eig.steady_csv));
+  PetscCall(RollerPartFileOpen(ctx->comm, ctx->eig.steady_csv, "-modes_steady_csv", part, sizeof(part), &fp));
+  if (fp) {
+    PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "x,y,normal_force,tangential_force,gap,slip_velocity,mu\n"));
+    for (PetscInt j = 0; j < st->n; ++j)
+      PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", (double)st->xy[2 * j], (double)st->xy[2 * j + 1], (double)st->normal[j], (double)(-st->sign * st->mu[j] * st->normal[j]), (double)st->gap[j], (double)st->slip[j],
+                             (double)st->mu[j]));
   }
+  PetscCall(RollerPartFileClose(ctx->comm, &fp, part, ctx->eig.steady_csv));
   PetscFunctionReturn(0);
 }
