@@ -56,7 +56,6 @@ cases = [
     (["-modes", "-modes_frame", "lab", "-viscosity", "0.01"], "-modes_frame lab", "0.01"),
     (["-modes", "-obstacle", "-contact_mass", "redistributed"], "-contact_mass", "redistributed"),
     (["-modes", "-theta_a", "0.1"], "-modes", "-theta_a"),
-    (["-modes", "-obstacle", "-friction", "0.5", "-sheet_speed", "0.15707963267948966"], "-sheet_speed", "0.15708"),
     (["-initial_condition", "mode"], "-initial_condition mode", "-initial_mode_file"),
     (["-initial_condition", "mode", "-initial_mode_file", "no-such-modes.h5"], "-initial_mode_file", "no-such-modes.h5"),
     (["-modes", "-sweep", "bad_sweep.csv", "-sweep_omega", "0,0.1x,0.2"], "-sweep_omega", "0.1x"),

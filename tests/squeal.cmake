@@ -7,3 +7,7 @@ roller_test(squeal_quick squeal_quick.py LABELS quick TIMEOUT 300)
 # mode at mu = 0.3 against the CEA's growth rate (5 %) and frequency (2 %), and mu = 0.8 leaving the CEA's regime;
 # about 3 min of CPU (docs/squeal.md section 4.2)
 roller_test(squeal_transient squeal_transient.py LABELS long TIMEOUT 1800)
+# The steady rolling state with stick and slip zones solved as one static problem (-modes -modes_nev 0, the lab
+# frame) against Carter: Coulomb's law at every node, |Q|/(mu P) within 0.02, the stick zone at the leading edge
+# with Carter's width, driving and braking, 1 and 2 ranks (docs/squeal.md section 3.2; about 15 s)
+roller_test(steady_rolling steady_rolling.py LABELS quick PROCESSORS 2 TIMEOUT 300)

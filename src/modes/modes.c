@@ -15,12 +15,12 @@ PetscErrorCode RollerModesSetFromOptions(Roller ctx)
   ctx->eig.frame = ctx->obstacle.on ? ROLLER_FRAME_LAB : ROLLER_FRAME_ROTATING; /* steady sliding is steady in the lab only */
   PetscCall(PetscOptionsEnum("-modes_frame", "Frame of the linearization: rotating (co-rotating, Lagrangian; the default without -obstacle) or lab (Eulerian; the default and the only one with -obstacle)", "RollerFrame", RollerFrames,
                              (PetscEnum)ctx->eig.frame, (PetscEnum *)&ctx->eig.frame, NULL));
-  PetscCall(PetscOptionsInt("-modes_nev", "Number of eigenvalues wanted (-pep_nev overrides); each complex pair counts twice", NULL, ctx->eig.nev, &ctx->eig.nev, NULL));
+  PetscCall(PetscOptionsInt("-modes_nev", "Number of eigenvalues wanted (-pep_nev overrides); each complex pair counts twice; 0 with -obstacle: the steady state only", NULL, ctx->eig.nev, &ctx->eig.nev, NULL));
   PetscCall(PetscOptionsString("-modes_csv", "Eigenvalue CSV: re,im,frequency,growth_rate,order,wave,error", NULL, ctx->eig.csv, ctx->eig.csv, sizeof(ctx->eig.csv), NULL));
-  PetscCall(PetscOptionsString("-modes_steady_csv", "With -obstacle: the steady state's contact nodes x,y,normal_force,tangential_force,gap,slip_velocity,mu", NULL, ctx->eig.steady_csv, ctx->eig.steady_csv, sizeof(ctx->eig.steady_csv), NULL));
+  PetscCall(PetscOptionsString("-modes_steady_csv", "With -obstacle: the steady state's contact nodes x,y,normal_force,tangential_force,gap,slip_velocity,mu,state", NULL, ctx->eig.steady_csv, ctx->eig.steady_csv, sizeof(ctx->eig.steady_csv), NULL));
   PetscCall(PetscOptionsString("-modes_output", "Mode shapes: HDF5 file F.h5 (+ XDMF index F.xmf for ParaView)", NULL, ctx->eig.output, ctx->eig.output, sizeof(ctx->eig.output), NULL));
   PetscOptionsEnd();
-  PetscCheck(ctx->eig.nev > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-modes_nev %" PetscInt_FMT " must be > 0", ctx->eig.nev);
+  PetscCheck(ctx->eig.nev > 0 || (ctx->eig.nev == 0 && ctx->obstacle.on), ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-modes_nev %" PetscInt_FMT " must be > 0 (or 0 with -obstacle: the steady state only)", ctx->eig.nev);
   PetscFunctionReturn(0);
 }
 
@@ -90,19 +90,25 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   PetscFunctionBeginUser;
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_MODES]));
   PetscCall(RollerModeOperators(ctx, &M, &C, &K));
-  if (ctx->obstacle.on) { /* the steady sliding state, and the linearization about it on the kept dofs */
+  if (ctx->obstacle.on) { /* the steady state, and the linearization about it on the kept dofs */
     RollerSteady st;
     Mat          Mr, Cr, Kr;
 
     PetscCall(RollerSteadySolve(ctx, K, &st));
     PetscCall(RollerSteadyReport(ctx, &st));
-    PetscCall(RollerSquealOperators(ctx, &st, M, C, K, &Mr, &Cr, &Kr, &kept));
+    if (e->nev) PetscCall(RollerSquealOperators(ctx, &st, M, C, K, &Mr, &Cr, &Kr, &kept));
     steady = st.u; /* kept for the shapes' file */
     st.u   = NULL;
     PetscCall(RollerSteadyDestroy(&st, PETSC_TRUE));
     PetscCall(MatDestroy(&M));
     PetscCall(MatDestroy(&C));
     PetscCall(MatDestroy(&K));
+    if (!e->nev) { /* the steady state only */
+      PetscCall(PetscLogStagePop());
+      if (e->output[0]) PetscCall(RollerModeShapesWrite(ctx, e->output, 0, NULL, NULL, NULL, NULL, NULL, steady));
+      PetscCall(VecDestroy(&steady));
+      PetscFunctionReturn(0);
+    }
     M = Mr;
     C = Cr;
     K = Kr;

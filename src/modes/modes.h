@@ -34,16 +34,17 @@ PETSC_INTERN PetscErrorCode             RollerModeClassify(RollerModeClassifier,
 PETSC_INTERN PetscErrorCode             RollerModeClassifierDestroy(RollerModeClassifier *);
 
 /* steady.c: the steady rolling/sliding state in the lab frame (docs/squeal.md section 3): the Gamma_C nodes within
-   reach of the sheet (sorted by angle; x dof at dof[j], y at dof[j] + 1; positions xy), their normal forces, mu(v),
-   mu'(v), slip speeds and gaps, the slip's sign s (0 without friction), the state u; the scatter to the candidates */
+   reach of the sheet (sorted by angle; x dof at dof[j], y at dof[j] + 1; positions xy), their normal and tangential
+   forces, mu(v), mu'(v), slip speeds, gaps and states (0 off the sheet, 1 stick, 2 slip), the state u; the
+   scatter to the candidates */
 typedef struct {
-  PetscInt   n, *dof, iterations;
-  PetscReal *xy, *normal, *mu, *dmu, *slip, *gap, sign;
+  PetscInt   n, *dof, *state, iterations, alternations;
+  PetscReal *xy, *normal, *tangent, *mu, *dmu, *slip, *gap;
   Vec        u, red;
   VecScatter scatter;
 } RollerSteady;
 PETSC_INTERN PetscErrorCode RollerSteadySolve(Roller, Mat, RollerSteady *); /* with K_lab */
-PETSC_INTERN PetscErrorCode RollerSteadyAngularDerivative(const RollerSteady *, PetscInt, PetscInt[3], PetscReal[3]);
+PETSC_INTERN PetscErrorCode RollerSteadyAngularDerivative(const RollerSteady *, PetscReal, PetscInt, PetscInt[3], PetscReal[3]); /* upwind for omega */
 PETSC_INTERN PetscErrorCode RollerSteadyDestroy(RollerSteady *, PetscBool);
 PETSC_INTERN PetscErrorCode RollerSteadyReport(Roller, const RollerSteady *); /* printed, and -modes_steady_csv */
 

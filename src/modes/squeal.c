@@ -33,7 +33,7 @@ PetscErrorCode RollerSquealOperators(Roller ctx, const RollerSteady *st, Mat M, 
     const PetscInt a = st->dof[j];
 
     if (st->normal[j] <= tol * nmax || a < lo || a >= hi) continue;
-    if (st->sign != 0) PetscCall(MatSetValue(R, a, a + 1, st->sign * st->mu[j], INSERT_VALUES));
+    if (st->tangent[j] != 0) PetscCall(MatSetValue(R, a, a + 1, -st->tangent[j] / st->normal[j], INSERT_VALUES)); /* s mu_a */
     drop[a + 1 - lo] = PETSC_TRUE;
   }
   PetscCall(MatAssemblyBegin(R, MAT_FINAL_ASSEMBLY));
@@ -51,7 +51,7 @@ PetscErrorCode RollerSquealOperators(Roller ctx, const RollerSteady *st, Mat M, 
 
     if (st->normal[j] <= tol * nmax || a < lo || a >= hi || st->dmu[j] == 0) continue;
     PetscCall(MatSetValue(RC, a, a, st->normal[j] * st->dmu[j], ADD_VALUES));
-    PetscCall(RollerSteadyAngularDerivative(st, j, nb, c));
+    PetscCall(RollerSteadyAngularDerivative(st, ctx->rotation.omega, j, nb, c));
     for (PetscInt k = 0; k < 3; ++k) {
       cols[k] = st->dof[nb[k]];
       vals[k] = st->normal[j] * st->dmu[j] * ctx->rotation.omega * c[k];

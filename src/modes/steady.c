@@ -2,17 +2,17 @@
    (docs/squeal.md section 3): the obstacle and the contact patch stand still while the material flows through
    them, so the state solves one static problem with the constant matrix K_lab = K - rho theta'^2 P,
 
-     K_lab u = rho theta'^2 L_centrifugal + sum_j lambda_j (e_j,y - s mu_j e_j,x),
-     gap_j = y_j,2 + u_j,2 - g >= 0,  lambda_j >= 0,  lambda_j gap_j = 0,
+     K_lab u = rho theta'^2 L_centrifugal + sum_j (N_j e_y + T_j e_x)            (forces at the Gamma_C nodes j)
+     gap_j = y_j,2 + u_j,2 - g >= 0,  N_j >= 0,  N_j gap_j = 0,                   (the sheet at height g = depth - r_outer)
+     v_j = theta'(-y_j,2 + d_phi u_j,1) - V,  |T_j| <= mu_j N_j,  T_j = -mu_j N_j sign(v_j) where v_j != 0,
 
-   on the Gamma_C nodes j within reach of the sheet at height g = depth - r_outer: the normal force lambda_j
-   pushes up (e2), the Coulomb force -s mu_j lambda_j acts along e1 against the slip, whose sign s is that of
-   the material's speed over the sheet's, omega r_outer - V (steady sliding; 0 without friction). K_lab is
-   factored once; its inverse applied to each candidate's force direction gives the dense matrix G of the
-   LCP w = G lambda + q in the multipliers (symmetric without friction, non-symmetric with), solved by
-   Lemke's method. The slip speed at node j, v_j = theta'(-y_j,2 + d_phi u_j,1) - V (d_phi along Gamma_C by
-   differences), sets mu_j = mu(|v_j|) (velocity weakening): repeated until mu settles. A node that would
-   stick (v_j of the other sign) is reported as an error: the rolling state with stick zones is not built. */
+   on the Gamma_C nodes within reach of the sheet: v_j is the speed of the material over the sheet (the rigid
+   rotation's plus the convective rate of the displacement, d_phi along Gamma_C by differences), so a node sticks
+   (v_j = 0) or slips against its force: Carter's rolling with stick and slip zones, full sliding when the sheet
+   is held, frictionless rolling at mu = 0. K_lab is factored once; its inverse applied to the unit forces gives
+   the dense dual data (gaps and slips of the candidates), and Coulomb's law on it is one LCP solved by Lemke's
+   method (RollerContactCoulombLemke; without friction the normal LCP alone). mu_j = mu(|v_j|) (velocity
+   weakening; mu_s where a node sticks) is repeated until it settles. */
 #include "modes/modes.h"
 
 /* mu(v) = mu + (mu_s - mu) exp(-v / v_c) and its derivative (model as contact/contact_friction.c) */
@@ -90,21 +90,41 @@ static PetscErrorCode Candidates(Roller ctx, PetscReal g, PetscReal reach, Rolle
 }
 
 /* d_phi of the x displacement at candidate j, from the redundant values ux[] of all candidates (sorted by angle):
-   coefficients c[3] on the candidates j-1, j, j+1 (central differences in the angle, one-sided at the ends). */
-PetscErrorCode RollerSteadyAngularDerivative(const RollerSteady *st, PetscInt j, PetscInt nb[3], PetscReal c[3])
+   coefficients c[3] on the candidates nb[3]. Upwind: the material flows through Gamma_C in the direction of the
+   rotation, and the slip speed's d_phi is the transport of the displacement by that flow, so the difference
+   looks upstream (second order, three points j, j -+ 1, j -+ 2; two points next to the upstream end, and the
+   downstream two at the end itself). A central difference would leave the stick condition v_j = 0 blind to
+   every other node (odd-even decoupling: the dual matrix of the stick zone singular). */
+PetscErrorCode RollerSteadyAngularDerivative(const RollerSteady *st, PetscReal omega, PetscInt j, PetscInt nb[3], PetscReal c[3])
 {
-  PetscReal t[3];
-  PetscInt  a = PetscMax(j - 1, 0), b = PetscMin(j + 1, st->n - 1);
+  const PetscInt up = omega >= 0 ? -1 : 1, end = omega >= 0 ? 0 : st->n - 1;
+  PetscReal      t[3];
+  PetscInt       k = 3;
 
   PetscFunctionBeginUser;
-  PetscCheck(st->n > 1, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "One contact candidate: no derivative along Gamma_C");
-  nb[0] = a;
-  nb[1] = j;
-  nb[2] = b;
-  for (PetscInt k = 0; k < 3; ++k) t[k] = PetscAtan2Real(st->xy[2 * nb[k] + 1], st->xy[2 * nb[k]]);
-  c[0] = -1.0 / (t[2] - t[0]);
-  c[1] = 0.0;
-  c[2] = 1.0 / (t[2] - t[0]);
+  PetscCheck(st->n > 2, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%" PetscInt_FMT " contact candidates: too few for a derivative along Gamma_C", st->n);
+  nb[0] = j;
+  if (j == end) {
+    nb[1] = j - up;
+    nb[2] = j - 2 * up;
+  } else if (j == end - up) {
+    nb[1] = j + up;
+    nb[2] = j;
+    k     = 2;
+  } else {
+    nb[1] = j + up;
+    nb[2] = j + 2 * up;
+  }
+  for (PetscInt i = 0; i < 3; ++i) t[i] = PetscAtan2Real(st->xy[2 * nb[i] + 1], st->xy[2 * nb[i]]);
+  if (k == 2) { /* first order, upstream */
+    c[0] = 1.0 / (t[0] - t[1]);
+    c[1] = -c[0];
+    c[2] = 0.0;
+  } else { /* the derivative at t0 of the parabola through t0, t1, t2 */
+    c[0] = 1.0 / (t[0] - t[1]) + 1.0 / (t[0] - t[2]);
+    c[1] = (t[0] - t[2]) / ((t[1] - t[0]) * (t[1] - t[2]));
+    c[2] = (t[0] - t[1]) / ((t[2] - t[0]) * (t[2] - t[1]));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -122,56 +142,204 @@ static PetscErrorCode CandidateValues(RollerSteady *st, Vec v, PetscReal xs[])
   PetscFunctionReturn(0);
 }
 
-/* One LCP at fixed mu_j: the multipliers, the state u, the gaps and slips of the candidates. */
-static PetscErrorCode SolveLCP(Roller ctx, KSP ksp, Vec uf, PetscReal g, RollerSteady *st, Vec *w)
+/* K_lab^-1 of the unit force at candidate k along e_{1+c} (c = 0: x, 1: y) into w */
+static PetscErrorCode UnitResponse(KSP ksp, const RollerSteady *st, PetscInt k, PetscInt c, Vec f, Vec w)
 {
-  const PetscInt n = st->n;
-  PetscReal     *G, *q, *xs;
-  PetscInt       pivots;
-  PetscBool      solved;
-  PetscInt       lo, hi;
+  PetscInt lo, hi;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscMalloc3(n * n, &G, n, &q, 2 * n, &xs));
-  PetscCall(VecGetOwnershipRange(uf, &lo, &hi));
-  for (PetscInt k = 0; k < n; ++k) { /* w_k = K_lab^-1 (e_k,y - s mu_k e_k,x) */
-    Vec f = st->u;
+  PetscCall(VecZeroEntries(f));
+  PetscCall(VecGetOwnershipRange(f, &lo, &hi));
+  if (st->dof[k] >= lo && st->dof[k] < hi) PetscCall(VecSetValue(f, st->dof[k] + c, 1.0, INSERT_VALUES));
+  PetscCall(VecAssemblyBegin(f));
+  PetscCall(VecAssemblyEnd(f));
+  PetscCall(KSPSolve(ksp, f, w));
+  PetscFunctionReturn(0);
+}
 
-    PetscCall(VecZeroEntries(f));
-    if (st->dof[k] >= lo && st->dof[k] < hi) {
-      PetscCall(VecSetValue(f, st->dof[k] + 1, 1.0, INSERT_VALUES));
-      PetscCall(VecSetValue(f, st->dof[k], -st->sign * st->mu[k], INSERT_VALUES));
-    }
-    PetscCall(VecAssemblyBegin(f));
-    PetscCall(VecAssemblyEnd(f));
-    PetscCall(KSPSolve(ksp, f, w[k]));
-    PetscCall(CandidateValues(st, w[k], xs));
-    for (PetscInt j = 0; j < n; ++j) G[j + k * n] = xs[2 * j + 1];
-  }
-  PetscCall(CandidateValues(st, uf, xs));
-  for (PetscInt j = 0; j < n; ++j) q[j] = st->xy[2 * j + 1] + xs[2 * j + 1] - g;
-  PetscCall(RollerContactLemke(n, G, q, st->normal, &pivots, &solved));
-  PetscCheck(solved, ctx->comm, PETSC_ERR_NOT_CONVERGED, "The steady state's contact LCP (%" PetscInt_FMT " nodes, -friction %g) has no solution by Lemke's method (a secondary ray after %" PetscInt_FMT " pivots)", n, (double)ctx->obstacle.friction, pivots);
-  PetscCall(VecCopy(uf, st->u));
-  for (PetscInt k = 0; k < n; ++k)
-    if (st->normal[k] != 0) PetscCall(VecAXPY(st->u, st->normal[k], w[k]));
-  PetscCall(CandidateValues(st, st->u, xs));
-  for (PetscInt j = 0; j < n; ++j) {
+/* The gaps and the slip speeds (over vs) of the candidates for the candidate values xs of a state, or (affine
+   false) of a response: gap_j = y_j,2 + u_j,2 - g, v_j = theta'(-y_j,2 + d_phi u_j,1) - V. */
+static PetscErrorCode GapSlip(Roller ctx, const RollerSteady *st, const PetscReal xs[], PetscBool affine, PetscReal g, PetscReal vs, PetscReal gap[], PetscReal slip[])
+{
+  const PetscReal w = ctx->rotation.omega;
+
+  PetscFunctionBeginUser;
+  for (PetscInt j = 0; j < st->n; ++j) {
     PetscInt  nb[3];
     PetscReal c[3], du = 0;
 
-    PetscCall(RollerSteadyAngularDerivative(st, j, nb, c));
+    PetscCall(RollerSteadyAngularDerivative(st, w, j, nb, c));
     for (PetscInt k = 0; k < 3; ++k) du += c[k] * xs[2 * nb[k]];
-    st->gap[j]  = st->xy[2 * j + 1] + xs[2 * j + 1] - g;
-    st->slip[j] = ctx->rotation.omega * (-st->xy[2 * j + 1] + du) - ctx->obstacle.sheet_speed;
+    gap[j]  = xs[2 * j + 1] + (affine ? st->xy[2 * j + 1] - g : 0.0);
+    slip[j] = (w * du + (affine ? -w * st->xy[2 * j + 1] - ctx->obstacle.sheet_speed : 0.0)) / vs;
   }
-  PetscCall(PetscFree3(G, q, xs));
+  PetscFunctionReturn(0);
+}
+
+/* The dual data of the candidates: G = [gap; slip/vs] of the unit forces (column k < n: normal force at candidate
+   k, k >= n: tangential force at k - n; only the normal ones without friction) into w[k], and d of the state uf
+   without contact forces. */
+static PetscErrorCode Responses(Roller ctx, KSP ksp, Vec uf, PetscReal g, PetscReal vs, PetscBool friction, RollerSteady *st, Vec *w, PetscReal G[], PetscReal d[])
+{
+  const PetscInt n = st->n, m = friction ? 2 * n : n;
+  PetscReal     *xs, *scratch;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc2(2 * n, &xs, n, &scratch));
+  for (PetscInt k = 0; k < m; ++k) {
+    PetscCall(UnitResponse(ksp, st, k % n, k < n ? 1 : 0, st->u, w[k]));
+    PetscCall(CandidateValues(st, w[k], xs));
+    PetscCall(GapSlip(ctx, st, xs, PETSC_FALSE, g, vs, G + (size_t)k * m, friction ? G + (size_t)k * m + n : scratch));
+  }
+  PetscCall(CandidateValues(st, uf, xs));
+  PetscCall(GapSlip(ctx, st, xs, PETSC_TRUE, g, vs, d, friction ? d + n : scratch));
+  PetscCall(PetscFree2(xs, scratch));
+  PetscFunctionReturn(0);
+}
+
+/* x = A_SS^-1 r on the index set S (ns of the m x m column-major A, the entries from row/column offset o) by dense LU */
+static PetscErrorCode DenseSolve(const PetscReal A[], PetscInt m, PetscInt o, const PetscInt S[], PetscInt ns, PetscReal r[], PetscReal x[])
+{
+  PetscReal *a;
+  Mat        B;
+  Vec        rhs, sol;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1((size_t)ns * ns, &a));
+  for (PetscInt q = 0; q < ns; ++q)
+    for (PetscInt p = 0; p < ns; ++p) a[p + (size_t)q * ns] = A[o + S[p] + (size_t)(o + S[q]) * m];
+  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, ns, ns, a, &B));
+  PetscCall(MatLUFactor(B, NULL, NULL, NULL));
+  PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, ns, r, &rhs));
+  PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, ns, x, &sol));
+  PetscCall(MatSolve(B, rhs, sol));
+  PetscCall(VecDestroy(&rhs));
+  PetscCall(VecDestroy(&sol));
+  PetscCall(MatDestroy(&B));
+  PetscCall(PetscFree(a));
+  PetscFunctionReturn(0);
+}
+
+/* The tangential forces T of the contact nodes (N_j > 0) for given normal forces N: Tresca with the bound mu_j N_j,
+   on the slips v = Gtt T + Gtn N + dt (G m x m, m = 2 n: rows/columns n.. the tangential ones). A node sticks
+   (v_j = 0, |T_j| <= mu_j N_j) or slips (T_j = -s_j mu_j N_j, s_j v_j >= 0). Primal-dual active set on the states
+   (state 1 stick, 2 slip with the sign s; warm-started from the caller's): the stick nodes' forces from
+   Gtt_SS T_S = -(v without them); a stick node over its bound slips, a slip node whose slip turned sticks. */
+static PetscErrorCode Tangential(Roller ctx, PetscInt n, const PetscReal G[], const PetscReal d[], const PetscReal mu[], const PetscReal N[], PetscInt state[], PetscReal s[], PetscReal T[])
+{
+  const PetscInt m = 2 * n;
+  PetscInt      *S, ns, it;
+  PetscReal     *v, *r, *x;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc4(n, &S, n, &v, n, &r, n, &x));
+  for (it = 0; it < 100; ++it) {
+    PetscInt changed = 0;
+
+    ns = 0;
+    for (PetscInt j = 0; j < n; ++j) {
+      T[j] = state[j] == 2 ? -s[j] * mu[j] * N[j] : 0.0;
+      if (state[j] == 1) S[ns++] = j;
+    }
+    for (PetscInt j = 0; j < n; ++j) { /* the slips without the stick nodes' forces */
+      v[j] = d[n + j];
+      for (PetscInt k = 0; k < n; ++k) v[j] += G[n + j + (size_t)k * m] * N[k] + G[n + j + (size_t)(n + k) * m] * T[k];
+    }
+    if (ns) {
+      for (PetscInt p = 0; p < ns; ++p) r[p] = -v[S[p]];
+      PetscCall(DenseSolve(G, m, n, S, ns, r, x));
+      for (PetscInt p = 0; p < ns; ++p) T[S[p]] = x[p];
+      for (PetscInt j = 0; j < n; ++j)
+        for (PetscInt p = 0; p < ns; ++p) v[j] += G[n + j + (size_t)(n + S[p]) * m] * x[p];
+    }
+    for (PetscInt j = 0; j < n; ++j) {
+      if (N[j] <= 0) {
+        if (state[j]) ++changed;
+        state[j] = 0;
+        T[j]     = 0.0;
+      } else if (state[j] == 1 && PetscAbsReal(T[j]) > mu[j] * N[j]) {
+        state[j] = 2;
+        s[j]     = T[j] > 0 ? -1.0 : 1.0;
+        ++changed;
+      } else if (state[j] == 2 && s[j] * v[j] < 0) {
+        state[j] = 1;
+        ++changed;
+      } else if (state[j] == 0) {
+        state[j] = 2;
+        s[j]     = v[j] >= 0 ? 1.0 : -1.0;
+        ++changed;
+      }
+    }
+    if (!changed) break;
+  }
+  PetscCheck(it < 100, ctx->comm, PETSC_ERR_NOT_CONVERGED, "The steady state's stick/slip states did not settle in 100 active-set iterations (-friction %g)", (double)ctx->obstacle.friction);
+  PetscCall(PetscFree4(S, v, r, x));
+  PetscFunctionReturn(0);
+}
+
+/* The contact forces at fixed mu_j: N (normal, the LCP w = Gnn N + dn + Gnt T by Lemke's method) and, with friction,
+   T (Tangential), alternated until both settle (the normal-tangential coupling is weak: Dundurs' beta); the state u,
+   the candidates' gaps, slips and states. */
+static PetscErrorCode SolveContact(Roller ctx, Vec uf, PetscReal g, PetscBool friction, const PetscReal G[], const PetscReal d[], Vec *w, RollerSteady *st)
+{
+  const PetscInt n = st->n, m = friction ? 2 * n : n;
+  PetscReal     *xs, *N, *T, *Gnn, *q, *s, nmax = 0;
+  PetscInt       pivots, k;
+  PetscBool      solved;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc6(2 * n, &xs, n, &N, n, &T, (size_t)n * n, &Gnn, n, &q, n, &s));
+  for (PetscInt j = 0; j < n; ++j) {
+    for (PetscInt i = 0; i < n; ++i) Gnn[i + (size_t)j * n] = G[i + (size_t)j * m];
+    T[j] = friction ? st->tangent[j] : 0.0; /* the last pass's: a warm start */
+    s[j] = st->tangent[j] > 0 ? -1.0 : 1.0;
+  }
+  for (k = 0; k < 100; ++k) {
+    PetscReal dN = 0, dT = 0, big = 0;
+
+    for (PetscInt i = 0; i < n; ++i) {
+      q[i] = d[i];
+      if (friction)
+        for (PetscInt j = 0; j < n; ++j) q[i] += G[i + (size_t)(n + j) * m] * T[j];
+    }
+    PetscCall(RollerContactLemke(n, Gnn, q, xs, &pivots, &solved));
+    PetscCheck(solved, ctx->comm, PETSC_ERR_NOT_CONVERGED, "The steady state's normal contact LCP (%" PetscInt_FMT " nodes) has no solution by Lemke's method (a secondary ray after %" PetscInt_FMT " pivots)", n, pivots);
+    for (PetscInt j = 0; j < n; ++j) {
+      dN   = PetscMax(dN, PetscAbsReal(xs[j] - N[j]));
+      N[j] = xs[j];
+      big  = PetscMax(big, N[j]);
+    }
+    if (!friction) break;
+    PetscCall(PetscArraycpy(xs, T, n));
+    PetscCall(Tangential(ctx, n, G, d, st->mu, N, st->state, s, T));
+    for (PetscInt j = 0; j < n; ++j) dT = PetscMax(dT, PetscAbsReal(xs[j] - T[j]));
+    if (k && PetscMax(dN, dT) <= 1e-13 * big) break;
+  }
+  PetscCheck(k < 100, ctx->comm, PETSC_ERR_NOT_CONVERGED, "The steady state's normal and tangential forces did not settle in 100 alternations (-friction %g)", (double)ctx->obstacle.friction);
+  st->alternations = k + 1;
+  PetscCall(VecCopy(uf, st->u));
+  for (PetscInt j = 0; j < n; ++j) {
+    if (N[j] != 0) PetscCall(VecAXPY(st->u, N[j], w[j]));
+    if (friction && T[j] != 0) PetscCall(VecAXPY(st->u, T[j], w[n + j]));
+    st->normal[j]  = N[j];
+    st->tangent[j] = friction ? T[j] : 0.0;
+    nmax           = PetscMax(nmax, N[j]);
+  }
+  PetscCall(CandidateValues(st, st->u, xs));
+  PetscCall(GapSlip(ctx, st, xs, PETSC_TRUE, g, 1.0, st->gap, st->slip));
+  for (PetscInt j = 0; j < n; ++j) { /* 0 off the sheet, 1 stick (inside the cone), 2 slip (on it) */
+    if (st->normal[j] <= 1e-12 * nmax) st->state[j] = 0;
+    else st->state[j] = friction && PetscAbsReal(st->tangent[j]) < (1.0 - 1e-9) * st->mu[j] * st->normal[j] ? 1 : 2;
+  }
+  PetscCall(PetscFree6(xs, N, T, Gnn, q, s));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode RollerSteadySolve(Roller ctx, Mat Klab, RollerSteady *st)
 {
   const PetscReal g = ctx->obstacle.depth - ctx->mesh.r_outer, w = ctx->rotation.omega, rho = ctx->material.density;
+  const PetscBool friction = ctx->obstacle.friction > 0 || ctx->obstacle.friction_static > 0 ? PETSC_TRUE : PETSC_FALSE;
+  const PetscReal vs = PetscMax(PetscAbsReal(w) * ctx->mesh.r_outer, PetscAbsReal(ctx->obstacle.sheet_speed)) / ctx->mesh.r_outer > 0 ? PetscMax(PetscAbsReal(w) * ctx->mesh.r_outer, PetscAbsReal(ctx->obstacle.sheet_speed)) / ctx->mesh.r_outer : 1.0; /* slips over vs: lengths */
   PetscReal       reach = PetscMax(ctx->obstacle.depth, 1e-3 * ctx->mesh.r_outer), v0 = w * ctx->mesh.r_outer - ctx->obstacle.sheet_speed;
   KSP             ksp;
   Vec             uf;
@@ -187,16 +355,14 @@ PetscErrorCode RollerSteadySolve(Roller ctx, Mat Klab, RollerSteady *st)
   PetscCall(VecCopy(ctx->ops.L_centrifugal, st->u));
   PetscCall(VecScale(st->u, rho * w * w));
   PetscCall(KSPSolve(ksp, st->u, uf));
-  st->sign = ctx->obstacle.friction > 0 ? (v0 > 0 ? 1.0 : -1.0) : 0.0;
-  PetscCheck(st->sign == 0 || v0 != 0, ctx->comm, PETSC_ERR_SUP, "-modes with -friction: the sheet moves with the surface (-sheet_speed %g = omega r_outer): steady rolling with stick zones is not built, only steady sliding", (double)ctx->obstacle.sheet_speed);
   for (PetscInt attempt = 0;; ++attempt) { /* widen the candidate zone until no node outside it penetrates */
     Vec      *wk;
-    PetscReal gmin, vmin;
-    PetscInt  lo, hi, n;
+    PetscReal gmin, *G, *d;
+    PetscInt  lo, hi, n, m;
 
     PetscCall(Candidates(ctx, g, reach, st));
-    PetscCheck(st->n > 1, ctx->comm, PETSC_ERR_ARG_WRONG, "-obstacle_depth %g: fewer than two Gamma_C nodes within reach of the sheet; press deeper or refine the mesh", (double)ctx->obstacle.depth);
-    PetscCall(PetscMalloc5(st->n, &st->normal, st->n, &st->mu, st->n, &st->dmu, st->n, &st->slip, st->n, &st->gap));
+    PetscCheck(st->n > 2, ctx->comm, PETSC_ERR_ARG_WRONG, "-obstacle_depth %g: fewer than three Gamma_C nodes within reach of the sheet; press deeper or refine the mesh", (double)ctx->obstacle.depth);
+    PetscCall(PetscCalloc7(st->n, &st->normal, st->n, &st->tangent, st->n, &st->mu, st->n, &st->dmu, st->n, &st->slip, st->n, &st->gap, st->n, &st->state));
     {
       IS        is;
       PetscInt *idx;
@@ -212,11 +378,14 @@ PetscErrorCode RollerSteadySolve(Roller ctx, Mat Klab, RollerSteady *st)
       PetscCall(ISDestroy(&is));
     }
     for (PetscInt j = 0; j < st->n; ++j) FrictionLaw(ctx, v0, &st->mu[j], &st->dmu[j]);
-    PetscCall(VecDuplicateVecs(uf, st->n, &wk));
+    m = friction ? 2 * st->n : st->n;
+    PetscCall(VecDuplicateVecs(uf, m, &wk));
+    PetscCall(PetscMalloc2((size_t)m * m, &G, m, &d));
+    PetscCall(Responses(ctx, ksp, uf, g, vs, friction, st, wk, G, d));
     for (st->iterations = 1;; ++st->iterations) { /* mu_j = mu(|v_j|) at the state's slips */
       PetscReal change = 0;
 
-      PetscCall(SolveLCP(ctx, ksp, uf, g, st, wk));
+      PetscCall(SolveContact(ctx, uf, g, friction, G, d, wk, st));
       for (PetscInt j = 0; j < st->n; ++j) {
         PetscReal mu, dmu;
 
@@ -225,10 +394,11 @@ PetscErrorCode RollerSteadySolve(Roller ctx, Mat Klab, RollerSteady *st)
         st->mu[j]  = mu;
         st->dmu[j] = dmu;
       }
-      if (change <= 1e-12 * PetscMax(ctx->obstacle.friction_static, 1e-300) || st->sign == 0) break;
+      if (change <= 1e-12 * PetscMax(ctx->obstacle.friction_static, 1e-300) || !friction) break;
       PetscCheck(st->iterations < 50, ctx->comm, PETSC_ERR_NOT_CONVERGED, "The steady state's mu(v) did not settle in 50 passes (last change %g)", (double)change);
     }
-    PetscCall(VecDestroyVecs(st->n, &wk));
+    PetscCall(VecDestroyVecs(m, &wk));
+    PetscCall(PetscFree2(G, d));
     /* every Gamma_C node outside the candidates above the sheet? */
     gmin = PETSC_MAX_REAL;
     PetscCall(VecGetLocalSize(uf, &n));
@@ -248,13 +418,7 @@ PetscErrorCode RollerSteadySolve(Roller ctx, Mat Klab, RollerSteady *st)
       PetscCall(VecRestoreArrayRead(st->u, &u));
     }
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &gmin, 1, MPIU_REAL, MPIU_MIN, ctx->comm));
-    if (gmin >= 0) {
-      vmin = PETSC_MAX_REAL;
-      for (PetscInt j = 0; j < st->n; ++j)
-        if (st->normal[j] > 0) vmin = PetscMin(vmin, st->sign * st->slip[j]);
-      PetscCheck(st->sign == 0 || vmin > 0, ctx->comm, PETSC_ERR_SUP, "-modes with -friction: the steady state would stick at some contact node (slip speed %g against the sliding direction): steady rolling with stick zones is not built, only full sliding (choose -sheet_speed further from omega r_outer)", (double)(st->sign * vmin));
-      break;
-    }
+    if (gmin >= 0) break;
     PetscCheck(attempt < 8, ctx->comm, PETSC_ERR_PLIB, "The steady state penetrates the sheet outside every candidate zone tried");
     reach *= 2;
     PetscCall(RollerSteadyDestroy(st, PETSC_FALSE));
@@ -269,7 +433,7 @@ PetscErrorCode RollerSteadyDestroy(RollerSteady *st, PetscBool all)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscFree2(st->dof, st->xy));
-  PetscCall(PetscFree5(st->normal, st->mu, st->dmu, st->slip, st->gap));
+  PetscCall(PetscFree7(st->normal, st->tangent, st->mu, st->dmu, st->slip, st->gap, st->state));
   PetscCall(VecScatterDestroy(&st->scatter));
   PetscCall(VecDestroy(&st->red));
   if (all) PetscCall(VecDestroy(&st->u));
@@ -277,33 +441,33 @@ PetscErrorCode RollerSteadyDestroy(RollerSteady *st, PetscBool all)
 }
 
 /* The steady state in numbers: printed, and with -modes_steady_csv F one row per candidate node
-   x,y,normal_force,tangential_force,gap,slip_velocity,mu (rank 0 writes F.part, renamed when complete). */
+   x,y,normal_force,tangential_force,gap,slip_velocity,mu,state (state 0 off the sheet, 1 stick, 2 slip;
+   rank 0 writes F.part, renamed when complete). */
 PetscErrorCode RollerSteadyReport(Roller ctx, const RollerSteady *st)
 {
   PetscReal N = 0, T = 0, a0 = PETSC_MAX_REAL, a1 = -PETSC_MAX_REAL;
-  PetscInt  active = 0;
+  PetscInt  count[3] = {0, 0, 0};
   char      part[PETSC_MAX_PATH_LEN];
   FILE     *fp;
 
   PetscFunctionBeginUser;
   for (PetscInt j = 0; j < st->n; ++j) {
-    if (st->normal[j] <= 0) continue;
+    ++count[st->state[j]];
+    if (!st->state[j]) continue;
     N += st->normal[j];
-    T += -st->sign * st->mu[j] * st->normal[j];
+    T += st->tangent[j];
     a0 = PetscMin(a0, st->xy[2 * j]);
     a1 = PetscMax(a1, st->xy[2 * j]);
-    ++active;
   }
   if (!ctx->ts.quiet)
-    PetscCall(PetscPrintf(ctx->comm, "roller: steady %s state (lab frame): %" PetscInt_FMT " of %" PetscInt_FMT " candidate nodes in contact over x in [%g, %g], normal force %.6g, friction force %.6g, slip speed %g, %" PetscInt_FMT " mu(v) passes\n", st->sign != 0 ? "sliding" : "frictionless rolling", active, st->n, (double)a0, (double)a1, (double)N, (double)T,
-                          (double)(ctx->rotation.omega * ctx->mesh.r_outer - ctx->obstacle.sheet_speed), st->iterations));
+    PetscCall(PetscPrintf(ctx->comm, "roller: steady %s state (lab frame): %" PetscInt_FMT " of %" PetscInt_FMT " candidate nodes in contact over x in [%g, %g] (%" PetscInt_FMT " stick, %" PetscInt_FMT " slip), normal force %.6g, friction force %.6g, nominal slip speed %g, %" PetscInt_FMT " mu(v) passes\n",
+                          T == 0 ? "frictionless rolling" : (count[1] ? "rolling" : "sliding"), count[1] + count[2], st->n, (double)a0, (double)a1, count[1], count[2], (double)N, (double)T, (double)(ctx->rotation.omega * ctx->mesh.r_outer - ctx->obstacle.sheet_speed), st->iterations));
   if (!ctx->eig.steady_csv[0]) PetscFunctionReturn(0);
   PetscCall(RollerPartFileOpen(ctx->comm, ctx->eig.steady_csv, "-modes_steady_csv", part, sizeof(part), &fp));
   if (fp) {
-    PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "x,y,normal_force,tangential_force,gap,slip_velocity,mu\n"));
+    PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "x,y,normal_force,tangential_force,gap,slip_velocity,mu,state\n"));
     for (PetscInt j = 0; j < st->n; ++j)
-      PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", (double)st->xy[2 * j], (double)st->xy[2 * j + 1], (double)st->normal[j], (double)(-st->sign * st->mu[j] * st->normal[j]), (double)st->gap[j], (double)st->slip[j],
-                             (double)st->mu[j]));
+      PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT "\n", (double)st->xy[2 * j], (double)st->xy[2 * j + 1], (double)st->normal[j], (double)st->tangent[j], (double)st->gap[j], (double)st->slip[j], (double)st->mu[j], st->state[j]));
   }
   PetscCall(RollerPartFileClose(ctx->comm, &fp, part, ctx->eig.steady_csv));
   PetscFunctionReturn(0);
