@@ -60,6 +60,25 @@ static PetscErrorCode Normalize(Vec xr, Vec xi, Vec w)
   PetscFunctionReturn(0);
 }
 
+/* x = the reduced vector z's kept dofs (its leading local entries; the stick multipliers after them dropped), 0 on
+   the dofs removed. */
+static PetscErrorCode KeptToFull(IS kept, Vec z, Vec x)
+{
+  PetscScalar *a;
+  PetscInt     nloc;
+  Vec          t;
+
+  PetscFunctionBeginUser;
+  PetscCall(ISGetLocalSize(kept, &nloc));
+  PetscCall(VecGetArray(z, &a));
+  PetscCall(VecCreateMPIWithArray(PetscObjectComm((PetscObject)z), 1, nloc, PETSC_DECIDE, a, &t));
+  PetscCall(VecZeroEntries(x));
+  PetscCall(VecISCopy(x, kept, SCATTER_FORWARD, t));
+  PetscCall(VecDestroy(&t));
+  PetscCall(VecRestoreArray(z, &a));
+  PetscFunctionReturn(0);
+}
+
 /* The eigenvalue CSV, rank 0, as F.part renamed when complete. */
 static PetscErrorCode WriteCsv(Roller ctx)
 {
@@ -85,7 +104,8 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   RollerPEP            pep;
   RollerModeClassifier cls;
   Vec                 *xr, *xi, w, zr = NULL, zi = NULL, steady = NULL;
-  IS                   kept = NULL; /* with -obstacle: the dofs of the reduced problem */
+  IS                   kept   = NULL; /* with -obstacle: the dofs of the reduced problem */
+  PetscInt             nstick = 0;    /* and the stick nodes' multipliers after them */
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_MODES]));
@@ -96,7 +116,7 @@ PetscErrorCode RollerModesSolve(Roller ctx)
 
     PetscCall(RollerSteadySolve(ctx, K, &st));
     PetscCall(RollerSteadyReport(ctx, &st));
-    if (e->nev) PetscCall(RollerSquealOperators(ctx, &st, M, C, K, &Mr, &Cr, &Kr, &kept));
+    if (e->nev) PetscCall(RollerSquealOperators(ctx, &st, M, C, K, &Mr, &Cr, &Kr, &kept, &nstick));
     steady = st.u; /* kept for the shapes' file */
     st.u   = NULL;
     PetscCall(RollerSteadyDestroy(&st, PETSC_TRUE));
@@ -113,7 +133,7 @@ PetscErrorCode RollerModesSolve(Roller ctx)
     C = Cr;
     K = Kr;
   }
-  PetscCall(RollerPEPCreate(ctx->comm, M, C, K, e->nev, &pep));
+  PetscCall(RollerPEPCreate(ctx->comm, M, C, K, e->nev, nstick ? PETSC_TRUE : PETSC_FALSE, &pep));
   PetscCall(RollerPEPSolve(pep, &e->n));
   PetscCall(RollerModeClassifierCreate(ctx, &cls));
   PetscCall(PetscFree5(e->order, e->wave, e->re, e->im, e->error));
@@ -127,10 +147,8 @@ PetscErrorCode RollerModesSolve(Roller ctx)
     if (kept) { /* the reduced vector into the full space; the active nodes' normal dofs are 0 */
       if (!zr) PetscCall(MatCreateVecs(M, &zr, &zi));
       PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], zr, zi));
-      PetscCall(VecZeroEntries(xr[j]));
-      PetscCall(VecZeroEntries(xi[j]));
-      PetscCall(VecISCopy(xr[j], kept, SCATTER_FORWARD, zr));
-      PetscCall(VecISCopy(xi[j], kept, SCATTER_FORWARD, zi));
+      PetscCall(KeptToFull(kept, zr, xr[j]));
+      PetscCall(KeptToFull(kept, zi, xi[j]));
     } else PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], xr[j], xi[j]));
     PetscCall(RollerPEPGetError(pep, j, &e->error[j]));
     PetscCall(Normalize(xr[j], xi[j], w));

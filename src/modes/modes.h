@@ -15,10 +15,10 @@
 
 /* pep.c: the converged eigenpairs with im >= 0 (one of each conjugate pair), sorted by frequency im, then re. */
 typedef struct _n_RollerPEP *RollerPEP;
-PETSC_INTERN PetscErrorCode  RollerPEPCreate(MPI_Comm, Mat, Mat, Mat, PetscInt, RollerPEP *);           /* M, C, K, nev (-pep_* may override) */
-PETSC_INTERN PetscErrorCode  RollerPEPSolve(RollerPEP, PetscInt *);                                     /* the number of pairs kept */
-PETSC_INTERN PetscErrorCode  RollerPEPGetPair(RollerPEP, PetscInt, PetscReal *, PetscReal *, Vec, Vec); /* re, im, x_re, x_im (vectors may be NULL) */
-PETSC_INTERN PetscErrorCode  RollerPEPGetError(RollerPEP, PetscInt, PetscReal *);                       /* backward error of pair i */
+PETSC_INTERN PetscErrorCode  RollerPEPCreate(MPI_Comm, Mat, Mat, Mat, PetscInt, PetscBool, RollerPEP *); /* M, C, K, nev (-pep_* may override), pivoting LU */
+PETSC_INTERN PetscErrorCode  RollerPEPSolve(RollerPEP, PetscInt *);                                      /* the number of pairs kept */
+PETSC_INTERN PetscErrorCode  RollerPEPGetPair(RollerPEP, PetscInt, PetscReal *, PetscReal *, Vec, Vec);  /* re, im, x_re, x_im (vectors may be NULL) */
+PETSC_INTERN PetscErrorCode  RollerPEPGetError(RollerPEP, PetscInt, PetscReal *);                        /* backward error of pair i */
 PETSC_INTERN PetscErrorCode  RollerPEPDestroy(RollerPEP *);
 
 /* operators.c: the (M, C, K) of the linearized free annulus in ctx->eig.frame (docs/squeal.md section 1) */
@@ -43,14 +43,15 @@ typedef struct {
   Vec        u, red;
   VecScatter scatter;
 } RollerSteady;
-PETSC_INTERN PetscErrorCode RollerSteadySolve(Roller, Mat, RollerSteady *); /* with K_lab */
+PETSC_INTERN PetscErrorCode RollerSteadySolve(Roller, Mat, RollerSteady *);                                                      /* with K_lab */
 PETSC_INTERN PetscErrorCode RollerSteadyAngularDerivative(const RollerSteady *, PetscReal, PetscInt, PetscInt[3], PetscReal[3]); /* upwind for omega */
 PETSC_INTERN PetscErrorCode RollerSteadyDestroy(RollerSteady *, PetscBool);
 PETSC_INTERN PetscErrorCode RollerSteadyReport(Roller, const RollerSteady *); /* printed, and -modes_steady_csv */
 
 /* squeal.c: the linearization about the steady state: the reduced (M, C, K) on the dofs but the contact nodes'
-   normal ones, and the map of a reduced vector back to the full space */
-PETSC_INTERN PetscErrorCode RollerSquealOperators(Roller, const RollerSteady *, Mat, Mat, Mat, Mat *, Mat *, Mat *, IS *);
+   normal ones (and after them, on the last rank, one multiplier per stick node: their number), and the map of a
+   reduced vector's first part back to the full space */
+PETSC_INTERN PetscErrorCode RollerSquealOperators(Roller, const RollerSteady *, Mat, Mat, Mat, Mat *, Mat *, Mat *, IS *, PetscInt *);
 
 /* modes.c */
 PETSC_INTERN PetscErrorCode RollerModesSetFromOptions(Roller);

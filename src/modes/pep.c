@@ -12,7 +12,7 @@ struct _n_RollerPEP {
   PetscReal *re, *im;
 };
 
-PetscErrorCode RollerPEPCreate(MPI_Comm comm, Mat M, Mat C, Mat K, PetscInt nev, RollerPEP *p)
+PetscErrorCode RollerPEPCreate(MPI_Comm comm, Mat M, Mat C, Mat K, PetscInt nev, PetscBool pivot, RollerPEP *p)
 {
   RollerPEP r;
   Mat       ops[3] = {K, C, M};
@@ -35,6 +35,15 @@ PetscErrorCode RollerPEPCreate(MPI_Comm comm, Mat M, Mat C, Mat K, PetscInt nev,
   PetscCall(STSetType(st, STSINVERT));
   PetscCall(STGetKSP(st, &ksp));
   PetscCall(RollerDirectSolverDefaults(ksp, PCLU));
+  if (pivot) { /* a saddle point (zero diagonal): LU with pivoting, SuperLU on one rank (MUMPS and UMFPACK took 5-10
+                   times longer on the feeder's 20k unknowns), MUMPS in parallel */
+    PC          pc;
+    PetscMPIInt size;
+
+    PetscCallMPI(MPI_Comm_size(comm, &size));
+    PetscCall(KSPGetPC(ksp, &pc));
+    PetscCall(PCFactorSetMatSolverType(pc, size > 1 ? MATSOLVERMUMPS : MATSOLVERSUPERLU));
+  }
   PetscCall(PEPSetFromOptions(r->pep));
   *p = r;
   PetscFunctionReturn(0);

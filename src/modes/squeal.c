@@ -10,10 +10,115 @@
                                              mass and gyroscopic coupling: mode coupling, flutter)
      C(a,x; a,x) += N_a mu'_a,  K(a,x; .) += N_a mu'_a theta' d_phi   (velocity weakening mu' < 0: negative damping)
      rows and columns a,y removed.
-   The same three operations on M, C and K give the reduced quadratic eigenproblem on the kept dofs. */
+   A node that sticks (the rolling state's stick zone) instead moves with the sheet: its slip speed's perturbation
+   vanishes, (lambda + theta' d_phi) du_a,x = 0, with its own tangential force perturbation dT_a as the multiplier:
+     row a,x  -=  dT_a  (K),     constraint row of dT_a:  lambda du_a,x (C) + theta' d_phi du_a,x (K) = 0,
+   appended after the kept dofs (on the last rank; zero mass: the pencil is singular at infinity, harmless to
+   shift-and-invert, whose LU then needs pivoting: MUMPS).
+   The same operations on M, C and K give the reduced quadratic eigenproblem on the kept dofs (and the stick
+   nodes' multipliers). */
 #include "modes/modes.h"
 
-PetscErrorCode RollerSquealOperators(Roller ctx, const RollerSteady *st, Mat M, Mat C, Mat K, Mat *Mr, Mat *Cr, Mat *Kr, IS *kept)
+/* B = [A 0; 0 0] with ns rows and columns appended on the last rank, plus the entries (rows[k], cols[k], vals[k])
+   (global indices of B; set by any rank). */
+static PetscErrorCode Augment(Mat A, PetscInt ns, PetscInt ne, const PetscInt rows[], const PetscInt cols[], const PetscScalar vals[], Mat *B)
+{
+  MPI_Comm    comm = PetscObjectComm((PetscObject)A);
+  PetscMPIInt rank, size;
+  PetscInt    lo, hi, m, N, *nnz;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(MatGetOwnershipRange(A, &lo, &hi));
+  PetscCall(MatGetSize(A, &N, NULL));
+  m = hi - lo + (rank == size - 1 ? ns : 0);
+  PetscCall(PetscMalloc1(m, &nnz));
+  for (PetscInt i = 0; i < m; ++i) {
+    PetscInt ncols = 0;
+
+    if (lo + i < hi) PetscCall(MatGetRow(A, lo + i, &ncols, NULL, NULL));
+    nnz[i] = PetscMin(ncols + 1 + (i >= hi - lo ? 8 : 0), N + ns);
+    if (lo + i < hi) PetscCall(MatRestoreRow(A, lo + i, &ncols, NULL, NULL));
+  }
+  PetscCall(MatCreateAIJ(comm, m, m, N + ns, N + ns, 0, nnz, 0, nnz, B));
+  PetscCall(MatSetOption(*B, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
+  PetscCall(PetscFree(nnz));
+  for (PetscInt i = lo; i < hi; ++i) {
+    const PetscInt    *c;
+    const PetscScalar *v;
+    PetscInt           ncols;
+
+    PetscCall(MatGetRow(A, i, &ncols, &c, &v));
+    PetscCall(MatSetValues(*B, 1, &i, ncols, c, v, INSERT_VALUES));
+    PetscCall(MatRestoreRow(A, i, &ncols, &c, &v));
+  }
+  PetscCall(MatAssemblyBegin(*B, MAT_FLUSH_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*B, MAT_FLUSH_ASSEMBLY));
+  for (PetscInt k = 0; k < ne; ++k) PetscCall(MatSetValue(*B, rows[k], cols[k], vals[k], ADD_VALUES));
+  PetscCall(MatAssemblyBegin(*B, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*B, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+/* The stick nodes' multipliers: their entries in K (the force, the transport's d_phi part) and C (its lambda part). */
+static PetscErrorCode StickMultipliers(Roller ctx, const RollerSteady *st, IS kept, PetscInt nk, PetscInt *ns, PetscInt *nek, PetscInt **rk, PetscInt **ck, PetscScalar **vk, PetscInt *nec, PetscInt **rc, PetscInt **cc, PetscScalar **vc)
+{
+  const PetscInt *idx;
+  PetscInt        nloc, kstart, *red, js = 0;
+  PetscMPIInt     rank;
+
+  PetscFunctionBeginUser;
+  /* the reduced index of every candidate's x dof (-1 where not kept), known on every rank */
+  PetscCall(PetscMalloc1(st->n, &red));
+  PetscCall(ISGetLocalSize(kept, &nloc));
+  PetscCall(ISGetIndices(kept, &idx));
+  PetscCallMPI(MPI_Scan(&nloc, &kstart, 1, MPIU_INT, MPI_SUM, ctx->comm));
+  kstart -= nloc;
+  for (PetscInt j = 0; j < st->n; ++j) {
+    PetscInt p = -1;
+
+    for (PetscInt i = 0; i < nloc && p < 0; ++i)
+      if (idx[i] == st->dof[j]) p = kstart + i;
+    red[j] = p;
+  }
+  PetscCall(ISRestoreIndices(kept, &idx));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, red, st->n, MPIU_INT, MPI_MAX, ctx->comm));
+  *ns = 0;
+  for (PetscInt j = 0; j < st->n; ++j)
+    if (st->state[j] == 1) ++*ns;
+  PetscCall(PetscMalloc3(4 * *ns, rk, 4 * *ns, ck, 4 * *ns, vk));
+  PetscCall(PetscMalloc3(*ns, rc, *ns, cc, *ns, vc));
+  *nek = *nec = 0;
+  PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
+  for (PetscInt j = 0; j < st->n; ++j) {
+    PetscInt  nb[3];
+    PetscReal c[3];
+
+    if (st->state[j] != 1) continue;
+    if (!rank) { /* one rank adds each multiplier's entries */
+      PetscCall(RollerSteadyAngularDerivative(st, ctx->rotation.omega, j, nb, c));
+      (*rk)[*nek]     = red[j];
+      (*ck)[*nek]     = nk + js;
+      (*vk)[(*nek)++] = -1.0;
+      for (PetscInt k = 0; k < 3; ++k) {
+        if (c[k] == 0) continue;
+        PetscCheck(red[nb[k]] >= 0, ctx->comm, PETSC_ERR_PLIB, "A stick node's neighbour on Gamma_C is not kept");
+        (*rk)[*nek]     = nk + js;
+        (*ck)[*nek]     = red[nb[k]];
+        (*vk)[(*nek)++] = ctx->rotation.omega * c[k];
+      }
+      (*rc)[*nec]     = nk + js;
+      (*cc)[*nec]     = red[j];
+      (*vc)[(*nec)++] = 1.0;
+    }
+    ++js;
+  }
+  PetscCall(PetscFree(red));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerSquealOperators(Roller ctx, const RollerSteady *st, Mat M, Mat C, Mat K, Mat *Mr, Mat *Cr, Mat *Kr, IS *kept, PetscInt *nstick)
 {
   const PetscReal tol  = 1e-12;
   PetscReal       nmax = 0;
@@ -33,7 +138,7 @@ PetscErrorCode RollerSquealOperators(Roller ctx, const RollerSteady *st, Mat M, 
     const PetscInt a = st->dof[j];
 
     if (st->normal[j] <= tol * nmax || a < lo || a >= hi) continue;
-    if (st->tangent[j] != 0) PetscCall(MatSetValue(R, a, a + 1, -st->tangent[j] / st->normal[j], INSERT_VALUES)); /* s mu_a */
+    if (st->state[j] == 2 && st->tangent[j] != 0) PetscCall(MatSetValue(R, a, a + 1, -st->tangent[j] / st->normal[j], INSERT_VALUES)); /* s mu_a */
     drop[a + 1 - lo] = PETSC_TRUE;
   }
   PetscCall(MatAssemblyBegin(R, MAT_FINAL_ASSEMBLY));
@@ -49,7 +154,7 @@ PetscErrorCode RollerSquealOperators(Roller ctx, const RollerSteady *st, Mat M, 
     PetscInt       nb[3], cols[3];
     PetscReal      c[3], vals[3];
 
-    if (st->normal[j] <= tol * nmax || a < lo || a >= hi || st->dmu[j] == 0) continue;
+    if (st->state[j] != 2 || st->normal[j] <= tol * nmax || a < lo || a >= hi || st->dmu[j] == 0) continue;
     PetscCall(MatSetValue(RC, a, a, st->normal[j] * st->dmu[j], ADD_VALUES));
     PetscCall(RollerSteadyAngularDerivative(st, ctx->rotation.omega, j, nb, c));
     for (PetscInt k = 0; k < 3; ++k) {
@@ -70,6 +175,28 @@ PetscErrorCode RollerSquealOperators(Roller ctx, const RollerSteady *st, Mat M, 
   PetscCall(MatCreateSubMatrix(RM, *kept, *kept, MAT_INITIAL_MATRIX, Mr));
   PetscCall(MatCreateSubMatrix(RC, *kept, *kept, MAT_INITIAL_MATRIX, Cr));
   PetscCall(MatCreateSubMatrix(RK, *kept, *kept, MAT_INITIAL_MATRIX, Kr));
+  {
+    PetscInt     nk, ns = 0, nek = 0, nec = 0, *rk, *ck, *rc, *cc;
+    PetscScalar *vk, *vc;
+    Mat          A;
+
+    PetscCall(ISGetSize(*kept, &nk));
+    PetscCall(StickMultipliers(ctx, st, *kept, nk, &ns, &nek, &rk, &ck, &vk, &nec, &rc, &cc, &vc));
+    *nstick = ns;
+    if (ns) {
+      PetscCall(Augment(*Mr, ns, 0, NULL, NULL, NULL, &A));
+      PetscCall(MatDestroy(Mr));
+      *Mr = A;
+      PetscCall(Augment(*Cr, ns, nec, rc, cc, vc, &A));
+      PetscCall(MatDestroy(Cr));
+      *Cr = A;
+      PetscCall(Augment(*Kr, ns, nek, rk, ck, vk, &A));
+      PetscCall(MatDestroy(Kr));
+      *Kr = A;
+    }
+    PetscCall(PetscFree3(rk, ck, vk));
+    PetscCall(PetscFree3(rc, cc, vc));
+  }
   PetscCall(PetscFree(drop));
   PetscCall(MatDestroy(&R));
   PetscCall(MatDestroy(&RM));

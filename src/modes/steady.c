@@ -339,7 +339,7 @@ PetscErrorCode RollerSteadySolve(Roller ctx, Mat Klab, RollerSteady *st)
 {
   const PetscReal g = ctx->obstacle.depth - ctx->mesh.r_outer, w = ctx->rotation.omega, rho = ctx->material.density;
   const PetscBool friction = ctx->obstacle.friction > 0 || ctx->obstacle.friction_static > 0 ? PETSC_TRUE : PETSC_FALSE;
-  const PetscReal vs = PetscMax(PetscAbsReal(w) * ctx->mesh.r_outer, PetscAbsReal(ctx->obstacle.sheet_speed)) / ctx->mesh.r_outer > 0 ? PetscMax(PetscAbsReal(w) * ctx->mesh.r_outer, PetscAbsReal(ctx->obstacle.sheet_speed)) / ctx->mesh.r_outer : 1.0; /* slips over vs: lengths */
+  const PetscReal vs       = PetscMax(PetscAbsReal(w) * ctx->mesh.r_outer, PetscAbsReal(ctx->obstacle.sheet_speed)) / ctx->mesh.r_outer > 0 ? PetscMax(PetscAbsReal(w) * ctx->mesh.r_outer, PetscAbsReal(ctx->obstacle.sheet_speed)) / ctx->mesh.r_outer : 1.0; /* slips over vs: lengths */
   PetscReal       reach = PetscMax(ctx->obstacle.depth, 1e-3 * ctx->mesh.r_outer), v0 = w * ctx->mesh.r_outer - ctx->obstacle.sheet_speed;
   KSP             ksp;
   Vec             uf;
@@ -460,14 +460,15 @@ PetscErrorCode RollerSteadyReport(Roller ctx, const RollerSteady *st)
     a1 = PetscMax(a1, st->xy[2 * j]);
   }
   if (!ctx->ts.quiet)
-    PetscCall(PetscPrintf(ctx->comm, "roller: steady %s state (lab frame): %" PetscInt_FMT " of %" PetscInt_FMT " candidate nodes in contact over x in [%g, %g] (%" PetscInt_FMT " stick, %" PetscInt_FMT " slip), normal force %.6g, friction force %.6g, nominal slip speed %g, %" PetscInt_FMT " mu(v) passes\n",
-                          T == 0 ? "frictionless rolling" : (count[1] ? "rolling" : "sliding"), count[1] + count[2], st->n, (double)a0, (double)a1, count[1], count[2], (double)N, (double)T, (double)(ctx->rotation.omega * ctx->mesh.r_outer - ctx->obstacle.sheet_speed), st->iterations));
+    PetscCall(PetscPrintf(ctx->comm, "roller: steady %s state (lab frame): %" PetscInt_FMT " of %" PetscInt_FMT " candidate nodes in contact over x in [%g, %g] (%" PetscInt_FMT " stick, %" PetscInt_FMT " slip), normal force %.6g, friction force %.6g, nominal slip speed %g, %" PetscInt_FMT " mu(v) passes\n", T == 0 ? "frictionless rolling" : (count[1] ? "rolling" : "sliding"), count[1] + count[2], st->n, (double)a0, (double)a1, count[1], count[2], (double)N, (double)T,
+                          (double)(ctx->rotation.omega * ctx->mesh.r_outer - ctx->obstacle.sheet_speed), st->iterations));
   if (!ctx->eig.steady_csv[0]) PetscFunctionReturn(0);
   PetscCall(RollerPartFileOpen(ctx->comm, ctx->eig.steady_csv, "-modes_steady_csv", part, sizeof(part), &fp));
   if (fp) {
     PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "x,y,normal_force,tangential_force,gap,slip_velocity,mu,state\n"));
     for (PetscInt j = 0; j < st->n; ++j)
-      PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT "\n", (double)st->xy[2 * j], (double)st->xy[2 * j + 1], (double)st->normal[j], (double)st->tangent[j], (double)st->gap[j], (double)st->slip[j], (double)st->mu[j], st->state[j]));
+      PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT "\n", (double)st->xy[2 * j], (double)st->xy[2 * j + 1], (double)st->normal[j], (double)st->tangent[j], (double)st->gap[j], (double)st->slip[j],
+                             (double)st->mu[j], st->state[j]));
   }
   PetscCall(RollerPartFileClose(ctx->comm, &fp, part, ctx->eig.steady_csv));
   PetscFunctionReturn(0);
