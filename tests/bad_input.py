@@ -53,7 +53,6 @@ cases = [
     # -modes (docs/squeal.md)
     (["-modes", "-modes_nev", "0"], "-modes_nev", "0"),
     (["-modes", "-obstacle", "-modes_frame", "rotating"], "-modes_frame", "rotating"),
-    (["-modes", "-modes_frame", "lab", "-viscosity", "0.01"], "-modes_frame lab", "0.01"),
     (["-modes", "-obstacle", "-contact_mass", "redistributed"], "-contact_mass", "redistributed"),
     (["-modes", "-theta_a", "0.1"], "-modes", "-theta_a"),
     (["-modes", "-obstacle", "-friction", "0.5", "-sheet_speed", "0.15707963267948966"], "-sheet_speed", "0.15708"),
