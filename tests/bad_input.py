@@ -53,7 +53,6 @@ cases = [
     # -modes (docs/squeal.md)
     (["-modes", "-modes_nev", "0"], "-modes_nev", "0"),
     (["-modes", "-obstacle", "-modes_frame", "rotating"], "-modes_frame", "rotating"),
-    (["-modes", "-modes_frame", "lab", "-viscosity", "0.01"], "-modes_frame lab", "0.01"),
     (["-modes", "-obstacle", "-contact_mass", "redistributed"], "-contact_mass", "redistributed"),
     (["-modes", "-theta_a", "0.1"], "-modes", "-theta_a"),
     (["-initial_condition", "mode"], "-initial_condition mode", "-initial_mode_file"),

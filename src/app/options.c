@@ -112,8 +112,6 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCheck(!(ctx->eig.on && ctx->obstacle.on && ctx->eig.frame != ROLLER_FRAME_LAB), ctx->comm, PETSC_ERR_ARG_INCOMP, "-modes with -obstacle linearizes about the steady sliding state, which is steady only in the lab frame: -modes_frame lab, not %s",
              RollerFrames[ctx->eig.frame]);
   PetscCheck(!(ctx->eig.on && ctx->disc.contact_mass != ROLLER_CONTACT_MASS_CONSISTENT), ctx->comm, PETSC_ERR_ARG_INCOMP, "-modes takes the consistent mass (-contact_mass consistent), not %s", RollerContactMasses[ctx->disc.contact_mass]);
-  PetscCheck(!(ctx->eig.on && ctx->eig.frame == ROLLER_FRAME_LAB && (ctx->material.viscosity != 0 || ctx->disc.damping != 0)), ctx->comm, PETSC_ERR_SUP, "-modes_frame lab with -viscosity %g or -damping %g: the lab frame's damping operators are not built (use -modes_frame rotating)",
-             (double)ctx->material.viscosity, (double)ctx->disc.damping);
   PetscCheck(!(ctx->eig.on && (ctx->rotation.a != 0 || ctx->ck.restart[0] || ctx->disc.static_solve)), ctx->comm, PETSC_ERR_ARG_INCOMP, "-modes linearizes about steady rotation: it takes no -theta_a, -restart or -static");
   if (ctx->disc.static_solve) { /* one step from rest to t = max_time with A = K: the right-hand side is 0 */
     ctx->ts.dt        = ctx->ts.max_time;

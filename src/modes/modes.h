@@ -1,6 +1,7 @@
 /* The modes layer (docs/squeal.md): the quadratic eigenproblem of the annulus by SLEPc's PEP.
      pep.c        (lambda^2 M + lambda C + K) x = 0 for any (M, C, K): TOAR, shift-and-invert, pairs sorted by frequency
      operators.c  M, C, K of the free rotating annulus in the co-rotating or the lab (Eulerian) frame
+     rotational.c the lab frame's damping of the objective rate: A_L = a(L u, v) (cells and edges), B_L = (L u, v)
      classify.c   the circumferential order n and the travelling direction of a mode shape
      steady.c     the steady rolling/sliding state pressed by the sheet (lab frame), one static contact problem
      squeal.c     the linearization about it: contact, friction (non-symmetric), velocity weakening (damping)
@@ -23,6 +24,11 @@ PETSC_INTERN PetscErrorCode  RollerPEPDestroy(RollerPEP *);
 
 /* operators.c: the (M, C, K) of the linearized free annulus in ctx->eig.frame (docs/squeal.md section 1) */
 PETSC_INTERN PetscErrorCode RollerModeOperators(Roller, Mat *, Mat *, Mat *);
+
+/* rotational.c: the damped lab frame's forms of the rotational rate L u = d_phi u - J u (docs/squeal.md section 1.1) */
+PETSC_INTERN PetscErrorCode RollerAssembleRotationalElastic(Roller, Mat *, PetscReal *); /* A_L = a(L u, v): cells + edges; the cells' skewness defect */
+PETSC_INTERN PetscErrorCode RollerAssembleRotationalMass(Roller, Mat *);                 /* B_L = (L u, v) = D + G */
+PETSC_INTERN PetscErrorCode RollerSkewPart(Mat, PetscReal *);                            /* A <- (A - A^T)/2; ||A + A^T|| / ||A|| */
 
 /* classify.c: the dominant circumferential order n >= 0 and the wave (forward: travelling with the rotation) of
    the mode x_re + i x_im, e^{lambda t}, im >= 0; from the mass-weighted Fourier spectrum over the nodes */
