@@ -25,11 +25,18 @@ def run(args, nproc=1, check=True):
 
 
 def read_csv(path):
-    """The monitor CSV as a dict of numpy arrays keyed by column name."""
+    """A CSV (the monitor's, the modes') as a dict of numpy arrays keyed by column name (strings where not numbers)."""
     with open(path) as f:
         rows = list(csv.reader(f))
     head, body = rows[0], rows[1:]
-    return {name: np.array([float(r[i]) for r in body]) for i, name in enumerate(head)}
+
+    def column(i):
+        try:
+            return np.array([float(r[i]) for r in body])
+        except ValueError:
+            return np.array([r[i] for r in body])
+
+    return {name: column(i) for i, name in enumerate(head)}
 
 
 def rel_max_error(d, ref, q):

@@ -130,7 +130,7 @@ static PetscErrorCode CellTerms(Roller ctx, DM dm, PetscFE fe, PetscFE cfe[2], M
     PetscScalar       *coords;
     PetscBool          isDG;
     PetscInt           Ncx;
-    PetscFE            cf;
+    PetscFE            cf = NULL;
 
     PetscCall(DMPlexGetCellCoordinates(dm, cell, &isDG, &Ncx, &array, &coords));
     PetscCall(CoordinateElement(Ncx, cfe, &cf));
@@ -202,7 +202,7 @@ static PetscErrorCode EdgeTerms(Roller ctx, DM dm, PetscFE fe, PetscFE cfe[2], M
       PetscBool          isDG;
       PetscReal          p[(NQ + 1) * 2];
       PetscTabulation    T, Tx;
-      PetscFE            cf;
+      PetscFE            cf = NULL;
 
       PetscCall(DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &ncl, &closure));
       for (PetscInt k = 0; k < ncl; ++k) {
