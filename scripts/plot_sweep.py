@@ -92,6 +92,7 @@ def main():
     ap.add_argument("--out", help="the figure (default: the CSV's name with .png)")
     ap.add_argument("--coalesce-tol", type=float, default=0.01, help="relative frequency distance of a coalescing pair")
     ap.add_argument("--growth-tol", type=float, default=1e-6, help="growth rate, relative to |lambda|, that counts as positive")
+    ap.add_argument("--growth-ylim", metavar="LO,HI", help="the growth panel's range (strongly damped modes can hide the growing ones)")
     a = ap.parse_args()
     params, rows = read(a.csv)
     if not params:
@@ -134,6 +135,8 @@ def main():
     kind = {"omega": "Campbell diagram", "friction": "squeal stability map"}.get(x, "eigenvalues")
     top.set_title(f"{kind}: eigenvalues against {x}" + (f" ({held})" if held else ""), fontsize=10)
     top.set_ylabel("frequency Im(lambda)")
+    if a.growth_ylim:
+        bottom.set_ylim(*(float(v) for v in a.growth_ylim.split(",")))
     bottom.set_ylabel("growth rate Re(lambda)")
     bottom.set_xlabel(x)
     top.legend(fontsize=8, loc="upper left")

@@ -11,7 +11,7 @@
 
 /* The scene options a sweep may vary: one row each (and nothing else to add for a new one: the case sets the option
    by name, the scene's own options block reads and validates it). */
-static const char *const SweepParams[] = {"omega", "young", "friction", "obstacle_depth"};
+static const char *const SweepParams[] = {"omega", "young", "friction", "obstacle_depth", "sheet_speed"};
 #define NPARAMS ((PetscInt)(sizeof(SweepParams) / sizeof(SweepParams[0])))
 
 /* The outputs of a single run, which would collide between the cases: the sweep's CSV has every eigenvalue. */
@@ -296,7 +296,7 @@ PetscErrorCode RollerSweep(MPI_Comm comm)
   PetscFunctionBeginUser;
   PetscCall(RollerSweepSetFromOptions(comm, &plan));
   PetscCheck(plan.csv[0], comm, PETSC_ERR_ARG_WRONG, "-sweep needs the name of its CSV, -sweep F.csv");
-  PetscCheck(plan.nparams, comm, PETSC_ERR_ARG_WRONG, "-sweep %s: nothing to sweep; give -sweep_<name> v1,v2,... or -sweep_<name>_range a,b,n for <name> one of omega, young, friction, obstacle_depth", plan.csv);
+  PetscCheck(plan.nparams, comm, PETSC_ERR_ARG_WRONG, "-sweep %s: nothing to sweep; give -sweep_<name> v1,v2,... or -sweep_<name>_range a,b,n for <name> one of omega, young, friction, obstacle_depth, sheet_speed", plan.csv);
   PetscCall(PetscOptionsGetBool(NULL, NULL, "-modes", &modes, NULL));
   PetscCheck(modes, comm, PETSC_ERR_ARG_WRONG, "-sweep %s maps the eigenvalues of every case: give -modes too", plan.csv);
   PetscCall(RollerJoinPath(part, sizeof(part), plan.csv, ".part", "-sweep"));
