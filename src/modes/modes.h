@@ -4,6 +4,7 @@
      rotational.c the lab frame's damping of the objective rate: A_L = a(L u, v) (cells and edges), B_L = (L u, v)
      classify.c   the circumferential order n and the travelling direction of a mode shape
      steady.c     the steady rolling/sliding state pressed by the sheet (lab frame), one static contact problem
+     steady_coulomb.c  its contact law: normal LCP and tangential stick/slip active set, alternated
      squeal.c     the linearization about it: contact, friction (non-symmetric), velocity weakening (damping)
      modes.c      -modes: the options, the solve, the eigenvalue CSV and the shapes (io/output_modes.c) */
 #ifndef ROLLER_MODES_H
@@ -53,6 +54,9 @@ PETSC_INTERN PetscErrorCode RollerSteadySolve(Roller, Mat, RollerSteady *);     
 PETSC_INTERN PetscErrorCode RollerSteadyAngularDerivative(const RollerSteady *, PetscReal, PetscInt, PetscInt[3], PetscReal[3]); /* upwind for omega */
 PETSC_INTERN PetscErrorCode RollerSteadyDestroy(RollerSteady *, PetscBool);
 PETSC_INTERN PetscErrorCode RollerSteadyReport(Roller, const RollerSteady *); /* printed, and -modes_steady_csv */
+/* steady_coulomb.c: Coulomb on the candidates' dual data w = G x + d (n, G, d, friction, mu; N, T, state in/out as a
+   warm start; the number of normal/tangential alternations) */
+PETSC_INTERN PetscErrorCode RollerSteadyCoulomb(MPI_Comm, PetscInt, const PetscReal[], const PetscReal[], PetscBool, const PetscReal[], PetscReal[], PetscReal[], PetscInt[], PetscInt *);
 
 /* squeal.c: the linearization about the steady state: the reduced (M, C, K) on the dofs but the contact nodes'
    normal ones (and after them, on the last rank, one multiplier per stick node: their number), and the map of a

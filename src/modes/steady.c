@@ -197,141 +197,28 @@ static PetscErrorCode Responses(Roller ctx, KSP ksp, Vec uf, PetscReal g, PetscR
   PetscFunctionReturn(0);
 }
 
-/* x = A_SS^-1 r on the index set S (ns of the m x m column-major A, the entries from row/column offset o) by dense LU */
-static PetscErrorCode DenseSolve(const PetscReal A[], PetscInt m, PetscInt o, const PetscInt S[], PetscInt ns, PetscReal r[], PetscReal x[])
-{
-  PetscReal *a;
-  Mat        B;
-  Vec        rhs, sol;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscMalloc1((size_t)ns * ns, &a));
-  for (PetscInt q = 0; q < ns; ++q)
-    for (PetscInt p = 0; p < ns; ++p) a[p + (size_t)q * ns] = A[o + S[p] + (size_t)(o + S[q]) * m];
-  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, ns, ns, a, &B));
-  PetscCall(MatLUFactor(B, NULL, NULL, NULL));
-  PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, ns, r, &rhs));
-  PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, ns, x, &sol));
-  PetscCall(MatSolve(B, rhs, sol));
-  PetscCall(VecDestroy(&rhs));
-  PetscCall(VecDestroy(&sol));
-  PetscCall(MatDestroy(&B));
-  PetscCall(PetscFree(a));
-  PetscFunctionReturn(0);
-}
-
-/* The tangential forces T of the contact nodes (N_j > 0) for given normal forces N: Tresca with the bound mu_j N_j,
-   on the slips v = Gtt T + Gtn N + dt (G m x m, m = 2 n: rows/columns n.. the tangential ones). A node sticks
-   (v_j = 0, |T_j| <= mu_j N_j) or slips (T_j = -s_j mu_j N_j, s_j v_j >= 0). Primal-dual active set on the states
-   (state 1 stick, 2 slip with the sign s; warm-started from the caller's): the stick nodes' forces from
-   Gtt_SS T_S = -(v without them); a stick node over its bound slips, a slip node whose slip turned sticks. */
-static PetscErrorCode Tangential(Roller ctx, PetscInt n, const PetscReal G[], const PetscReal d[], const PetscReal mu[], const PetscReal N[], PetscInt state[], PetscReal s[], PetscReal T[])
-{
-  const PetscInt m = 2 * n;
-  PetscInt      *S, ns, it;
-  PetscReal     *v, *r, *x;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscMalloc4(n, &S, n, &v, n, &r, n, &x));
-  for (it = 0; it < 100; ++it) {
-    PetscInt changed = 0;
-
-    ns = 0;
-    for (PetscInt j = 0; j < n; ++j) {
-      T[j] = state[j] == 2 ? -s[j] * mu[j] * N[j] : 0.0;
-      if (state[j] == 1) S[ns++] = j;
-    }
-    for (PetscInt j = 0; j < n; ++j) { /* the slips without the stick nodes' forces */
-      v[j] = d[n + j];
-      for (PetscInt k = 0; k < n; ++k) v[j] += G[n + j + (size_t)k * m] * N[k] + G[n + j + (size_t)(n + k) * m] * T[k];
-    }
-    if (ns) {
-      for (PetscInt p = 0; p < ns; ++p) r[p] = -v[S[p]];
-      PetscCall(DenseSolve(G, m, n, S, ns, r, x));
-      for (PetscInt p = 0; p < ns; ++p) T[S[p]] = x[p];
-      for (PetscInt j = 0; j < n; ++j)
-        for (PetscInt p = 0; p < ns; ++p) v[j] += G[n + j + (size_t)(n + S[p]) * m] * x[p];
-    }
-    for (PetscInt j = 0; j < n; ++j) {
-      if (N[j] <= 0) {
-        if (state[j]) ++changed;
-        state[j] = 0;
-        T[j]     = 0.0;
-      } else if (state[j] == 1 && PetscAbsReal(T[j]) > mu[j] * N[j]) {
-        state[j] = 2;
-        s[j]     = T[j] > 0 ? -1.0 : 1.0;
-        ++changed;
-      } else if (state[j] == 2 && s[j] * v[j] < 0) {
-        state[j] = 1;
-        ++changed;
-      } else if (state[j] == 0) {
-        state[j] = 2;
-        s[j]     = v[j] >= 0 ? 1.0 : -1.0;
-        ++changed;
-      }
-    }
-    if (!changed) break;
-  }
-  PetscCheck(it < 100, ctx->comm, PETSC_ERR_NOT_CONVERGED, "The steady state's stick/slip states did not settle in 100 active-set iterations (-friction %g)", (double)ctx->obstacle.friction);
-  PetscCall(PetscFree4(S, v, r, x));
-  PetscFunctionReturn(0);
-}
-
-/* The contact forces at fixed mu_j: N (normal, the LCP w = Gnn N + dn + Gnt T by Lemke's method) and, with friction,
-   T (Tangential), alternated until both settle (the normal-tangential coupling is weak: Dundurs' beta); the state u,
-   the candidates' gaps, slips and states. */
+/* The contact forces at fixed mu_j (RollerSteadyCoulomb), the state u, the candidates' gaps, slips and states. */
 static PetscErrorCode SolveContact(Roller ctx, Vec uf, PetscReal g, PetscBool friction, const PetscReal G[], const PetscReal d[], Vec *w, RollerSteady *st)
 {
-  const PetscInt n = st->n, m = friction ? 2 * n : n;
-  PetscReal     *xs, *N, *T, *Gnn, *q, *s, nmax = 0;
-  PetscInt       pivots, k;
-  PetscBool      solved;
+  const PetscInt n = st->n;
+  PetscReal     *xs, nmax = 0;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscMalloc6(2 * n, &xs, n, &N, n, &T, (size_t)n * n, &Gnn, n, &q, n, &s));
-  for (PetscInt j = 0; j < n; ++j) {
-    for (PetscInt i = 0; i < n; ++i) Gnn[i + (size_t)j * n] = G[i + (size_t)j * m];
-    T[j] = friction ? st->tangent[j] : 0.0; /* the last pass's: a warm start */
-    s[j] = st->tangent[j] > 0 ? -1.0 : 1.0;
-  }
-  for (k = 0; k < 100; ++k) {
-    PetscReal dN = 0, dT = 0, big = 0;
-
-    for (PetscInt i = 0; i < n; ++i) {
-      q[i] = d[i];
-      if (friction)
-        for (PetscInt j = 0; j < n; ++j) q[i] += G[i + (size_t)(n + j) * m] * T[j];
-    }
-    PetscCall(RollerContactLemke(n, Gnn, q, xs, &pivots, &solved));
-    PetscCheck(solved, ctx->comm, PETSC_ERR_NOT_CONVERGED, "The steady state's normal contact LCP (%" PetscInt_FMT " nodes) has no solution by Lemke's method (a secondary ray after %" PetscInt_FMT " pivots)", n, pivots);
-    for (PetscInt j = 0; j < n; ++j) {
-      dN   = PetscMax(dN, PetscAbsReal(xs[j] - N[j]));
-      N[j] = xs[j];
-      big  = PetscMax(big, N[j]);
-    }
-    if (!friction) break;
-    PetscCall(PetscArraycpy(xs, T, n));
-    PetscCall(Tangential(ctx, n, G, d, st->mu, N, st->state, s, T));
-    for (PetscInt j = 0; j < n; ++j) dT = PetscMax(dT, PetscAbsReal(xs[j] - T[j]));
-    if (k && PetscMax(dN, dT) <= 1e-13 * big) break;
-  }
-  PetscCheck(k < 100, ctx->comm, PETSC_ERR_NOT_CONVERGED, "The steady state's normal and tangential forces did not settle in 100 alternations (-friction %g)", (double)ctx->obstacle.friction);
-  st->alternations = k + 1;
+  PetscCall(RollerSteadyCoulomb(ctx->comm, n, G, d, friction, st->mu, st->normal, st->tangent, st->state, &st->alternations));
   PetscCall(VecCopy(uf, st->u));
   for (PetscInt j = 0; j < n; ++j) {
-    if (N[j] != 0) PetscCall(VecAXPY(st->u, N[j], w[j]));
-    if (friction && T[j] != 0) PetscCall(VecAXPY(st->u, T[j], w[n + j]));
-    st->normal[j]  = N[j];
-    st->tangent[j] = friction ? T[j] : 0.0;
-    nmax           = PetscMax(nmax, N[j]);
+    if (st->normal[j] != 0) PetscCall(VecAXPY(st->u, st->normal[j], w[j]));
+    if (friction && st->tangent[j] != 0) PetscCall(VecAXPY(st->u, st->tangent[j], w[n + j]));
+    nmax = PetscMax(nmax, st->normal[j]);
   }
+  PetscCall(PetscMalloc1(2 * n, &xs));
   PetscCall(CandidateValues(st, st->u, xs));
   PetscCall(GapSlip(ctx, st, xs, PETSC_TRUE, g, 1.0, st->gap, st->slip));
   for (PetscInt j = 0; j < n; ++j) { /* 0 off the sheet, 1 stick (inside the cone), 2 slip (on it) */
     if (st->normal[j] <= 1e-12 * nmax) st->state[j] = 0;
     else st->state[j] = friction && PetscAbsReal(st->tangent[j]) < (1.0 - 1e-9) * st->mu[j] * st->normal[j] ? 1 : 2;
   }
-  PetscCall(PetscFree6(xs, N, T, Gnn, q, s));
+  PetscCall(PetscFree(xs));
   PetscFunctionReturn(0);
 }
 
