@@ -5,5 +5,6 @@ roller_test(modes_reference_unit modes_reference_unit.py LABELS quick)
 roller_test(modes_splitting modes_splitting.py LABELS quick TIMEOUT 600)
 # damping in the lab frame: Kelvin-Voigt and mass damping, lab = co-rotating + Doppler, n = 0..4 (decay rates 1e-2)
 roller_test(modes_damped modes_damped.py LABELS quick TIMEOUT 300)
-# the steady rolling/sliding state of -modes -obstacle against the long-time transient (two runs to t = 30)
-roller_test(squeal_steady squeal_steady.py LABELS long TIMEOUT 1800)
+# the steady rolling/sliding state of -modes -obstacle against the long-time transient (frictionless rolling and
+# sliding to t = 30; rolling with stick zones on Carter's scene at three creeps to t = 70; about 8 min)
+roller_test(squeal_steady squeal_steady.py LABELS long TIMEOUT 2400)
