@@ -3,8 +3,9 @@
 roller_test(modes_reference_unit modes_reference_unit.py LABELS quick)
 # roller -modes against it: n = 0..4, both frames, omega = pi/10 (1e-3), Bryan's splitting, the torsional period 8.69
 roller_test(modes_splitting modes_splitting.py LABELS quick TIMEOUT 600)
-# damping in the lab frame: Kelvin-Voigt and mass damping, lab = co-rotating + Doppler, n = 0..4 (decay rates 1e-2)
-roller_test(modes_damped modes_damped.py LABELS quick TIMEOUT 300)
+# damping in the lab frame: Kelvin-Voigt and mass damping, lab = co-rotating + Doppler, n = 0..4 (decay rates 1e-2);
+# 1 = 2 ranks
+roller_test(modes_damped modes_damped.py LABELS quick PROCESSORS 2 TIMEOUT 300)
 # the steady rolling/sliding state of -modes -obstacle against the long-time transient (frictionless rolling and
 # sliding to t = 30; rolling with stick zones on Carter's scene at three creeps to t = 70; about 8 min)
 roller_test(squeal_steady squeal_steady.py LABELS long TIMEOUT 2400)
