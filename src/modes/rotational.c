@@ -12,7 +12,7 @@
                       result is skew up to the curved cells' quadrature and consistent to second order;
      B_L = (L u, v)   the mass form, D + G (D = (d_phi u, v), G = (R(-pi/2) u, v) = (-J u, v)), from kernels.h.
    RollerSkewPart then keeps (A - A^T)/2 of each and reports the defect ||A + A^T||_F / ||A||_F. */
-#include "modes/modes.h"
+#include "modes/rotational_impl.h"
 #include "model/kernels.h"
 
 /* grad(L phi)[k][d] at x, from phi's gradient g[k][d] and Hessian h[k][m][d] (physical, component k). */
@@ -36,7 +36,7 @@ static void RotatedGradient(const PetscReal x[], const PetscReal g[], const Pets
 /* The isoparametric map at tabulation point q of the coordinate element Tx (2 components, the cell's coordinate
    closure coords): x, J[c][a] = d x_c / d xi_a, its inverse Ji[a][c], det J and, if Tx holds second derivatives,
    X2[c][a][b] = d^2 x_c / d xi_a d xi_b (0 on straight cells). */
-static void Geometry(PetscTabulation Tx, PetscInt q, const PetscScalar coords[], PetscReal x[], PetscReal J[], PetscReal Ji[], PetscReal X2[], PetscReal *det)
+void RollerRotGeometry(PetscTabulation Tx, PetscInt q, const PetscScalar coords[], PetscReal x[], PetscReal J[], PetscReal Ji[], PetscReal X2[], PetscReal *det)
 {
   const PetscInt Nb = Tx->Nb;
 
@@ -64,7 +64,7 @@ static void Geometry(PetscTabulation Tx, PetscInt q, const PetscScalar coords[],
 
 /* The physical gradients g[f][k][c] (and, with h, Hessians h[f][k][c][d]) of the Nb vector basis functions of T
    at point q: grad = J^-T grad_xi; d2 phi/dxi_a dxi_b = (J^T Hess J)_ab + sum_e X2[e][a][b] d phi/dx_e. */
-static void Derivatives(PetscTabulation T, PetscInt q, const PetscReal Ji[], const PetscReal X2[], PetscReal g[], PetscReal h[])
+void RollerRotDerivatives(PetscTabulation T, PetscInt q, const PetscReal Ji[], const PetscReal X2[], PetscReal g[], PetscReal h[])
 {
   const PetscInt Nb = T->Nb, Nc = T->Nc;
 
@@ -89,7 +89,7 @@ static void Derivatives(PetscTabulation T, PetscInt q, const PetscReal Ji[], con
 }
 
 /* sigma[G] : H for two 2x2 gradients */
-static PetscReal StressProduct(Roller ctx, const PetscReal G[], const PetscReal H[])
+PetscReal RollerRotStressProduct(Roller ctx, const PetscReal G[], const PetscReal H[])
 {
   PetscScalar gs[4], sigma[4];
 
@@ -99,7 +99,7 @@ static PetscReal StressProduct(Roller ctx, const PetscReal G[], const PetscReal 
 }
 
 /* The coordinate element of a cell from its number of coordinates: P1 (straight) or P2 (mesh/geometry.c). */
-static PetscErrorCode CoordinateElement(PetscInt Ncx, PetscFE cfe[2], PetscFE *fe)
+PetscErrorCode RollerRotCoordinateElement(PetscInt Ncx, PetscFE cfe[2], PetscFE *fe)
 {
   PetscFunctionBeginUser;
   PetscCheck(Ncx == 6 || Ncx == 12, PETSC_COMM_SELF, PETSC_ERR_SUP, "A cell with %" PetscInt_FMT " coordinates: expected a P1 or P2 triangle", Ncx);
@@ -133,17 +133,17 @@ static PetscErrorCode CellTerms(Roller ctx, DM dm, PetscFE fe, PetscFE cfe[2], M
     PetscFE            cf = NULL;
 
     PetscCall(DMPlexGetCellCoordinates(dm, cell, &isDG, &Ncx, &array, &coords));
-    PetscCall(CoordinateElement(Ncx, cfe, &cf));
+    PetscCall(RollerRotCoordinateElement(Ncx, cfe, &cf));
     PetscCall(PetscArrayzero(mat, Nb * Nb));
     for (PetscInt q = 0; q < Nq; ++q) {
       PetscReal x[2], J[4], Ji[4], X2[8], det, wq;
 
-      Geometry(Tc[cf == cfe[0] ? 0 : 1], q, coords, x, J, Ji, X2, &det);
+      RollerRotGeometry(Tc[cf == cfe[0] ? 0 : 1], q, coords, x, J, Ji, X2, &det);
       wq = qw[q] * PetscAbsReal(det);
-      Derivatives(T, q, Ji, X2, g, h);
+      RollerRotDerivatives(T, q, Ji, X2, g, h);
       for (PetscInt f = 0; f < Nb; ++f) RotatedGradient(x, &g[f * 4], &h[f * 8], &gl[f * 4]);
       for (PetscInt i = 0; i < Nb; ++i) /* test i, trial j */
-        for (PetscInt j = 0; j < Nb; ++j) mat[i * Nb + j] += wq * StressProduct(ctx, &gl[j * 4], &g[i * 4]);
+        for (PetscInt j = 0; j < Nb; ++j) mat[i * Nb + j] += wq * RollerRotStressProduct(ctx, &gl[j * 4], &g[i * 4]);
     }
     PetscCall(DMPlexRestoreCellCoordinates(dm, cell, &isDG, &Ncx, &array, &coords));
     PetscCall(DMPlexMatSetClosure(dm, NULL, NULL, A, cell, mat, ADD_VALUES));
@@ -151,216 +151,6 @@ static PetscErrorCode CellTerms(Roller ctx, DM dm, PetscFE fe, PetscFE cfe[2], M
   PetscCall(PetscFree4(g, h, gl, mat));
   PetscCall(PetscTabulationDestroy(&T));
   for (PetscInt p = 0; p < 2; ++p) PetscCall(PetscTabulationDestroy(&Tc[p]));
-  PetscFunctionReturn(0);
-}
-
-enum {
-  NQ    = 3, /* Gauss points per edge */
-  MAXNB = 12 /* vector P2 */
-};
-
-/* One cell's side of an edge: the Gauss points x, the physical gradients g of its Nb basis functions there, the
-   edge's normal (outer to this cell) and length element, the cell's global closure indices (negative: constrained). */
-typedef struct {
-  PetscReal x[NQ][2], g[NQ][MAXNB * 4], nrm[NQ][2], ds[NQ];
-  PetscInt  idx[MAXNB];
-} EdgeSide;
-
-static PetscErrorCode EdgeSideCompute(DM dm, PetscFE fe, PetscFE cfe[2], PetscSection sec, PetscSection gsec, const PetscReal t[], PetscInt f, PetscInt cell, EdgeSide *es)
-{
-  const PetscReal ref[3][2] = {
-    {-1, -1},
-    {1,  -1},
-    {-1, 1 }
-  }; /* the reference triangle's vertices, in closure order */
-  const PetscInt    *cone;
-  PetscInt          *closure = NULL, ncl, nv = 0, loc[2] = {-1, -1}, Ncx, nidx, *idx, Nb;
-  const PetscScalar *array;
-  PetscScalar       *coords;
-  PetscBool          isDG;
-  PetscReal          p[(NQ + 1) * 2], xc[2];
-  PetscTabulation    T, Tx;
-  PetscFE            cf = NULL;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscFEGetDimension(fe, &Nb));
-  PetscCall(DMPlexGetCone(dm, f, &cone));
-  PetscCall(DMPlexGetTransitiveClosure(dm, cell, PETSC_TRUE, &ncl, &closure));
-  for (PetscInt k = 0; k < ncl; ++k) {
-    PetscInt depth;
-
-    PetscCall(DMPlexGetPointDepth(dm, closure[2 * k], &depth));
-    if (depth != 0) continue;
-    if (closure[2 * k] == cone[0]) loc[0] = nv;
-    if (closure[2 * k] == cone[1]) loc[1] = nv;
-    ++nv;
-  }
-  PetscCall(DMPlexRestoreTransitiveClosure(dm, cell, PETSC_TRUE, &ncl, &closure));
-  PetscCheck(nv == 3 && loc[0] >= 0 && loc[1] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Edge %" PetscInt_FMT " not found in cell %" PetscInt_FMT, f, cell);
-  for (PetscInt k = 0; k < NQ; ++k)
-    for (PetscInt c = 0; c < 2; ++c) p[k * 2 + c] = ref[loc[0]][c] + t[k] * (ref[loc[1]][c] - ref[loc[0]][c]);
-  p[NQ * 2] = p[NQ * 2 + 1] = -1.0 / 3.0; /* the centroid: the side of the normal */
-  PetscCall(DMPlexGetCellCoordinates(dm, cell, &isDG, &Ncx, &array, &coords));
-  PetscCall(CoordinateElement(Ncx, cfe, &cf));
-  PetscCall(PetscFECreateTabulation(fe, 1, NQ + 1, p, 1, &T));
-  PetscCall(PetscFECreateTabulation(cf, 1, NQ + 1, p, 1, &Tx));
-  for (PetscInt k = 0; k <= NQ; ++k) {
-    PetscReal J[4], Ji[4], X2[8], det, tau[2];
-
-    if (k == NQ) { /* orient the normals out of this cell */
-      Geometry(Tx, k, coords, xc, J, Ji, X2, &det);
-      for (PetscInt q = 0; q < NQ; ++q)
-        if (es->nrm[q][0] * (es->x[q][0] - xc[0]) + es->nrm[q][1] * (es->x[q][1] - xc[1]) < 0) es->nrm[q][0] = -es->nrm[q][0], es->nrm[q][1] = -es->nrm[q][1];
-      continue;
-    }
-    Geometry(Tx, k, coords, es->x[k], J, Ji, X2, &det);
-    Derivatives(T, k, Ji, X2, es->g[k], NULL);
-    for (PetscInt c = 0; c < 2; ++c) tau[c] = J[c * 2 + 0] * (ref[loc[1]][0] - ref[loc[0]][0]) + J[c * 2 + 1] * (ref[loc[1]][1] - ref[loc[0]][1]); /* dx/dt */
-    es->ds[k]     = PetscSqrtReal(tau[0] * tau[0] + tau[1] * tau[1]);
-    es->nrm[k][0] = tau[1] / es->ds[k];
-    es->nrm[k][1] = -tau[0] / es->ds[k];
-  }
-  PetscCall(PetscTabulationDestroy(&T));
-  PetscCall(PetscTabulationDestroy(&Tx));
-  PetscCall(DMPlexRestoreCellCoordinates(dm, cell, &isDG, &Ncx, &array, &coords));
-  PetscCall(DMPlexGetClosureIndices(dm, sec, gsec, cell, PETSC_TRUE, &nidx, &idx, NULL, NULL));
-  PetscCheck(nidx == Nb, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Cell %" PetscInt_FMT " has %" PetscInt_FMT " closure indices, expected %" PetscInt_FMT, cell, nidx, Nb);
-  for (PetscInt k = 0; k < Nb; ++k) es->idx[k] = idx[k];
-  PetscCall(DMPlexRestoreClosureIndices(dm, sec, gsec, cell, PETSC_TRUE, &nidx, &idx, NULL, NULL));
-  PetscFunctionReturn(0);
-}
-
-/* The other side of the edges on the partition boundary (distributed without overlap, such an edge has one cell on
-   each of two ranks): the owner (root) of each shared edge sends its side to the other rank (leaf), which assembles
-   the edge; *skip[f - fStart]: an edge the other rank assembles; remote[f - fStart]: the index into *other of the
-   other side of a leaf edge (-1: none). */
-static PetscErrorCode RemoteSides(DM dm, PetscFE fe, PetscFE cfe[2], PetscSection sec, PetscSection gsec, const PetscReal t[], PetscInt fStart, PetscInt fEnd, PetscBool **skip, PetscInt **remote, EdgeSide **other)
-{
-  PetscSF            sf, esf;
-  PetscInt           nroots, nleaves, pStart, pEnd, nr = 0, nl = 0, *rootidx, *leafidx;
-  const PetscInt    *ilocal, *degree;
-  const PetscSFNode *iremote;
-  PetscSFNode       *eremote;
-  PetscInt          *elocal;
-  EdgeSide          *mine;
-  MPI_Datatype       unit;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscCalloc1(fEnd - fStart, skip));
-  PetscCall(PetscMalloc1(fEnd - fStart, remote));
-  for (PetscInt f = fStart; f < fEnd; ++f) (*remote)[f - fStart] = -1;
-  PetscCall(DMGetPointSF(dm, &sf));
-  PetscCall(PetscSFGetGraph(sf, &nroots, &nleaves, &ilocal, &iremote));
-  PetscCall(DMPlexGetChart(dm, &pStart, &pEnd));
-  *other = NULL;
-  if (nroots < 0) PetscFunctionReturn(0); /* one rank */
-  PetscCall(PetscSFComputeDegreeBegin(sf, &degree));
-  PetscCall(PetscSFComputeDegreeEnd(sf, &degree));
-  /* the roots: the shared edges this rank owns, numbered 0..nr-1, their sides computed */
-  PetscCall(PetscMalloc2(pEnd - pStart, &rootidx, pEnd - pStart, &leafidx));
-  for (PetscInt p = pStart; p < pEnd; ++p) rootidx[p - pStart] = leafidx[p - pStart] = -1;
-  for (PetscInt f = fStart; f < fEnd; ++f)
-    if (degree[f - pStart] > 0) {
-      rootidx[f - pStart] = nr++;
-      (*skip)[f - fStart] = PETSC_TRUE;
-    }
-  PetscCall(PetscMalloc1(nr, &mine));
-  for (PetscInt f = fStart; f < fEnd; ++f) {
-    const PetscInt *supp;
-    PetscInt        ns;
-
-    if (rootidx[f - pStart] < 0) continue;
-    PetscCall(DMPlexGetSupportSize(dm, f, &ns));
-    PetscCall(DMPlexGetSupport(dm, f, &supp));
-    PetscCheck(ns == 1, PETSC_COMM_SELF, PETSC_ERR_PLIB, "A shared edge with %" PetscInt_FMT " local cells", ns);
-    PetscCall(EdgeSideCompute(dm, fe, cfe, sec, gsec, t, f, supp[0], &mine[rootidx[f - pStart]]));
-  }
-  /* each leaf edge learns its root's number on the owner */
-  PetscCall(PetscSFBcastBegin(sf, MPIU_INT, rootidx, leafidx, MPI_REPLACE));
-  PetscCall(PetscSFBcastEnd(sf, MPIU_INT, rootidx, leafidx, MPI_REPLACE));
-  PetscCall(PetscMalloc2(nleaves, &elocal, nleaves, &eremote));
-  for (PetscInt l = 0; l < nleaves; ++l) {
-    const PetscInt p = ilocal ? ilocal[l] : l;
-
-    if (p < fStart || p >= fEnd || leafidx[p - pStart] < 0) continue;
-    (*remote)[p - fStart] = nl;
-    elocal[nl]            = nl;
-    eremote[nl].rank      = iremote[l].rank;
-    eremote[nl].index     = leafidx[p - pStart];
-    ++nl;
-  }
-  PetscCall(PetscSFCreate(PetscObjectComm((PetscObject)dm), &esf));
-  PetscCall(PetscSFSetGraph(esf, nr, nl, elocal, PETSC_COPY_VALUES, eremote, PETSC_COPY_VALUES));
-  PetscCall(PetscMalloc1(nl, other));
-  PetscCallMPI(MPI_Type_contiguous((PetscMPIInt)sizeof(EdgeSide), MPI_BYTE, &unit));
-  PetscCallMPI(MPI_Type_commit(&unit));
-  PetscCall(PetscSFBcastBegin(esf, unit, mine, *other, MPI_REPLACE));
-  PetscCall(PetscSFBcastEnd(esf, unit, mine, *other, MPI_REPLACE));
-  PetscCallMPI(MPI_Type_free(&unit));
-  PetscCall(PetscSFDestroy(&esf));
-  PetscCall(PetscFree2(elocal, eremote));
-  PetscCall(PetscFree(mine));
-  PetscCall(PetscFree2(rootidx, leafidx));
-  PetscFunctionReturn(0);
-}
-
-/* The edge terms that make the broken form skew and keep it consistent (docs/squeal.md section 1.1): cellwise,
-   sum_K int_K e . grad(sigma[grad u] : grad v) = sum_K int_dK (e . n) sigma[grad u] : grad v (div e = 0), so
-     A + A^T = S + S^T + B,  S(u, v) = sum_interior F int_F (e . n) [sigma[grad u]] : {grad v},
-                             B(u, v) = sum_boundary F int_F (e . n) sigma[grad u] : grad v
-   ([.] the jump from the first supporting cell to the second, n the first cell's outer normal, {.} the average).
-   S vanishes on a smooth u and B with e . n (0 on the circles), so A - S - B/2 is consistent and skew. Adds
-   S + B/2 to the matrix; 3 Gauss points per edge, exact on straight cells. In parallel an edge between two ranks'
-   cells is assembled by one of them with the other's side (RemoteSides). */
-static PetscErrorCode EdgeTerms(Roller ctx, DM dm, PetscFE fe, PetscFE cfe[2], Mat S)
-{
-  PetscReal    t[NQ], wt[NQ];
-  PetscSection sec, gsec;
-  PetscInt     fStart, fEnd, Nb, *remote;
-  PetscBool   *skip;
-  EdgeSide    *other, side[2];
-  PetscScalar *vals;
-  PetscInt    *rows;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscDTGaussQuadrature(NQ, 0.0, 1.0, t, wt));
-  PetscCall(DMGetLocalSection(dm, &sec));
-  PetscCall(DMGetGlobalSection(dm, &gsec));
-  PetscCall(PetscFEGetDimension(fe, &Nb));
-  PetscCheck(Nb <= MAXNB, PETSC_COMM_SELF, PETSC_ERR_SUP, "%" PetscInt_FMT " basis functions: at most %d (vector P2)", Nb, (int)MAXNB);
-  PetscCall(PetscMalloc2(4 * Nb * Nb, &vals, 2 * Nb, &rows));
-  PetscCall(DMPlexGetHeightStratum(dm, 1, &fStart, &fEnd));
-  PetscCall(RemoteSides(dm, fe, cfe, sec, gsec, t, fStart, fEnd, &skip, &remote, &other));
-  for (PetscInt f = fStart; f < fEnd; ++f) {
-    const PetscInt *supp;
-    PetscInt        ns, n = 0;
-
-    if (skip[f - fStart]) continue;
-    PetscCall(DMPlexGetSupportSize(dm, f, &ns));
-    PetscCall(DMPlexGetSupport(dm, f, &supp));
-    for (PetscInt s = 0; s < ns; ++s) PetscCall(EdgeSideCompute(dm, fe, cfe, sec, gsec, t, f, supp[s], &side[s]));
-    if (remote[f - fStart] >= 0) side[ns++] = other[remote[f - fStart]];
-    for (PetscInt s = 1; s < ns; ++s)
-      for (PetscInt k = 0; k < NQ; ++k)
-        PetscCheck(PetscAbsReal(side[s].x[k][0] - side[0].x[k][0]) + PetscAbsReal(side[s].x[k][1] - side[0].x[k][1]) < 1e-10 * (1.0 + ctx->mesh.r_outer), PETSC_COMM_SELF, PETSC_ERR_PLIB, "Edge %" PetscInt_FMT ": its cells disagree on a point", f);
-    for (PetscInt s = 0; s < ns; ++s)
-      for (PetscInt k = 0; k < Nb; ++k) rows[n++] = side[s].idx[k];
-    /* interior: row (r, i), column (s, j): int (e . n) sgn_s sigma[grad phi_j^s] : grad phi_i^r / 2, sgn = +1, -1;
-       boundary: the one cell, int (e . n) sigma[grad phi_j] : grad phi_i / 2 */
-    PetscCall(PetscArrayzero(vals, n * n));
-    for (PetscInt q = 0; q < NQ; ++q) {
-      const PetscReal en = -side[0].x[q][1] * side[0].nrm[q][0] + side[0].x[q][0] * side[0].nrm[q][1], wq = 0.5 * wt[q] * side[0].ds[q] * en;
-
-      for (PetscInt r = 0; r < ns; ++r)
-        for (PetscInt i = 0; i < Nb; ++i)
-          for (PetscInt s = 0; s < ns; ++s)
-            for (PetscInt j = 0; j < Nb; ++j) vals[(r * Nb + i) * n + s * Nb + j] += (s == 0 ? wq : -wq) * StressProduct(ctx, &side[s].g[q][j * 4], &side[r].g[q][i * 4]);
-    }
-    PetscCall(MatSetValues(S, n, rows, n, rows, vals, ADD_VALUES));
-  }
-  PetscCall(PetscFree(other));
-  PetscCall(PetscFree2(skip, remote));
-  PetscCall(PetscFree2(vals, rows));
   PetscFunctionReturn(0);
 }
 
@@ -399,7 +189,7 @@ static PetscErrorCode AssembleElastic(Roller ctx, Mat *A, PetscReal *broken)
     PetscCall(MatSetSizes(pre, m, n, PETSC_DETERMINE, PETSC_DETERMINE));
     PetscCall(MatSetType(pre, MATPREALLOCATOR));
     PetscCall(MatSetUp(pre));
-    PetscCall(EdgeTerms(ctx, dm, fe, cfe, pre));
+    PetscCall(RollerRotEdgeTerms(ctx, dm, fe, cfe, pre));
     PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
     PetscCall(MatCreate(ctx->comm, &S));
@@ -407,7 +197,7 @@ static PetscErrorCode AssembleElastic(Roller ctx, Mat *A, PetscReal *broken)
     PetscCall(MatSetType(S, MATAIJ));
     PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, S));
     PetscCall(MatDestroy(&pre));
-    PetscCall(EdgeTerms(ctx, dm, fe, cfe, S));
+    PetscCall(RollerRotEdgeTerms(ctx, dm, fe, cfe, S));
     PetscCall(MatAssemblyBegin(S, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(S, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAXPY(*A, -1.0, S, DIFFERENT_NONZERO_PATTERN));
