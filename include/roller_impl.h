@@ -179,6 +179,7 @@ typedef struct {
   /* the result, sorted by frequency: n eigenvalues re + i im (im >= 0), their order, wave (RollerWave) and error */
   PetscInt   n, *order, *wave, dofs; /* dofs: the size of the eigenproblem */
   PetscReal *re, *im, *error;
+  PetscReal  skew_defect[2]; /* the damped lab frame's ||A + A^T||/||A|| of A_L and B_L (-1: not built) */
 } RollerEigen;
 
 /* Checkpoint and restart (integrate/checkpoint.c) */

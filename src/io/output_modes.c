@@ -50,6 +50,8 @@ PetscErrorCode RollerModeShapesWrite(Roller ctx, const char path[], PetscInt n, 
 
     PetscCall(PetscViewerHDF5WriteAttribute(out.h5, "/parameters", "modes", PETSC_INT, &n));
     PetscCall(PetscViewerHDF5WriteAttribute(out.h5, "/parameters", "modes_frame", PETSC_REAL, &frame));
+    if (ctx->eig.skew_defect[0] >= 0) PetscCall(PetscViewerHDF5WriteAttribute(out.h5, "/parameters", "skew_defect_A_L", PETSC_REAL, &ctx->eig.skew_defect[0]));
+    if (ctx->eig.skew_defect[1] >= 0) PetscCall(PetscViewerHDF5WriteAttribute(out.h5, "/parameters", "skew_defect_B_L", PETSC_REAL, &ctx->eig.skew_defect[1]));
   }
   if (steady) PetscCall(RollerPlainVecView(steady, "steady", out.h5, PETSC_FALSE)); /* the state the modes linearize about (lab frame) */
   if (n) {

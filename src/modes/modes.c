@@ -9,7 +9,8 @@ const char *const RollerFrames[] = {"rotating", "lab", "RollerFrame", "ROLLER_FR
 PetscErrorCode RollerModesSetFromOptions(Roller ctx)
 {
   PetscFunctionBeginUser;
-  ctx->eig.nev = 20;
+  ctx->eig.nev            = 20;
+  ctx->eig.skew_defect[0] = ctx->eig.skew_defect[1] = -1.0;
   PetscOptionsBegin(ctx->comm, NULL, "Roller: modes (docs/squeal.md); the eigensolver takes -pep_* and -st_* options (SLEPc PEP, TOAR, shift-and-invert about -pep_target 0)", NULL);
   PetscCall(PetscOptionsBool("-modes", "Compute the modes of the scene (the quadratic eigenproblem) instead of stepping", NULL, ctx->eig.on, &ctx->eig.on, NULL));
   ctx->eig.frame = ctx->obstacle.on ? ROLLER_FRAME_LAB : ROLLER_FRAME_ROTATING; /* steady sliding is steady in the lab only */

@@ -37,6 +37,8 @@ static PetscErrorCode AddLabDamping(Roller ctx, Mat C, Mat K)
     PetscCall(MatAXPY(K, w * eta, B, DIFFERENT_NONZERO_PATTERN));
     PetscCall(MatDestroy(&B));
   }
+  ctx->eig.skew_defect[0] = w != 0 && tau != 0 ? da : -1.0;
+  ctx->eig.skew_defect[1] = w != 0 && eta != 0 ? db : -1.0;
   if (!ctx->ts.quiet)
     PetscCall(PetscPrintf(ctx->comm, "roller: lab-frame damping (tau %g, eta %g): skewness defect ||A + A^T||/||A|| of A_L %.3e (its cell terms alone %.3e), of B_L %.3e; their skew parts used\n", (double)tau, (double)eta, (double)da, (double)broken, (double)db));
   PetscFunctionReturn(0);
