@@ -45,7 +45,7 @@ static PetscErrorCode SolveFree(RollerContactLCP *qp, PetscInt n, const PetscInt
       if (state[j] != 0 || qp->lo[j] == qp->up[j]) r -= qp->G[qp->F[q] + (size_t)j * n] * x[j];
     qp->w[q] = r;
   }
-  PetscCall(RollerContactDenseSolve(qp->G, n, qp->F, nf, qp->Gff, qp->w, qp->mu2));
+  PetscCall(RollerContactDenseSolve(qp->G, n, qp->F, nf, PETSC_TRUE, qp->Gff, qp->w, qp->mu2));
   for (PetscInt q = 0; q < nf; ++q) x[qp->F[q]] = qp->mu2[q];
   PetscFunctionReturn(0);
 }

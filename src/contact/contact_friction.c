@@ -23,10 +23,19 @@ struct _n_RollerContactFriction {
   PetscInt         lemke_cap, its, lemke_steps;
 };
 
-/* mu(v) = mu + (mu_s - mu) exp(-v / v_c), constant mu without -friction_decay */
+/* mu(|v|) = mu + (mu_s - mu) exp(-|v| / v_c), constant mu without -friction_decay (v_c = 0); *dmu its derivative
+   in |v| (if dmu) */
+PetscReal RollerFrictionLaw(PetscReal mu, PetscReal mu_s, PetscReal v_c, PetscReal v, PetscReal *dmu)
+{
+  const PetscReal e = v_c > 0 ? PetscExpReal(-PetscAbsReal(v) / v_c) : 0.0;
+
+  if (dmu) *dmu = v_c > 0 ? -(mu_s - mu) / v_c * e : 0.0;
+  return mu + (mu_s - mu) * e;
+}
+
 static PetscReal FrictionCoefficient(RollerContactFriction fr, PetscReal v)
 {
-  return fr->v_c > 0 ? fr->mu + (fr->mu_s - fr->mu) * PetscExpReal(-v / fr->v_c) : fr->mu;
+  return RollerFrictionLaw(fr->mu, fr->mu_s, fr->v_c, v, NULL);
 }
 
 PetscErrorCode RollerContactFrictionCreate(Roller ctx, RollerContact c)

@@ -222,7 +222,6 @@ PETSC_INTERN PetscErrorCode RollerContactLCPTao(RollerContactLCP *, PetscInt, Pe
 PETSC_INTERN PetscErrorCode RollerContactLCPDestroy(RollerContactLCP *);
 PETSC_INTERN PetscErrorCode RollerContactLCPWork(RollerContactLCP *, PetscInt);
 PETSC_INTERN void           RollerContactLCPSlack(RollerContactLCP *, PetscInt, const PetscReal[], PetscReal[]);
-PETSC_INTERN PetscErrorCode RollerContactDenseSolve(const PetscReal[], PetscInt, const PetscInt[], PetscInt, PetscReal[], PetscReal[], PetscReal[]);
 
 /* contact_boxqp.c: min 1/2 x^T G x + d^T x over lo <= x <= up on the arrays of a RollerContactLCP created with
    RollerContactBoxQPCreate (size n); state[] (-1 at lo, 0 free, 1 at up) warm-starts the active set */

@@ -14,9 +14,9 @@ PetscErrorCode RollerContactLCPCreate(PetscInt nc, RollerContactLCP *cd)
   PetscFunctionReturn(0);
 }
 
-/* y = G_FF^{-1} r on the index set F (nf of the m x m column-major G) by dense Cholesky (LAPACK potrf); Gff is
-   scratch of nf^2 entries. */
-PetscErrorCode RollerContactDenseSolve(const PetscReal G[], PetscInt m, const PetscInt F[], PetscInt nf, PetscReal Gff[], PetscReal r[], PetscReal y[])
+/* y = G_FF^{-1} r on the index set F (nf of the m x m column-major G) by dense Cholesky (LAPACK potrf; spd) or LU
+   (getrf); Gff is scratch of nf^2 entries. */
+PetscErrorCode RollerContactDenseSolve(const PetscReal G[], PetscInt m, const PetscInt F[], PetscInt nf, PetscBool spd, PetscReal Gff[], PetscReal r[], PetscReal y[])
 {
   Mat Mff;
   Vec rhs, sol;
@@ -25,8 +25,10 @@ PetscErrorCode RollerContactDenseSolve(const PetscReal G[], PetscInt m, const Pe
   for (PetscInt q = 0; q < nf; ++q)
     for (PetscInt p = 0; p < nf; ++p) Gff[p + (size_t)q * nf] = G[F[p] + (size_t)F[q] * m];
   PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, nf, nf, Gff, &Mff));
-  PetscCall(MatSetOption(Mff, MAT_SPD, PETSC_TRUE));
-  PetscCall(MatCholeskyFactor(Mff, NULL, NULL));
+  if (spd) {
+    PetscCall(MatSetOption(Mff, MAT_SPD, PETSC_TRUE));
+    PetscCall(MatCholeskyFactor(Mff, NULL, NULL));
+  } else PetscCall(MatLUFactor(Mff, NULL, NULL, NULL));
   PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, nf, r, &rhs));
   PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, nf, y, &sol));
   PetscCall(MatSolve(Mff, rhs, sol));
@@ -48,7 +50,7 @@ static PetscErrorCode SolveFreeSet(RollerContactLCP *cd, PetscInt m, const Petsc
   }
   if (!nf) PetscFunctionReturn(0);
   for (PetscInt q = 0; q < nf; ++q) cd->w[q] = -cd->d[cd->F[q]];
-  PetscCall(RollerContactDenseSolve(cd->G, m, cd->F, nf, cd->Gff, cd->w, cd->mu2));
+  PetscCall(RollerContactDenseSolve(cd->G, m, cd->F, nf, PETSC_TRUE, cd->Gff, cd->w, cd->mu2));
   for (PetscInt q = 0; q < nf; ++q) lam[cd->F[q]] = cd->mu2[q];
   PetscFunctionReturn(0);
 }

@@ -5,7 +5,7 @@
    rho omega^2 L_centrifugal, which the DMF keeps exactly) plus A Re(z e^{lambda t}) at t = 0, -dt, -2 dt: the
    mode's exact history.
 
-   Lab-frame modes (the squeal analysis about the steady sliding state u_s, stored in the file): the lab field
+   Lab-frame modes (the squeal analysis about the steady rolling or sliding state u_s, stored in the file): the lab field
    u = u_s + A Re(z e^{lambda t}) seen from the co-rotating frame, xi(X, t) = R(-theta) u(R(theta) X, t), at
    t = 0 (theta = 0): xi = u and xi_t = u_t + omega (d_phi u - J u), J = R(pi/2); d_phi u by the L2 projection
    M^-1 D u (D = (d_phi u, v)). The history xi^{-k} = xi^0 - k dt xi_t (first order: the difference excites the

@@ -13,7 +13,7 @@ PetscErrorCode RollerModesSetFromOptions(Roller ctx)
   ctx->eig.skew_defect[0] = ctx->eig.skew_defect[1] = -1.0;
   PetscOptionsBegin(ctx->comm, NULL, "Roller: modes (docs/squeal.md); the eigensolver takes -pep_* and -st_* options (SLEPc PEP, TOAR, shift-and-invert about -pep_target 0)", NULL);
   PetscCall(PetscOptionsBool("-modes", "Compute the modes of the scene (the quadratic eigenproblem) instead of stepping", NULL, ctx->eig.on, &ctx->eig.on, NULL));
-  ctx->eig.frame = ctx->obstacle.on ? ROLLER_FRAME_LAB : ROLLER_FRAME_ROTATING; /* steady sliding is steady in the lab only */
+  ctx->eig.frame = ctx->obstacle.on ? ROLLER_FRAME_LAB : ROLLER_FRAME_ROTATING; /* rolling is steady in the lab only */
   PetscCall(PetscOptionsEnum("-modes_frame", "Frame of the linearization: rotating (co-rotating, Lagrangian; the default without -obstacle) or lab (Eulerian; the default and the only one with -obstacle)", "RollerFrame", RollerFrames,
                              (PetscEnum)ctx->eig.frame, (PetscEnum *)&ctx->eig.frame, NULL));
   PetscCall(PetscOptionsInt("-modes_nev", "Number of eigenvalues wanted (-pep_nev overrides); each complex pair counts twice; 0 with -obstacle: the steady state only", NULL, ctx->eig.nev, &ctx->eig.nev, NULL));

@@ -1,4 +1,4 @@
-/* The linearization about the steady sliding state (docs/squeal.md section 3), the complex eigenvalue analysis of
+/* The linearization about the steady rolling or sliding state (docs/squeal.md section 3), the complex eigenvalue analysis of
    the brake industry: a perturbation keeps the active contact nodes a (normal force N_a > 0) on the flat sheet
    (du_a,y = 0, the sheet is rigid), its normal force perturbation dN_a is the reaction of row a,y, and Coulomb's
    sliding force -s mu(v) N along e1 perturbs as
@@ -64,25 +64,21 @@ static PetscErrorCode Augment(Mat A, PetscInt ns, PetscInt ne, const PetscInt ro
 /* The stick nodes' multipliers: their entries in K (the force, the transport's d_phi part) and C (its lambda part). */
 static PetscErrorCode StickMultipliers(Roller ctx, const RollerSteady *st, IS kept, PetscInt nk, PetscInt *ns, PetscInt *nek, PetscInt **rk, PetscInt **ck, PetscScalar **vk, PetscInt *nec, PetscInt **rc, PetscInt **cc, PetscScalar **vc)
 {
-  const PetscInt *idx;
-  PetscInt        nloc, kstart, *red, js = 0;
-  PetscMPIInt     rank;
+  PetscInt    nloc, kstart, *red, js = 0;
+  PetscMPIInt rank;
 
   PetscFunctionBeginUser;
   /* the reduced index of every candidate's x dof (-1 where not kept), known on every rank */
   PetscCall(PetscMalloc1(st->n, &red));
   PetscCall(ISGetLocalSize(kept, &nloc));
-  PetscCall(ISGetIndices(kept, &idx));
   PetscCallMPI(MPI_Scan(&nloc, &kstart, 1, MPIU_INT, MPI_SUM, ctx->comm));
   kstart -= nloc;
   for (PetscInt j = 0; j < st->n; ++j) {
-    PetscInt p = -1;
+    PetscInt p;
 
-    for (PetscInt i = 0; i < nloc && p < 0; ++i)
-      if (idx[i] == st->dof[j]) p = kstart + i;
-    red[j] = p;
+    PetscCall(ISLocate(kept, st->dof[j], &p)); /* its local position, negative where not here */
+    red[j] = p >= 0 ? kstart + p : -1;
   }
-  PetscCall(ISRestoreIndices(kept, &idx));
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, red, st->n, MPIU_INT, MPI_MAX, ctx->comm));
   *ns = 0;
   for (PetscInt j = 0; j < st->n; ++j)

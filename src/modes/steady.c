@@ -15,14 +15,12 @@
    weakening; mu_s where a node sticks) is repeated until it settles. */
 #include "modes/modes.h"
 
-/* mu(v) = mu + (mu_s - mu) exp(-v / v_c) and its derivative (model as contact/contact_friction.c) */
+/* mu(|v|) and its derivative: the law of the step (contact/contact_friction.c) */
 static void FrictionLaw(Roller ctx, PetscReal v, PetscReal *mu, PetscReal *dmu)
 {
   const RollerObstacle *o = &ctx->obstacle;
-  const PetscReal       e = o->friction_decay > 0 ? PetscExpReal(-PetscAbsReal(v) / o->friction_decay) : 0.0;
 
-  *mu  = o->friction + (o->friction_static - o->friction) * e;
-  *dmu = o->friction_decay > 0 ? -(o->friction_static - o->friction) / o->friction_decay * e : 0.0;
+  *mu = RollerFrictionLaw(o->friction, o->friction_static, o->friction_decay, v, dmu);
 }
 
 /* A node on Gamma_C: |x| = r_outer (vertices, and the curved P2 boundary's edge nodes) */

@@ -7,29 +7,6 @@
    matrix, the derivative along Gamma_C of a compliance, is nearly skew: not copositive). */
 #include "modes/modes.h"
 
-/* x = A_SS^-1 r on the index set S (ns of the m x m column-major A, the entries from row/column offset o) by dense LU */
-static PetscErrorCode DenseSolve(const PetscReal A[], PetscInt m, PetscInt o, const PetscInt S[], PetscInt ns, PetscReal r[], PetscReal x[])
-{
-  PetscReal *a;
-  Mat        B;
-  Vec        rhs, sol;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscMalloc1((size_t)ns * ns, &a));
-  for (PetscInt q = 0; q < ns; ++q)
-    for (PetscInt p = 0; p < ns; ++p) a[p + (size_t)q * ns] = A[o + S[p] + (size_t)(o + S[q]) * m];
-  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, ns, ns, a, &B));
-  PetscCall(MatLUFactor(B, NULL, NULL, NULL));
-  PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, ns, r, &rhs));
-  PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, ns, x, &sol));
-  PetscCall(MatSolve(B, rhs, sol));
-  PetscCall(VecDestroy(&rhs));
-  PetscCall(VecDestroy(&sol));
-  PetscCall(MatDestroy(&B));
-  PetscCall(PetscFree(a));
-  PetscFunctionReturn(0);
-}
-
 /* The tangential forces T of the contact nodes (N_j > 0) for given normal forces N: Tresca with the bound mu_j N_j,
    on the slips v = Gtt T + Gtn N + dt (G m x m, m = 2 n: rows/columns n.. the tangential ones). A node sticks
    (v_j = 0, |T_j| <= mu_j N_j) or slips (T_j = -s_j mu_j N_j, s_j v_j >= 0). Primal-dual active set on the states
@@ -39,10 +16,10 @@ static PetscErrorCode Tangential(MPI_Comm comm, PetscInt n, const PetscReal G[],
 {
   const PetscInt m = 2 * n;
   PetscInt      *S, ns, it;
-  PetscReal     *v, *r, *x;
+  PetscReal     *v, *r, *x, *scratch;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscMalloc4(n, &S, n, &v, n, &r, n, &x));
+  PetscCall(PetscMalloc5(n, &S, n, &v, n, &r, n, &x, (size_t)n * n, &scratch));
   for (it = 0; it < 100; ++it) {
     PetscInt changed = 0;
 
@@ -57,7 +34,7 @@ static PetscErrorCode Tangential(MPI_Comm comm, PetscInt n, const PetscReal G[],
     }
     if (ns) {
       for (PetscInt p = 0; p < ns; ++p) r[p] = -v[S[p]];
-      PetscCall(DenseSolve(G, m, n, S, ns, r, x));
+      PetscCall(RollerContactDenseSolve(G + n + (size_t)n * m, m, S, ns, PETSC_FALSE, scratch, r, x)); /* the slip matrix Gtt on S */
       for (PetscInt p = 0; p < ns; ++p) T[S[p]] = x[p];
       for (PetscInt j = 0; j < n; ++j)
         for (PetscInt p = 0; p < ns; ++p) v[j] += G[n + j + (size_t)(n + S[p]) * m] * x[p];
@@ -83,7 +60,7 @@ static PetscErrorCode Tangential(MPI_Comm comm, PetscInt n, const PetscReal G[],
     if (!changed) break;
   }
   PetscCheck(it < 100, comm, PETSC_ERR_NOT_CONVERGED, "The steady state's stick/slip states did not settle in 100 active-set iterations");
-  PetscCall(PetscFree4(S, v, r, x));
+  PetscCall(PetscFree5(S, v, r, x, scratch));
   PetscFunctionReturn(0);
 }
 
