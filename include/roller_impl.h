@@ -37,6 +37,7 @@ typedef enum { ROLLER_CONTACT_MASS_CONSISTENT, ROLLER_CONTACT_MASS_REDISTRIBUTED
 PETSC_EXTERN const char *const RollerContactMasses[];
 
 typedef struct _n_RollerContact  *RollerContact;
+typedef struct _n_RollerScheme   *RollerScheme;   /* the time scheme (integrate/scheme*.c, docs/model.md section 2.1) */
 typedef struct _n_RollerMonitors *RollerMonitors; /* the observers of the run (integrate/monitor.c) */
 
 /* Indices into ctx->stage for -log_view. */
@@ -122,29 +123,41 @@ typedef struct {
   RollerContactMass      contact_mass; /* -contact_mass (model/mass.c) */
 } RollerDiscretization;
 
-/* Operators fixed at set-up (model/operators.c): mass M, stiffness K, step matrix
-   A = rho/dt^2 M + (1/2 + tau/(2 dt)) K (+ eta/(2 dt) M), all on the free (non-Dirichlet) dofs; loads of the rigid-body parts of f: L_euler = M-load
+/* Operators fixed at set-up (model/operators.c): mass M, stiffness K (the step matrices are the time scheme's,
+   RollerStepOperator), all on the free (non-Dirichlet) dofs; loads of the rigid-body parts of f: L_euler = M-load
    of R(-pi/2) x, L_centrifugal = M-load of x (exact integrals, docs/model.md section 2); the boundary
    functionals R = w_R . xi, alpha = w_alpha . xi. With -contact_mass redistributed M is M_red = T^T M T, G is
    T^T G T and the loads are T^T L (model/mass.c). */
 typedef struct {
-  Mat M, K, A;
-  Mat Gyro, A0; /* centred Coriolis only: the gyroscopic matrix and the symmetric part of A */
+  Mat M, K;
+  Mat G; /* the gyroscopic matrix int rho N^T R(pi/2) N: only for the centred Coriolis velocity (its step matrix) */
   Vec L_euler, L_centrifugal;
   Vec coordinates; /* nodal positions x_n of every free dof pair */
   Vec w_R, w_alpha;
-  KSP ksp; /* the factorization of A, made once */
 } RollerOperators;
+
+/* A step matrix of a time scheme (model/solver.c): A = c_M M + c_K K (- c_G G with the centred Coriolis term, which
+   makes it non-symmetric: LU), factored once. A scheme has one or a fixed few (integrate/scheme*.c); the contact
+   layer keeps its condensation S = E^T A^{-1} E per operator, by id. */
+typedef struct {
+  Mat       A, A0, G; /* A0 = c_M M + c_K K and G: only with the centred Coriolis term (A = A0 - c_G G, re-made when theta' varies) */
+  KSP       ksp;
+  PetscReal c_M, c_K;
+  PetscInt  id;
+} RollerStepOperator;
 
 /* Time stepping (integrate/timestep.c) */
 typedef struct {
-  PetscReal dt, max_time;
-  PetscBool dt_set;      /* -ts_dt given (or from the checkpoint); otherwise chosen from -ts_phase_error (model/accuracy.c) */
-  PetscBool dt_restart;  /* dt from the -restart checkpoint (integrate/checkpoint.c) */
-  PetscReal phase_error; /* -ts_phase_error: the accuracy target that sets the default dt and h */
-  PetscBool view;        /* -ts_view: print the chosen discretization and why */
-  PetscInt  max_steps;
-  PetscBool quiet, monitor; /* -quiet: no progress line; -ts_monitor: a line every step */
+  PetscReal     dt, max_time;
+  PetscBool     dt_set;      /* -ts_dt given (or from the checkpoint); otherwise chosen from -ts_phase_error (model/accuracy.c) */
+  PetscBool     dt_restart;  /* dt from the -restart checkpoint (integrate/checkpoint.c) */
+  PetscReal     phase_error; /* -ts_phase_error: the accuracy target that sets the default dt and h */
+  PetscBool     view;        /* -ts_view: print the chosen discretization and why */
+  PetscInt      max_steps;
+  PetscBool     quiet, monitor; /* -quiet: no progress line; -ts_monitor: a line every step */
+  char          scheme[64];     /* -ts_scheme (empty: the one that meets -ts_phase_error with the fewest solves) */
+  RollerScheme *schemes;        /* every registered scheme, set from options; the run's is chosen at set-up */
+  PetscInt      nschemes;
 } RollerTimeParams;
 
 /* The lowest radial breathing and torsional angular frequencies of the annulus (model/accuracy.c) and the radii
@@ -155,16 +168,18 @@ typedef struct {
 
 /* The integrator state: during a step, cur = xi^{k-1}, prev = xi^{k-2}, prev2 = xi^{k-3} (extrapolated Coriolis)
    and next receives xi^k; after it the levels move up one (next is then free, a scratch vector between steps).
-   K xi of the last three levels; the right-hand side, the external load F^{k-1} of the last step (its work
-   closes the energy balance, integrate/diagnostics.c) and a work vector. */
+   K xi of the last three levels, M xi^k, and the velocity of the newest level (the one-step schemes' own state;
+   (xi^k - xi^{k-1})/dt for the three-level ones); the right-hand side, the external load F^{k-1} of the last step
+   (its work closes the energy balance, integrate/diagnostics.c) and a work vector. */
 typedef struct {
-  Vec       next, cur, prev, prev2, Kcur, Kprev, Kprev2, rhs, load, work;
+  Vec       next, cur, prev, prev2, Kcur, Kprev, Kprev2, Mcur, velocity, rhs, load, work;
   PetscInt  step;
   PetscReal time;
-  /* the cumulative works of the CSV (shaft, sheet, friction dissipation) up to step work_step (checkpointed),
-     and the angular momentum of level momentum_step (integrate/diagnostics.c) */
-  PetscReal works[3], momentum;
-  PetscInt  work_step, momentum_step;
+  /* the cumulative works of the CSV (shaft, sheet, friction dissipation) up to step work_step, the angular momentum of
+     level momentum_step and of the level before (checkpointed), the step ctx->info describes (-1: not made yet; it is
+     made when an observer asks: integrate/diagnostics.c) */
+  PetscReal works[3], momentum[2];
+  PetscInt  work_step, momentum_step, info_step;
 } RollerState;
 
 /* Modes (src/modes, docs/squeal.md): -modes solves the quadratic eigenproblem of the scene instead of stepping;
@@ -215,6 +230,7 @@ struct _n_Roller {
   RollerCheckpoint     ck;
   RollerInitial        init;
   RollerContact        contact;
+  RollerScheme         scheme; /* the run's time scheme, one of ts.schemes */
   RollerMonitors       monitors;
   RollerStepInfo       info;
   PetscLogStage        stage[ROLLER_NUM_STAGES];

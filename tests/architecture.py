@@ -1,6 +1,8 @@
 """The shape of the code (docs/architecture.md), checked so that it stays: the layers of src/ include only
-their own and lower layers (so there is no include circle between layers), no include circle between
-files, no C file over 400 lines, no struct over 20 fields, no source file left out of libroller's list."""
+their own and lower layers (so there is no include circle between layers) and call only functions of their own and
+lower layers (a function declared in the public roller.h but defined in a higher layer counts as that layer's), no
+include circle between files, no C file over 400 lines, no struct over 20 fields, no source file left out of
+libroller's list."""
 import os
 import re
 import sys
@@ -56,6 +58,20 @@ for node in graph:
         if c:
             failures.append("include circle: " + " -> ".join(c))
             break
+
+# calls: every Roller* function is defined in one layer; a call from a lower layer is an upward call
+defined = {}
+for path, text in files.items():
+    if path.endswith(".c"):
+        for name in re.findall(r"^(?:static\s+)?(?:inline\s+)?[A-Za-z_][\w\s\*]*?\b(Roller\w+)\s*\([^;]*?\)\s*\{", text, re.M):
+            defined.setdefault(name, path.split("/")[0])
+for path, text in files.items():
+    layer = path.split("/")[0]
+    body = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
+    for name in sorted(set(re.findall(r"\b(Roller[A-Z]\w*)\s*\(", body))):
+        owner = defined.get(name)
+        if owner and LAYERS.index(owner) > LAYERS.index(layer):
+            failures.append(f"{path} (layer {layer}) calls {name} of the higher layer {owner}")
 
 for path, text in files.items():
     n = text.count("\n")

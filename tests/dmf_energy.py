@@ -9,7 +9,7 @@ would cover only t = 0.86. The degree is given for the conservation runs; the da
 from rollertest import Checker, read_csv, run
 
 c = Checker("dmf_energy")
-base = ["-mesh_h", 0.05, "-ts_dt", 0.0125, "-clamp_outer", "-initial_condition", "bump", "-omega", 0, "-quiet"]
+base = ["-ts_scheme", "dmf", "-mesh_h", 0.05, "-ts_dt", 0.0125, "-clamp_outer", "-initial_condition", "bump", "-omega", 0, "-quiet"]
 for degree in (1, 2):
     run(base + ["-degree", degree, "-ts_max_steps", 500, "-monitor_csv", f"energy_p{degree}.csv"])
     d = read_csv(f"energy_p{degree}.csv")
@@ -31,7 +31,7 @@ c.check(all(e[1:] < e[:-1]) and all(dv[1:] > 0) and closure < 1e-12,
 # rotation on (omega, theta_a: Euler, centrifugal and Coriolis loads), both dampings, every Coriolis velocity
 for coriolis in ("backward", "extrapolated", "centered"):
     csv = f"energy_rot_{coriolis}.csv"
-    run(["-mesh_h", 0.05, "-ts_dt", 0.0125, "-theta_a", 0.1, "-theta_b", 2, "-damping", 0.3, "-viscosity", 0.005,
+    run(["-ts_scheme", "dmf", "-mesh_h", 0.05, "-ts_dt", 0.0125, "-theta_a", 0.1, "-theta_b", 2, "-damping", 0.3, "-viscosity", 0.005,
          "-coriolis_velocity", coriolis, "-ts_max_steps", 300, "-quiet", "-monitor_csv", csv])
     d = read_csv(csv)
     e = d["energy"]

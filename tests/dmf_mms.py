@@ -21,7 +21,7 @@ c = Checker("dmf_mms")
 def errors(args):
     if os.path.exists("errors.csv"):
         os.remove("errors.csv")
-    run(["-clamp_outer", "-quiet", "-mms_view", "ascii:errors.csv:ascii_csv"] + args)
+    run(["-ts_scheme", "dmf", "-clamp_outer", "-quiet", "-mms_view", "ascii:errors.csv:ascii_csv"] + args)
     e = read_csv("errors.csv")
     assert list(e) == ["t", "L2", "H1"] and len(e["t"]) == 1, f"errors.csv: columns {list(e)}, {len(e['t'])} rows"
     return float(e["L2"][0]), float(e["H1"][0])

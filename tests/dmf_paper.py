@@ -14,7 +14,7 @@ import numpy as np
 from rollertest import Checker, read_csv, run
 
 c = Checker("dmf_paper")
-base = ["-mesh_h", 0.025, "-ts_dt", 0.025, "-degree", 1, "-coriolis_velocity", "backward", "-quiet"]
+base = ["-ts_scheme", "dmf", "-mesh_h", 0.025, "-ts_dt", 0.025, "-degree", 1, "-coriolis_velocity", "backward", "-quiet"]
 
 
 def period(t, x):

@@ -48,7 +48,7 @@ def pick(rows, order, wave):
 
 
 def transient(tag, modes_h5, j, dt=DT, extra=()):
-    run(["-initial_condition", "mode", "-initial_mode_file", modes_h5, "-initial_mode", j, "-ic_amplitude", 1e-3,
+    run(["-ts_scheme", "dmf", "-initial_condition", "mode", "-initial_mode_file", modes_h5, "-initial_mode", j, "-ic_amplitude", 1e-3,
          "-ts_dt", dt, "-ts_max_time", T, "-output", f"{tag}.h5", "-output_every", EVERY, "-quiet"] + MESH + list(extra))
     return f"{tag}.h5"
 

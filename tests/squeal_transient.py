@@ -44,7 +44,7 @@ def cea(name, mu, nev=40, output=None):
 
 
 def transient(name, mu, T, extra=()):
-    run(["-obstacle", "-friction", mu, "-sheet_speed", 0, "-viscosity", 0, "-damping", 0, "-ts_dt", DT,
+    run(["-ts_scheme", "dmf", "-obstacle", "-friction", mu, "-sheet_speed", 0, "-viscosity", 0, "-damping", 0, "-ts_dt", DT,
          "-ts_max_time", T, "-monitor_csv", f"{name}.csv", "-output", f"{name}.h5", "-output_every", 20, "-quiet"] + list(extra) + MESH)
     return read_csv(f"{name}.csv")
 

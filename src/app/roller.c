@@ -9,7 +9,7 @@ PetscErrorCode RollerSetUp(Roller ctx)
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_SETUP]));
   PetscCall(RollerMeshCreate(ctx));
   PetscCall(RollerMeshDistribute(ctx));
-  PetscCall(RollerChooseTimeStep(ctx));
+  PetscCall(RollerSchemeChoose(ctx)); /* the scheme and its dt: after the mesh (a mesh file's radii) */
   PetscCall(RollerGeometrySetUp(ctx));
   PetscCall(RollerDiscretizationSetUp(ctx));
   PetscCall(RollerOperatorsSetUp(ctx));
@@ -24,11 +24,15 @@ PetscErrorCode RollerSetUp(Roller ctx)
     PetscCall(PetscOptionsHasHelp(NULL, &help));
     if (help) PetscCall(RollerContactHelp(ctx)); /* -help lists every option, the contact ones too */
   }
+  if (!ctx->eig.on) { /* the step matrices (the contact's condensation with them), and what the scheme keeps */
+    PetscCall(RollerSchemeSetUp(ctx));
+    if (ctx->ck.restart[0]) PetscCall(RollerCheckpointReadKept(ctx, ctx->ck.restart));
+  }
   /* The observers, in the order they see every state: the console lines, the outputs (CSV, fields), the
      periodic checkpoint (after the outputs: a restart continues after the CSV row of its step), the MMS errors */
   if (!ctx->eig.on) {
     PetscCall(RollerTimeStepMonitorSetUp(ctx));
-    PetscCall(RollerOutputSetUp(ctx));
+    PetscCall(RollerOutputMonitorSetUp(ctx));
     PetscCall(RollerCheckpointMonitorSetUp(ctx));
     PetscCall(RollerInitialMonitorSetUp(ctx));
   }
@@ -55,12 +59,10 @@ PetscErrorCode RollerDestroy(Roller *roller)
   PetscCall(PetscViewerDestroy(&ctx->init.mms_view));
   PetscCall(RollerContactDestroy(&ctx->contact));
   PetscCall(RollerModesDestroy(ctx));
-  PetscCall(KSPDestroy(&ctx->ops.ksp));
+  PetscCall(RollerSchemesDestroy(ctx));
   PetscCall(MatDestroy(&ctx->ops.M));
   PetscCall(MatDestroy(&ctx->ops.K));
-  PetscCall(MatDestroy(&ctx->ops.A));
-  PetscCall(MatDestroy(&ctx->ops.A0));
-  PetscCall(MatDestroy(&ctx->ops.Gyro));
+  PetscCall(MatDestroy(&ctx->ops.G));
   PetscCall(VecDestroy(&ctx->ops.L_euler));
   PetscCall(VecDestroy(&ctx->ops.L_centrifugal));
   PetscCall(VecDestroy(&ctx->ops.coordinates));
@@ -71,6 +73,8 @@ PetscErrorCode RollerDestroy(Roller *roller)
   PetscCall(VecDestroy(&ctx->state.Kcur));
   PetscCall(VecDestroy(&ctx->state.Kprev));
   PetscCall(VecDestroy(&ctx->state.Kprev2));
+  PetscCall(VecDestroy(&ctx->state.Mcur));
+  PetscCall(VecDestroy(&ctx->state.velocity));
   PetscCall(VecDestroy(&ctx->state.rhs));
   PetscCall(VecDestroy(&ctx->state.load));
   PetscCall(VecDestroy(&ctx->state.work));

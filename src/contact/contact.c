@@ -1,4 +1,4 @@
-/* The obstacle QP of one DMF step (docs/model.md section 2): the contact context's life (options, create,
+/* The obstacle QP of one step (docs/model.md section 2): the contact context's life (options, create,
    destroy) and the dispatch of a step: its candidate set, the solver of -contact_solver through its ops, and the
    one re-solve loop that makes every solver's answer free of penetration. Which solvers exist is the
    registry's business (contact_registry.c); nothing here names one. */
@@ -138,9 +138,8 @@ PetscErrorCode RollerContactCreate(Roller ctx, RollerContact *contact)
   PetscCall(VecDuplicate(ctx->state.cur, &c->acc.b));
   PetscCall(VecDuplicate(ctx->state.cur, &c->acc.force));
   PetscCall(VecDuplicate(ctx->state.cur, &c->acc.work));
-  /* the step's solver is set up now, in the set-up stage (the condensed S: 2 N_C solves); -contact_check's
-     others when first used */
-  PetscCall(RollerContactSolverSetUp(c->solver, ctx, c));
+  /* the step's solver is set up by RollerContactPrepare, in the set-up stage, when the scheme has made its step
+     matrices; -contact_check's others when first used */
   if (ctx->obstacle.friction > 0) PetscCall(RollerContactFrictionCreate(ctx, c)); /* none at -friction 0 */
   PetscCall(PetscInfo(NULL, "Contact: %" PetscInt_FMT " Gamma_C nodes (%" PetscInt_FMT " on this rank), solver %s\n", nc, c->nodes.nown, c->solver->name));
   *contact = c;
@@ -173,15 +172,28 @@ PetscErrorCode RollerContactSolveWith(Roller ctx, RollerContact c, RollerContact
   PetscFunctionReturn(0);
 }
 
-/* xi = argmin 1/2 xi^T A xi - b^T xi over the admissible set at t = t_k (docs/model.md section 2). */
-PetscErrorCode RollerContactSolve(Roller ctx, RollerContact c, PetscReal t, Vec b, Vec xi)
+/* xi = argmin 1/2 xi^T A xi - b^T xi over the admissible set at t (docs/model.md section 2), A the stage's
+   operator. */
+PetscErrorCode RollerContactSolve(Roller ctx, RollerContact c, const RollerContactStage *stage, PetscReal t, Vec b, Vec xi)
 {
   PetscFunctionBeginUser;
-  PetscCall(RollerContactSetUpStep(ctx, c, t));
+  c->step.op = stage->op;
+  PetscCall(RollerContactSetUpStep(ctx, c, stage, t));
   PetscCall(VecCopy(b, c->acc.b));
   PetscCall(RollerContactSolveWith(ctx, c, c->solver, b, xi, &c->acc.result));
   c->acc.solved = PETSC_TRUE;
   if (c->opt.check) PetscCall(RollerContactCheckStep(ctx, c, b, xi));
+  PetscFunctionReturn(0);
+}
+
+/* Set-up for the step matrix op of a scheme, in the set-up stage: the solver's work that depends on the matrix
+   (the condensed solver's S = E^T A^{-1} E, for the Gamma_C nodes the run will need). */
+PetscErrorCode RollerContactPrepare(Roller ctx, RollerContact c, const RollerStepOperator *op)
+{
+  PetscFunctionBeginUser;
+  c->step.op = op;
+  PetscCall(RollerContactSolverSetUp(c->solver, ctx, c));
+  if (c->solver->ops->prepare) PetscCall((*c->solver->ops->prepare)(c->solver, ctx, c, op));
   PetscFunctionReturn(0);
 }
 

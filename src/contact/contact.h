@@ -1,4 +1,4 @@
-/* The contact layer's face (docs/contact.md): the obstacle QP of a DMF step, only built when -obstacle is on.
+/* The contact layer's face (docs/contact.md): the obstacle QP of a step, only built when -obstacle is on.
    Its files and private header: contact_impl.h. */
 #ifndef ROLLER_CONTACT_H
 #define ROLLER_CONTACT_H
@@ -6,10 +6,28 @@
 #include <roller_impl.h>
 #include "model/model.h"
 
+/* What a time scheme's step (or stage) gives the contact solve besides its right-hand side (docs/contact.md "the
+   candidate set"): the step matrix and its factorization, and the level the new one follows, x_cur at t_cur
+   (the nodes on the obstacle there are the condensed solver's first active set), with the prediction of the new
+   level x_pred = p[0] x_cur + p[1] x_aux, which picks the candidate nodes, and the increment d[0] x_cur +
+   d[1] x_aux, whose largest nodal size bounds the change a contact shock can bring. Three-level schemes:
+   x_aux = xi^{k-2}, p = (2, -1), d = (1, -1); one-step schemes: x_aux = the velocity, p = (1, h), d = (0, h). */
+typedef struct {
+  const RollerStepOperator *op;
+  PetscReal                 t_cur;
+  Vec                       x_cur, x_aux;
+  PetscReal                 p[2], d[2];
+} RollerContactStage;
+
 PETSC_INTERN PetscErrorCode RollerContactCreate(Roller, RollerContact *);
 PETSC_INTERN PetscErrorCode RollerContactHelp(Roller); /* -help without -obstacle: the options block only */
-PETSC_INTERN PetscErrorCode RollerContactSolve(Roller, RollerContact, PetscReal, Vec, Vec);
+PETSC_INTERN PetscErrorCode RollerContactSolve(Roller, RollerContact, const RollerContactStage *, PetscReal, Vec, Vec);
+PETSC_INTERN PetscErrorCode RollerContactPrepare(Roller, RollerContact, const RollerStepOperator *); /* set-up for an operator (the condensed S) */
 PETSC_INTERN PetscErrorCode RollerContactInfo(Roller, RollerContact, Vec, PetscReal, RollerStepInfo *);
+/* The contact's terms of the energy balance of a solve from the level x_from at t_from, the force of the last solve
+   paired with its displacement times weight (contact_energy.c), added to info: obstacle_work, contact_dissipation
+   and the contact's parts of the shaft's and the sheet's works */
+PETSC_INTERN PetscErrorCode RollerContactEnergyAdd(Roller, RollerContact, Vec, PetscReal, PetscReal, RollerStepInfo *);
 PETSC_INTERN PetscErrorCode RollerContactFields(Roller, RollerContact, Vec, Vec, Vec); /* pressure, traction, state: P1 scalar Vecs on the mesh */
 PETSC_INTERN PetscBool      RollerContactHasFriction(RollerContact);
 /* Dense pieces the steady state of -modes (modes/steady*.c) shares with the step's contact solvers:

@@ -25,34 +25,38 @@ static void CandidateList(RollerContact c)
     if (c->step.is_cand[i]) c->step.cand[c->step.ncand++] = i;
 }
 
-/* The step at t = t_k from the state (xi^{k-1}, xi^{k-2}): basis, bounds, and the nodes the obstacle can reach
-   in this step: the gap of the extrapolated position x_n + 2 xi^{k-1}_n - xi^{k-2}_n against the obstacle at
-   t_k (its motion and the rotation of n^k are exact in this prediction) is below the reach: -contact_margin,
-   plus the obstacle's advance in one step, plus twice the largest displacement increment of a Gamma_C node
-   in the last step (a bound on the change of velocity a contact shock can bring). A node that still
-   penetrates is added after the solve (RollerContactAddPenetrating).
-   Also the nodes on the obstacle at the previous level t_{k-1} (gap^{k-1} <= tol with n^{k-1}, g^{k-1}): the
-   initial active set of the condensed solver. It is derived from xi^{k-1}, not remembered from the last
-   solve, so that the step is a function of the checkpointed state only and a restart repeats it exactly. */
-PetscErrorCode RollerContactSetUpStep(Roller ctx, RollerContact c, PetscReal t)
+/* The step at t from the level x_cur at t_cur and the prediction of the stage (RollerContactStage): basis, bounds,
+   and the nodes the obstacle can reach in this step: the gap of the predicted position x_n + x_pred,n against the
+   obstacle at t (its motion and the rotation of n are exact in this prediction) is below the reach:
+   -contact_margin, plus the obstacle's advance since t_cur, plus twice the largest nodal increment of Gamma_C
+   (for the three-level schemes the last step's displacement: a bound on the change of velocity a contact shock can
+   bring). A node that still penetrates is added after the solve (RollerContactAddPenetrating).
+   Also the nodes on the obstacle at t_cur (gap <= tol of x_cur with n and g at t_cur): the initial active set of
+   the condensed solver. It is derived from the state, not remembered from the last solve, so that the step is a
+   function of the checkpointed state only and a restart repeats it exactly. */
+PetscErrorCode RollerContactSetUpStep(Roller ctx, RollerContact c, const RollerContactStage *stage, PetscReal t)
 {
   RollerContactStep *st = &c->step;
   const PetscScalar *u1, *u2;
-  const PetscReal    tol  = RollerContactGapTolerance(ctx);
+  const PetscReal    tol = RollerContactGapTolerance(ctx), *p = stage->p, *d = stage->d;
   PetscReal          dmax = 0.0, reach;
 
   PetscFunctionBeginUser;
   PetscCall(RollerContactSetTime(ctx, c, t));
   st->resolves = 0;
-  PetscCall(RollerContactGather(c, ctx->state.cur, c->nodes.red1));
-  PetscCall(RollerContactGather(c, ctx->state.prev, c->nodes.red2));
+  PetscCall(RollerContactGather(c, stage->x_cur, c->nodes.red1));
+  PetscCall(RollerContactGather(c, stage->x_aux, c->nodes.red2));
   PetscCall(VecGetArrayRead(c->nodes.red1, &u1));
   PetscCall(VecGetArrayRead(c->nodes.red2, &u2));
-  for (PetscInt i = 0; i < c->nodes.nc; ++i) dmax = PetscMax(dmax, PetscSqrtReal(PetscSqr(PetscRealPart(u1[2 * i] - u2[2 * i])) + PetscSqr(PetscRealPart(u1[2 * i + 1] - u2[2 * i + 1]))));
-  reach = c->opt.margin + PetscAbsReal(st->g - RollerObstacleHeight(ctx, st->t - ctx->ts.dt)) + 2.0 * dmax;
-  PetscCall(RollerContactGapsAt(ctx, c, c->nodes.red1, ctx->state.time, st->gap)); /* gap^{k-1}; st->gap is scratch until the solve */
   for (PetscInt i = 0; i < c->nodes.nc; ++i) {
-    const PetscReal p0 = PetscRealPart(2.0 * u1[2 * i] - u2[2 * i]), p1 = PetscRealPart(2.0 * u1[2 * i + 1] - u2[2 * i + 1]);
+    const PetscReal d0 = d[0] * PetscRealPart(u1[2 * i]) + d[1] * PetscRealPart(u2[2 * i]), d1 = d[0] * PetscRealPart(u1[2 * i + 1]) + d[1] * PetscRealPart(u2[2 * i + 1]);
+
+    dmax = PetscMax(dmax, PetscSqrtReal(PetscSqr(d0) + PetscSqr(d1)));
+  }
+  reach = c->opt.margin + PetscAbsReal(st->g - RollerObstacleHeight(ctx, stage->t_cur)) + 2.0 * dmax;
+  PetscCall(RollerContactGapsAt(ctx, c, c->nodes.red1, stage->t_cur, st->gap)); /* gaps of x_cur; st->gap is scratch until the solve */
+  for (PetscInt i = 0; i < c->nodes.nc; ++i) {
+    const PetscReal p0 = p[0] * PetscRealPart(u1[2 * i]) + p[1] * PetscRealPart(u2[2 * i]), p1 = p[0] * PetscRealPart(u1[2 * i + 1]) + p[1] * PetscRealPart(u2[2 * i + 1]);
 
     st->is_cand[i]     = (p0 * st->normal[0] + p1 * st->normal[1] - st->lower[i] <= reach) ? PETSC_TRUE : PETSC_FALSE;
     st->on_obstacle[i] = st->gap[i] <= tol ? PETSC_TRUE : PETSC_FALSE;

@@ -4,7 +4,8 @@
    step QP (docs/model.md section 2) are  A xi = b + E N lambda,  lambda >= 0,  gap >= 0,  lambda . gap = 0, so
    xi = xi_f + A^{-1} E N lambda with the free solution xi_f = A^{-1} b, and gap(lambda) = d + G lambda with
    d = gap of xi_f and G = N^T S N, S = E^T A^{-1} E. Since A never changes, S (2 N_C x 2 N_C) is computed
-   once with the step factorization; each step is one solve for xi_f, a small dense LCP in lambda
+   once with the step factorization (per step matrix of the scheme; the columns of a node when it can first be
+   touched); each step is one solve for xi_f, a small dense LCP in lambda
    (contact_lcp.c), and, only if some lambda > 0, one more solve for the correction. A step in which nothing
    touches costs what a free step costs. */
 #include "contact_impl.h"
@@ -12,10 +13,21 @@
 typedef enum { CONTACT_QP_ACTIVESET, CONTACT_QP_TAO } CondensedQPType;
 static const char *const CondensedQPTypes[] = {"activeset", "tao", "CondensedQPType", "CONTACT_QP_", NULL};
 
+#define CONDENSED_MAX_OPERATORS 4 /* a scheme has one step matrix or a fixed few */
+
+/* S = E^T A^{-1} E of one step matrix, 2 nc x 2 nc column-major, the same on every rank; the two columns of node j
+   are computed when j first becomes a candidate (have[j]), and S is kept symmetric on the nodes computed so far. */
+typedef struct {
+  PetscReal *S;
+  PetscBool *have;
+  PetscInt   nhave;
+} CondensedS;
+
 typedef struct {
   CondensedQPType  qp;
-  PetscReal       *S;  /* 2 nc x 2 nc, column-major, the same on every rank */
-  PetscReal       *gf; /* nc: gap of the free solution */
+  CondensedS       s[CONDENSED_MAX_OPERATORS]; /* by RollerStepOperator id */
+  PetscReal       *gf;                         /* nc: gap of the free solution */
+  PetscInt        *need;                       /* nc: scratch, the nodes whose columns a step needs */
   RollerContactLCP lcp;
   Vec              xf, f, corr;
 } Condensed;
@@ -29,62 +41,114 @@ static PetscErrorCode CondensedSetFromOptions(RollerContactSolver s, PetscOption
   PetscFunctionReturn(0);
 }
 
-/* S = E^T A^{-1} E: A^{-1} applied to the unit vectors of the Gamma_C dofs, in blocks of columns with
-   KSPMatSolve on the one factorization; each column's Gamma_C entries are gathered on every rank. */
 static PetscErrorCode CondensedSetUp(RollerContactSolver s, Roller ctx, RollerContact c)
 {
-  Condensed     *cd = (Condensed *)s->data;
+  Condensed *cd = (Condensed *)s->data;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc2(c->nodes.nc, &cd->gf, c->nodes.nc, &cd->need));
+  PetscCall(RollerContactLCPCreate(c->nodes.nc, &cd->lcp));
+  PetscCall(VecDuplicate(ctx->state.cur, &cd->xf));
+  PetscCall(VecDuplicate(ctx->state.cur, &cd->f));
+  PetscCall(VecDuplicate(ctx->state.cur, &cd->corr));
+  PetscFunctionReturn(0);
+}
+
+/* The columns of the nodes need[0..m) of S = E^T A^{-1} E: A^{-1} applied to the unit vectors of their Gamma_C
+   dofs, in blocks of columns with KSPMatSolve on the operator's factorization, each column's Gamma_C entries
+   gathered on every rank; then S symmetrized between the new columns and all computed ones (A is symmetric: the
+   solver's round-off asymmetry is removed, so that G is symmetric to the last bit). */
+static PetscErrorCode CondensedColumns(Roller ctx, RollerContact c, const RollerStepOperator *op, CondensedS *cs, const PetscInt need[], PetscInt m)
+{
   const PetscInt n = 2 * c->nodes.nc, nb = 64;
   PetscInt       nlocal, rstart, rend;
   PetscLogDouble t0, t1;
 
   PetscFunctionBeginUser;
+  if (m == 0) PetscFunctionReturn(0);
   PetscCall(PetscTime(&t0));
-  PetscCall(PetscMalloc2((size_t)n * n, &cd->S, c->nodes.nc, &cd->gf));
-  PetscCall(RollerContactLCPCreate(c->nodes.nc, &cd->lcp));
-  PetscCall(VecDuplicate(ctx->state.cur, &cd->xf));
-  PetscCall(VecDuplicate(ctx->state.cur, &cd->f));
-  PetscCall(VecDuplicate(ctx->state.cur, &cd->corr));
   PetscCall(VecGetLocalSize(ctx->state.cur, &nlocal));
   PetscCall(VecGetOwnershipRange(ctx->state.cur, &rstart, &rend));
-  for (PetscInt j0 = 0; j0 < n; j0 += nb) {
-    const PetscInt m = PetscMin(nb, n - j0);
+  for (PetscInt j0 = 0; j0 < 2 * m; j0 += nb) {
+    const PetscInt mb = PetscMin(nb, 2 * m - j0);
     Mat            B, X;
 
-    PetscCall(MatCreateDense(ctx->comm, nlocal, PETSC_DECIDE, PETSC_DETERMINE, m, NULL, &B));
+    PetscCall(MatCreateDense(ctx->comm, nlocal, PETSC_DECIDE, PETSC_DETERMINE, mb, NULL, &B));
     PetscCall(MatZeroEntries(B));
-    for (PetscInt jj = 0; jj < m; ++jj) {
-      const PetscInt j = j0 + jj, row = c->nodes.gidx[j / 2] + j % 2;
+    for (PetscInt jj = 0; jj < mb; ++jj) {
+      const PetscInt j = j0 + jj, row = c->nodes.gidx[need[j / 2]] + j % 2;
 
       if (row >= rstart && row < rend) PetscCall(MatSetValue(B, row, jj, 1.0, INSERT_VALUES));
     }
     PetscCall(MatAssemblyBegin(B, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(B, MAT_FINAL_ASSEMBLY));
     PetscCall(MatDuplicate(B, MAT_DO_NOT_COPY_VALUES, &X));
-    PetscCall(KSPMatSolve(ctx->ops.ksp, B, X));
-    for (PetscInt jj = 0; jj < m; ++jj) {
-      Vec                col;
+    PetscCall(KSPMatSolve(op->ksp, B, X));
+    for (PetscInt jj = 0; jj < mb; ++jj) {
+      const PetscInt     j = j0 + jj, col = 2 * need[j / 2] + j % 2;
+      Vec                v;
       const PetscScalar *r;
 
-      PetscCall(MatDenseGetColumnVecRead(X, jj, &col));
-      PetscCall(RollerContactGather(c, col, c->nodes.red));
-      PetscCall(MatDenseRestoreColumnVecRead(X, jj, &col));
+      PetscCall(MatDenseGetColumnVecRead(X, jj, &v));
+      PetscCall(RollerContactGather(c, v, c->nodes.red));
+      PetscCall(MatDenseRestoreColumnVecRead(X, jj, &v));
       PetscCall(VecGetArrayRead(c->nodes.red, &r));
-      for (PetscInt i = 0; i < n; ++i) cd->S[i + (size_t)(j0 + jj) * n] = PetscRealPart(r[i]);
+      for (PetscInt i = 0; i < n; ++i) cs->S[i + (size_t)col * n] = PetscRealPart(r[i]);
       PetscCall(VecRestoreArrayRead(c->nodes.red, &r));
     }
     PetscCall(MatDestroy(&B));
     PetscCall(MatDestroy(&X));
   }
-  /* A is symmetric; remove the solver's round-off asymmetry so G is symmetric to the last bit */
-  for (PetscInt j = 0; j < n; ++j)
-    for (PetscInt i = 0; i < j; ++i) {
-      const PetscReal sij = 0.5 * (cd->S[i + (size_t)j * n] + cd->S[j + (size_t)i * n]);
+  for (PetscInt a = 0; a < m; ++a) cs->have[need[a]] = PETSC_TRUE;
+  cs->nhave += m;
+  for (PetscInt a = 0; a < m; ++a)
+    for (PetscInt jd = 0; jd < 2; ++jd) {
+      const PetscInt j = 2 * need[a] + jd;
 
-      cd->S[i + (size_t)j * n] = cd->S[j + (size_t)i * n] = sij;
+      for (PetscInt i = 0; i < n; ++i) {
+        PetscReal sij;
+
+        if (!cs->have[i / 2] || i == j) continue;
+        sij                      = 0.5 * (cs->S[i + (size_t)j * n] + cs->S[j + (size_t)i * n]);
+        cs->S[i + (size_t)j * n] = cs->S[j + (size_t)i * n] = sij;
+      }
     }
   PetscCall(PetscTime(&t1));
-  PetscCall(PetscInfo(NULL, "Contact condensed: S = E^T A^-1 E of size %" PetscInt_FMT " in %g s\n", n, t1 - t0));
+  PetscCall(PetscInfo(NULL, "Contact condensed: %" PetscInt_FMT " columns of S = E^T A^-1 E (operator %" PetscInt_FMT ", %" PetscInt_FMT " of %" PetscInt_FMT " nodes now) in %g s\n", 2 * m, op->id, cs->nhave, c->nodes.nc, t1 - t0));
+  PetscFunctionReturn(0);
+}
+
+/* The S of the operator, allocated at its first use. */
+static PetscErrorCode CondensedGetS(RollerContact c, Condensed *cd, const RollerStepOperator *op, CondensedS **cs)
+{
+  const PetscInt n = 2 * c->nodes.nc;
+
+  PetscFunctionBeginUser;
+  PetscCheck(op->id >= 0 && op->id < CONDENSED_MAX_OPERATORS, c->comm, PETSC_ERR_SUP, "The condensed contact solver keeps at most %d step matrices (operator %" PetscInt_FMT ")", CONDENSED_MAX_OPERATORS, op->id);
+  *cs = &cd->s[op->id];
+  if (!(*cs)->S) PetscCall(PetscCalloc2((size_t)n * n, &(*cs)->S, c->nodes.nc, &(*cs)->have));
+  PetscFunctionReturn(0);
+}
+
+/* For the operator of a scheme, in the set-up stage: the columns the run surely needs, those of the nodes within
+   reach of the obstacle's final depth (all of Gamma_C when the roller turns: the patch travels around it); the
+   others when they first become candidates. */
+static PetscErrorCode CondensedPrepare(RollerContactSolver s, Roller ctx, RollerContact c, const RollerStepOperator *op)
+{
+  Condensed      *cd = (Condensed *)s->data;
+  CondensedS     *cs;
+  PetscInt        m     = 0;
+  const PetscReal depth = ctx->obstacle.depth + c->opt.margin;
+
+  PetscFunctionBeginUser;
+  PetscCall(CondensedGetS(c, cd, op, &cs));
+  for (PetscInt i = 0; i < c->nodes.nc; ++i) {
+    const PetscBool turns = (PetscBool)(ctx->rotation.omega != 0 || ctx->rotation.a != 0);
+
+    /* at rest the obstacle's line stays at height g = depth - r_C along e2: the nodes with x_2 <= -r_C + depth */
+    if (!cs->have[i] && (turns || c->nodes.xc[2 * i + 1] <= -ctx->mesh.r_outer + depth)) cd->need[m++] = i;
+  }
+  PetscCall(CondensedColumns(ctx, c, op, cs, cd->need, m));
   PetscFunctionReturn(0);
 }
 
@@ -100,12 +164,9 @@ static inline PetscReal NormalEntry(const PetscReal *S, PetscInt n, const PetscR
 static PetscErrorCode FreeSolution(Roller ctx, RollerContact c, Condensed *cd, Vec b)
 {
   const PetscScalar *u;
-  KSPConvergedReason reason;
 
   PetscFunctionBeginUser;
-  PetscCall(KSPSolve(ctx->ops.ksp, b, cd->xf));
-  PetscCall(KSPGetConvergedReason(ctx->ops.ksp, &reason));
-  PetscCheck(reason > 0, ctx->comm, PETSC_ERR_NOT_CONVERGED, "The free solve of the contact step at t = %g diverged: %s", (double)c->step.t, KSPConvergedReasons[reason]);
+  PetscCall(RollerStepOperatorSolve(ctx, c->step.op, b, cd->xf, c->step.t));
   PetscCall(RollerContactGather(c, cd->xf, c->nodes.red));
   PetscCall(VecGetArrayRead(c->nodes.red, &u));
   for (PetscInt i = 0; i < c->nodes.nc; ++i) cd->gf[i] = PetscRealPart(u[2 * i]) * c->step.normal[0] + PetscRealPart(u[2 * i + 1]) * c->step.normal[1] - c->step.lower[i];
@@ -117,20 +178,25 @@ static PetscErrorCode FreeSolution(Roller ctx, RollerContact c, Condensed *cd, V
    level; then xi = xi_f + A^{-1} E N lambda. */
 static PetscErrorCode CondensedSolve(RollerContactSolver s, Roller ctx, RollerContact c, Vec b, Vec xi, RollerContactResult *res)
 {
-  Condensed         *cd  = (Condensed *)s->data;
-  RollerContactLCP  *lcp = &cd->lcp;
-  const PetscInt     n = 2 * c->nodes.nc, m = c->step.ncand, *cand = c->step.cand;
-  PetscReal          dmax = 0.0;
-  PetscBool          any  = PETSC_FALSE;
-  KSPConvergedReason reason;
+  Condensed        *cd  = (Condensed *)s->data;
+  RollerContactLCP *lcp = &cd->lcp;
+  const PetscInt    n = 2 * c->nodes.nc, m = c->step.ncand, *cand = c->step.cand;
+  PetscReal         dmax = 0.0;
+  PetscBool         any  = PETSC_FALSE;
+  CondensedS       *cs;
+  PetscInt          nneed = 0;
 
   PetscFunctionBeginUser;
+  PetscCall(CondensedGetS(c, cd, c->step.op, &cs));
+  for (PetscInt a = 0; a < m; ++a)
+    if (!cs->have[cand[a]]) cd->need[nneed++] = cand[a];
+  PetscCall(CondensedColumns(ctx, c, c->step.op, cs, cd->need, nneed));
   PetscCall(FreeSolution(ctx, c, cd, b));
   for (PetscInt a = 0; a < m; ++a) {
     lcp->d[a]   = cd->gf[cand[a]];
     lcp->act[a] = c->step.on_obstacle[cand[a]];
     dmax        = PetscMax(dmax, PetscAbsReal(lcp->d[a]));
-    for (PetscInt b2 = 0; b2 <= a; ++b2) lcp->G[a + (size_t)b2 * m] = lcp->G[b2 + (size_t)a * m] = NormalEntry(cd->S, n, c->step.normal, cand[a], cand[b2]);
+    for (PetscInt b2 = 0; b2 <= a; ++b2) lcp->G[a + (size_t)b2 * m] = lcp->G[b2 + (size_t)a * m] = NormalEntry(cs->S, n, c->step.normal, cand[a], cand[b2]);
   }
   res->its = 0;
   /* TAO: the gradient G lam + d is a gap (a length): converge it far below the gaps of the free solution */
@@ -143,15 +209,13 @@ static PetscErrorCode CondensedSolve(RollerContactSolver s, Roller ctx, RollerCo
       any                  = PETSC_TRUE;
     }
   /* with friction: the Coulomb multipliers from these (contact_friction.c; c->nodes.red still holds xi_f) */
-  if (c->friction) PetscCall(RollerContactFrictionSolve(ctx, c, cd->S, lcp, res));
+  if (c->friction) PetscCall(RollerContactFrictionSolve(ctx, c, cs->S, lcp, res));
   if (!any) {
     PetscCall(VecCopy(cd->xf, xi));
     PetscFunctionReturn(0);
   }
   PetscCall(RollerContactForce(c, res->lambda, c->friction ? res->lambda_t : NULL, cd->f));
-  PetscCall(KSPSolve(ctx->ops.ksp, cd->f, cd->corr));
-  PetscCall(KSPGetConvergedReason(ctx->ops.ksp, &reason));
-  PetscCheck(reason > 0, ctx->comm, PETSC_ERR_NOT_CONVERGED, "The contact correction solve at t = %g diverged: %s", (double)c->step.t, KSPConvergedReasons[reason]);
+  PetscCall(RollerStepOperatorSolve(ctx, c->step.op, cd->f, cd->corr, c->step.t));
   PetscCall(VecWAXPY(xi, 1.0, cd->xf, cd->corr));
   PetscFunctionReturn(0);
 }
@@ -161,8 +225,9 @@ static PetscErrorCode CondensedDestroy(RollerContactSolver s)
   Condensed *cd = (Condensed *)s->data;
 
   PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < CONDENSED_MAX_OPERATORS; ++k) PetscCall(PetscFree2(cd->s[k].S, cd->s[k].have));
   if (s->setupcalled) {
-    PetscCall(PetscFree2(cd->S, cd->gf));
+    PetscCall(PetscFree2(cd->gf, cd->need));
     PetscCall(RollerContactLCPDestroy(&cd->lcp));
     PetscCall(VecDestroy(&cd->xf));
     PetscCall(VecDestroy(&cd->f));
@@ -171,7 +236,7 @@ static PetscErrorCode CondensedDestroy(RollerContactSolver s)
   PetscFunctionReturn(0);
 }
 
-static const RollerContactSolverOps ops = {.setfromoptions = CondensedSetFromOptions, .setup = CondensedSetUp, .solve = CondensedSolve, .destroy = CondensedDestroy};
+static const RollerContactSolverOps ops = {.setfromoptions = CondensedSetFromOptions, .setup = CondensedSetUp, .prepare = CondensedPrepare, .solve = CondensedSolve, .destroy = CondensedDestroy};
 
 PetscErrorCode RollerContactSolverCreate_Condensed(RollerContactSolver s)
 {

@@ -44,12 +44,14 @@ typedef enum { ROLLER_BOXQP_ACTIVESET, ROLLER_BOXQP_TAO, ROLLER_BOXQP_VI, ROLLER
 PETSC_INTERN const char *const RollerBoxQPTypes[];
 
 /* A solver's operations. setfromoptions (optional) reads its own options inside the contact options block;
-   setup (optional) is called once before its first solve, when the Gamma_C nodes are known; solve finds the
-   minimizer xi with the bounds of the current candidate set (c->step) and its multipliers; destroy frees
+   setup (optional) is called once before its first solve, when the Gamma_C nodes are known; prepare (optional)
+   when a scheme has made a step matrix; solve finds the minimizer xi with the step matrix c->step.op and the
+   bounds of the current candidate set (c->step) and its multipliers; destroy frees
    what the data holds (the data itself is freed by RollerContactSolverDestroy). */
 typedef struct {
   PetscErrorCode (*setfromoptions)(RollerContactSolver, PetscOptionItems *);
   PetscErrorCode (*setup)(RollerContactSolver, Roller, RollerContact);
+  PetscErrorCode (*prepare)(RollerContactSolver, Roller, RollerContact, const RollerStepOperator *); /* optional: work for a step matrix */
   PetscErrorCode (*solve)(RollerContactSolver, Roller, RollerContact, Vec, Vec, RollerContactResult *);
   PetscErrorCode (*destroy)(RollerContactSolver);
 } RollerContactSolverOps;
@@ -100,15 +102,16 @@ typedef struct {
 /* The step (contact_candidates.c): time, rotation, obstacle height, contact basis (t^k, n^k), candidate set,
    bounds, the gaps of the last solve and the re-solves it took */
 typedef struct {
-  PetscReal  t, theta, g, normal[2], tangent[2];
-  PetscInt   ncand;
-  PetscInt  *cand;        /* candidate node indices, ascending */
-  PetscBool *is_cand;     /* nc flags */
-  PetscReal *lower;       /* nc lower bounds g^k - x_n . n^k of the normal displacement q_n */
-  PetscReal *gap;         /* nc gaps of a solution (scratch) */
-  PetscBool *on_obstacle; /* nc: gap^{k-1}_n <= tol, the nodes on the obstacle at the previous level, from
+  const RollerStepOperator *op; /* the step matrix of this solve (the scheme's) */
+  PetscReal                 t, theta, g, normal[2], tangent[2];
+  PetscInt                  ncand;
+  PetscInt                 *cand;        /* candidate node indices, ascending */
+  PetscBool                *is_cand;     /* nc flags */
+  PetscReal                *lower;       /* nc lower bounds g^k - x_n . n^k of the normal displacement q_n */
+  PetscReal                *gap;         /* nc gaps of a solution (scratch) */
+  PetscBool                *on_obstacle; /* nc: gap^{k-1}_n <= tol, the nodes on the obstacle at the previous level, from
                              xi^{k-1} (checkpointed state, so a restart takes the same decisions) */
-  PetscInt   resolves;
+  PetscInt                  resolves;
 } RollerContactStep;
 
 /* The accepted solution of the step: multipliers and iterations, the right-hand side it solved; work vectors
@@ -160,7 +163,7 @@ PETSC_INTERN PetscReal      RollerContactGapTolerance(Roller);
 
 /* contact_candidates.c */
 PETSC_INTERN PetscErrorCode RollerContactSetTime(Roller, RollerContact, PetscReal);
-PETSC_INTERN PetscErrorCode RollerContactSetUpStep(Roller, RollerContact, PetscReal);
+PETSC_INTERN PetscErrorCode RollerContactSetUpStep(Roller, RollerContact, const RollerContactStage *, PetscReal);
 PETSC_INTERN PetscErrorCode RollerContactAddPenetrating(Roller, RollerContact, PetscInt *);
 
 /* contact_report.c */
@@ -169,7 +172,7 @@ PETSC_INTERN PetscErrorCode RollerContactCheckStep(Roller, RollerContact, Vec, V
 PETSC_INTERN PetscErrorCode RollerContactCheckSummary(RollerContact);
 
 /* contact_energy.c */
-PETSC_INTERN PetscErrorCode RollerContactEnergy(Roller, RollerContact, const PetscReal[], RollerStepInfo *);
+PETSC_INTERN PetscErrorCode RollerContactFlips(Roller, RollerContact, const PetscReal[], RollerStepInfo *);
 
 /* contact_primal.c: the rotated primal problem of vi, tao and pcg, each of which holds one in its data:
    xi = Q z, A_hat = Q^T A Q, b_hat = Q^T b, and the bound z_q >= lower at the normal component of every

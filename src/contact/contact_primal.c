@@ -7,7 +7,8 @@
    of A_hat z - b_hat at the candidates whose bound is active. */
 #include "contact_impl.h"
 
-/* Q (pattern: 2x2 blocks at every Gamma_C node, diagonal elsewhere), A_hat, and the vectors. */
+/* Q (pattern: 2x2 blocks at every Gamma_C node, diagonal elsewhere), A_hat (of the step matrix c->step.op; a
+   scheme's matrices share their pattern, so A_hat is re-used for all of them), and the vectors. */
 PetscErrorCode RollerContactPrimalSetUp(Roller ctx, RollerContact c, RollerContactPrimal *pr)
 {
   PetscInt   nlocal, rstart, rend, *nnz;
@@ -36,7 +37,7 @@ PetscErrorCode RollerContactPrimalSetUp(Roller ctx, RollerContact c, RollerConta
   PetscCall(MatAssemblyBegin(pr->Q, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(pr->Q, MAT_FINAL_ASSEMBLY));
   PetscCall(PetscFree2(nnz, on_gamma));
-  PetscCall(MatPtAP(ctx->ops.A, pr->Q, MAT_INITIAL_MATRIX, 1.0, &pr->Ahat));
+  PetscCall(MatPtAP(c->step.op->A, pr->Q, MAT_INITIAL_MATRIX, 1.0, &pr->Ahat));
   PetscCall(PetscObjectSetName((PetscObject)pr->Ahat, "A_hat"));
   PetscCall(VecDuplicate(ctx->state.cur, &pr->z));
   PetscCall(VecDuplicate(ctx->state.cur, &pr->bhat));
@@ -45,12 +46,10 @@ PetscErrorCode RollerContactPrimalSetUp(Roller ctx, RollerContact c, RollerConta
   PetscCall(VecDuplicate(ctx->state.cur, &pr->r));
   PetscCall(VecDuplicateVecs(ctx->state.cur, 4, &pr->work));
   PetscCall(VecSet(pr->upper, PETSC_INFINITY));
-  PetscCall(MatNorm(ctx->ops.A, NORM_INFINITY, &pr->Anorm));
-  pr->ksp = ctx->ops.ksp;
   PetscFunctionReturn(0);
 }
 
-/* Q for the candidate set and (t^k, n^k) of the step; A_hat = Q^T A Q, b_hat = Q^T b; the bounds; the warm
+/* Q for the candidate set and (t^k, n^k) of the step; A_hat = Q^T A Q (A the step's matrix), b_hat = Q^T b; the bounds; the warm
    start z = max(Q^T xi^{k-1}, lower), feasible; the force scale of the tolerances, max(||b||, ||A|| ||z||):
    ||A||_inf ||z||_2 bounds ||A z||_2 (A symmetric) and sets the round-off floor of the gradient. */
 PetscErrorCode RollerContactPrimalSetUpStep(Roller ctx, RollerContact c, RollerContactPrimal *pr, Vec b)
@@ -71,7 +70,9 @@ PetscErrorCode RollerContactPrimalSetUpStep(Roller ctx, RollerContact c, RollerC
   }
   PetscCall(MatAssemblyBegin(pr->Q, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(pr->Q, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatPtAP(ctx->ops.A, pr->Q, MAT_REUSE_MATRIX, 1.0, &pr->Ahat));
+  PetscCall(MatPtAP(c->step.op->A, pr->Q, MAT_REUSE_MATRIX, 1.0, &pr->Ahat));
+  PetscCall(MatNorm(c->step.op->A, NORM_INFINITY, &pr->Anorm));
+  pr->ksp = c->step.op->ksp;
   PetscCall(MatSetOption(pr->Ahat, MAT_SYMMETRIC, PETSC_TRUE));
   PetscCall(MatSetOption(pr->Ahat, MAT_SPD, PETSC_TRUE));
   PetscCall(MatMultTranspose(pr->Q, b, pr->bhat));

@@ -15,7 +15,7 @@ PetscErrorCode RollerContactKKT(Roller ctx, RollerContact c, Vec xi, const Petsc
   PetscCall(RollerContactGather(c, xi, c->nodes.red));
   PetscCall(RollerContactGaps(c, c->nodes.red, c->step.gap, gap_min));
   PetscCall(RollerContactForce(c, lambda, lambda == acc->result.lambda ? acc->result.lambda_t : NULL, acc->force));
-  PetscCall(MatMult(ctx->ops.A, xi, acc->work));
+  PetscCall(MatMult(c->step.op->A, xi, acc->work));
   PetscCall(VecAXPBYPCZ(acc->work, -1.0, -1.0, 1.0, acc->b, acc->force));
   PetscCall(VecNorm(acc->work, NORM_2, &nr));
   PetscCall(VecNorm(acc->b, NORM_2, &nb));
@@ -161,7 +161,7 @@ PetscErrorCode RollerContactInfo(Roller ctx, RollerContact c, Vec xi, PetscReal 
   info->gap_min       = gap_min;
   info->qp_iterations = res->its;
   info->kkt_residual  = kkt;
-  PetscCall(RollerContactEnergy(ctx, c, res->lambda, info));
+  PetscCall(RollerContactFlips(ctx, c, res->lambda, info));
   if (c->friction) PetscCall(RollerContactFrictionInfo(ctx, c, res->lambda, info));
   if (c->opt.monitor) PetscCall(ContactMonitor(ctx, c, info));
   PetscFunctionReturn(0);

@@ -1,5 +1,6 @@
-/* Checkpoint and restart: the full state of the three-level scheme (xi^k, xi^{k-1}, xi^{k-2}, the step
-   k and its time; theta and the obstacle height are functions of time) in an HDF5 file, written to a
+/* Checkpoint and restart: the full state of the time scheme (xi^k, xi^{k-1}, xi^{k-2}, the vectors the scheme
+   keeps beyond them, the step k and its time, the cumulative works and the angular momentum of the last two
+   levels; theta and the obstacle height are functions of time) in an HDF5 file, written to a
    temporary name and renamed so that a kill during a write never leaves a corrupt latest checkpoint.
    SIGTERM/SIGINT (what a batch scheduler sends before the kill) make the driver finish the step, write a
    checkpoint and stop cleanly. -checkpoint_every N is an observer of the run that writes it every N steps. */
@@ -61,6 +62,18 @@ PetscErrorCode RollerCheckpointWrite(Roller ctx, const char *path)
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "mesh_h_contact", PETSC_REAL, &ctx->mesh.h_contact));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "mesh_contact_layer", PETSC_REAL, &ctx->mesh.contact_layer));
   for (PetscInt i = 0; i < 3; ++i) PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", work_names[i], PETSC_REAL, &ctx->state.works[i]));
+  {
+    Vec         kept[ROLLER_SCHEME_KEPT];
+    const char *names[ROLLER_SCHEME_KEPT], *scheme = RollerSchemeName(ctx);
+    PetscInt    n;
+
+    PetscCall(RollerSchemeKept(ctx, &n, kept, names));
+    for (PetscInt i = 0; i < n; ++i) PetscCall(RollerPlainVecView(kept[i], names[i], viewer, PETSC_FALSE));
+    PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "scheme", PETSC_STRING, scheme));
+    PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "momentum", PETSC_REAL, &ctx->state.momentum[0]));
+    PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "momentum_prev", PETSC_REAL, &ctx->state.momentum[1]));
+    PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "momentum_step", PETSC_INT, &ctx->state.momentum_step));
+  }
   PetscCall(PetscViewerDestroy(&viewer));
   PetscCall(RollerRenameFile(ctx->comm, tmp, path));
   PetscFunctionReturn(0);
@@ -94,6 +107,17 @@ PetscErrorCode RollerCheckpointDiscretization(Roller ctx, const char *path)
     PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "dt", PETSC_REAL, NULL, &ctx->ts.dt));
     ctx->ts.dt_set     = PETSC_TRUE;
     ctx->ts.dt_restart = PETSC_TRUE;
+  }
+  /* the scheme it was advanced with (checkpoints before the schemes: dmf) */
+  PetscCall(PetscViewerHDF5HasAttribute(viewer, "/", "scheme", &exists));
+  if (!ctx->ts.scheme[0]) {
+    if (exists) {
+      char *scheme;
+
+      PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "scheme", PETSC_STRING, NULL, &scheme));
+      PetscCall(PetscStrncpy(ctx->ts.scheme, scheme, sizeof(ctx->ts.scheme)));
+      PetscCall(PetscFree(scheme));
+    } else PetscCall(PetscStrncpy(ctx->ts.scheme, "dmf", sizeof(ctx->ts.scheme)));
   }
   PetscCall(PetscViewerHDF5HasAttribute(viewer, "/", "mesh_h", &exists));
   if (!ctx->mesh.h_set && !ctx->mesh.file[0] && exists) {
@@ -142,10 +166,43 @@ PetscErrorCode RollerCheckpointRead(Roller ctx, const char *path)
   }
   ctx->state.work_step     = ctx->state.step;
   ctx->state.momentum_step = -1;
+  {
+    PetscBool has;
+
+    PetscCall(PetscViewerHDF5HasAttribute(viewer, "/", "momentum_step", &has));
+    if (has) {
+      PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "momentum", PETSC_REAL, NULL, &ctx->state.momentum[0]));
+      PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "momentum_prev", PETSC_REAL, NULL, &ctx->state.momentum[1]));
+      PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "momentum_step", PETSC_INT, NULL, &ctx->state.momentum_step));
+    }
+  }
   PetscCall(PetscViewerDestroy(&viewer));
   PetscCall(MatMult(ctx->ops.K, ctx->state.cur, ctx->state.Kcur));
   PetscCall(MatMult(ctx->ops.K, ctx->state.prev, ctx->state.Kprev));
   PetscCall(MatMult(ctx->ops.K, ctx->state.prev2, ctx->state.Kprev2));
+  PetscFunctionReturn(0);
+}
+
+/* After the scheme's set-up: the vectors it keeps beyond the levels, as the checkpoint holds them (re-made from the
+   levels they would differ in the last bits, and a restart would not repeat the run exactly). */
+PetscErrorCode RollerCheckpointReadKept(Roller ctx, const char *path)
+{
+  PetscViewer viewer;
+  Vec         kept[ROLLER_SCHEME_KEPT];
+  const char *names[ROLLER_SCHEME_KEPT];
+  PetscInt    n;
+
+  PetscFunctionBeginUser;
+  PetscCall(RollerSchemeKept(ctx, &n, kept, names));
+  if (!n) PetscFunctionReturn(0);
+  PetscCall(CheckpointOpen(ctx, path, &viewer));
+  for (PetscInt i = 0; i < n; ++i) {
+    PetscBool has;
+
+    PetscCall(PetscViewerHDF5HasDataset(viewer, names[i], &has));
+    if (has) PetscCall(RollerPlainVecView(kept[i], names[i], viewer, PETSC_TRUE)); /* checkpoints before the schemes: the re-made ones */
+  }
+  PetscCall(PetscViewerDestroy(&viewer));
   PetscFunctionReturn(0);
 }
 

@@ -1,10 +1,11 @@
-/* The TS-like driver: advances the three-level DMF scheme from t = 0 (or a restart's step) to -ts_max_time
-   (or -ts_max_steps), runs the diagnostics of every step and hands every state to the observers
-   (integrate/monitor.c); a failed step or a caught signal ends in a checkpoint. */
+/* The TS-like driver: advances the time scheme (-ts_scheme) from t = 0 (or a restart's step) to -ts_max_time
+   (or -ts_max_steps), adds up the works of every step and hands every state to the observers (integrate/monitor.c),
+   which ask for the rest of the step's diagnostics when they write them; a failed step or a caught signal ends in
+   a checkpoint. */
 #include "integrate/integrate.h"
 
 /* A step failed (the step solve, the contact solver, a non-finite solution): the history still holds the
-   last good state (RollerStep rotates it only on success), so write it to the checkpoint before the error
+   last good state (a scheme moves its levels up only on success), so write it to the checkpoint before the error
    goes up, and say how to go on. Collective, like the failures it follows. */
 static PetscErrorCode StepFailed(Roller ctx, PetscErrorCode ierr)
 {
@@ -21,17 +22,17 @@ PetscErrorCode RollerRun(Roller ctx)
 
   PetscFunctionBeginUser;
   PetscCall(RollerStepCount(ctx, &nsteps));
-  PetscCall(RollerComputeStepInfo(ctx));
+  PetscCall(RollerStepAccumulate(ctx));
   PetscCall(RollerMonitorRun(ctx, ROLLER_MONITOR_INITIAL));
   while (ctx->state.step < nsteps) {
     PetscInt       sig;
     PetscErrorCode ierr;
 
     PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_STEP]));
-    ierr = RollerStep(ctx);
+    ierr = RollerSchemeStep(ctx);
     PetscCall(PetscLogStagePop()); /* also when the step failed: the checkpoint is written outside it */
     if (ierr) PetscCall(StepFailed(ctx, ierr));
-    PetscCall(RollerComputeStepInfo(ctx));
+    PetscCall(RollerStepAccumulate(ctx));
     PetscCall(RollerMonitorRun(ctx, ROLLER_MONITOR_STEP));
     PetscCall(RollerSignalCaught(ctx, &sig));
     if (sig) {

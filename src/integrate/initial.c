@@ -22,7 +22,8 @@ PetscErrorCode RollerInitialSetFromOptions(Roller ctx)
   PetscFunctionReturn(0);
 }
 
-/* xi^0 and xi^{-1} = xi^0 - dt eta^0 (docs/model.md section 2). */
+/* xi^0 and xi^{-1} = xi^0 - dt eta^0 (docs/model.md section 2), and eta^0 itself (state.velocity: the one-step
+   schemes start from it; the three-level ones replace it by (xi^0 - xi^{-1})/dt). */
 PetscErrorCode RollerInitialState(Roller ctx)
 {
   PetscFunctionBeginUser;
@@ -34,9 +35,13 @@ PetscErrorCode RollerInitialState(Roller ctx)
   PetscCall(VecDuplicate(ctx->state.next, &ctx->state.Kcur));
   PetscCall(VecDuplicate(ctx->state.next, &ctx->state.Kprev));
   PetscCall(VecDuplicate(ctx->state.next, &ctx->state.Kprev2));
+  PetscCall(VecDuplicate(ctx->state.next, &ctx->state.Mcur));
+  PetscCall(VecDuplicate(ctx->state.next, &ctx->state.velocity));
+  PetscCall(PetscObjectSetName((PetscObject)ctx->state.velocity, "velocity"));
   PetscCall(VecDuplicate(ctx->state.next, &ctx->state.rhs));
   PetscCall(VecDuplicate(ctx->state.next, &ctx->state.load));
   PetscCall(VecDuplicate(ctx->state.next, &ctx->state.work));
+  PetscCall(VecZeroEntries(ctx->state.velocity));
   switch (ctx->init.type) {
   case ROLLER_IC_REST:
     PetscCall(VecZeroEntries(ctx->state.cur));
@@ -51,10 +56,11 @@ PetscErrorCode RollerInitialState(Roller ctx)
   case ROLLER_IC_MODE:
     PetscCall(RollerInitialModeState(ctx));
     break;
-  case ROLLER_IC_MMS: /* the exact solution at t = 0, -dt, -2 dt */
+  case ROLLER_IC_MMS: /* the exact solution at t = 0, -dt, -2 dt, and its velocity at 0 */
     PetscCall(RollerMMSExact(ctx, 0.0, ctx->state.cur));
     PetscCall(RollerMMSExact(ctx, -ctx->ts.dt, ctx->state.prev));
     PetscCall(RollerMMSExact(ctx, -2.0 * ctx->ts.dt, ctx->state.prev2));
+    PetscCall(RollerMMSVelocity(ctx, 0.0, ctx->state.velocity));
     break;
   }
   PetscCall(MatMult(ctx->ops.K, ctx->state.cur, ctx->state.Kcur));
@@ -64,6 +70,7 @@ PetscErrorCode RollerInitialState(Roller ctx)
   ctx->state.time          = 0.0;
   ctx->state.work_step     = 0;
   ctx->state.momentum_step = -1;
+  ctx->state.info_step     = -1;
   for (PetscInt i = 0; i < 3; ++i) ctx->state.works[i] = 0.0;
   PetscFunctionReturn(0);
 }

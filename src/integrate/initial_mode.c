@@ -71,7 +71,8 @@ PetscErrorCode RollerInitialModeState(Roller ctx)
       PetscCall(DirectSolve(ctx, B, ctx->state.rhs, steady));
       PetscCall(MatDestroy(&B));
     }
-    for (PetscInt k = 0; k < 3; ++k) { /* A Re(z e^{lambda t}), t = -k dt: e^{lambda t} = e^{re t}(cos(im t) + i sin(im t)) */
+    PetscCall(VecAXPBYPCZ(ctx->state.velocity, A * re, -A * im, 0.0, xr, xi)); /* eta^0 = A Re(lambda z) */
+    for (PetscInt k = 0; k < 3; ++k) {                                         /* A Re(z e^{lambda t}), t = -k dt: e^{lambda t} = e^{re t}(cos(im t) + i sin(im t)) */
       const PetscReal t = -k * dt, cr = PetscExpReal(re * t) * PetscCosReal(im * t), ci = PetscExpReal(re * t) * PetscSinReal(im * t);
 
       PetscCall(VecCopy(steady, lev[k]));
@@ -89,6 +90,7 @@ PetscErrorCode RollerInitialModeState(Roller ctx)
     PetscCall(CorotatingRate(ctx, M0, D, lev[0], rate));        /* omega (d_phi - J) xi^0 */
     PetscCall(VecAXPBYPCZ(rate, A * re, -A * im, 1.0, xr, xi)); /* + A Re(lambda z) */
     for (PetscInt k = 1; k < 3; ++k) PetscCall(VecWAXPY(lev[k], -k * dt, rate, lev[0]));
+    PetscCall(VecCopy(rate, ctx->state.velocity)); /* eta^0 */
     PetscCall(MatDestroy(&D));
     PetscCall(MatDestroy(&M0));
     PetscCall(VecDestroy(&rate));

@@ -11,11 +11,12 @@ PetscErrorCode RollerTimeStepSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsReal("-ts_dt", "Time step dt (0: chosen from -ts_phase_error)", NULL, ctx->ts.dt, &ctx->ts.dt, &ctx->ts.dt_set));
   PetscCall(PetscOptionsReal("-ts_max_time", "End time", NULL, ctx->ts.max_time, &ctx->ts.max_time, NULL));
   PetscCall(PetscOptionsReal("-ts_phase_error", "Accuracy target that sets the default -ts_dt and -mesh_h: phase error of the fastest excited mode at the end time", NULL, ctx->ts.phase_error, &ctx->ts.phase_error, NULL));
-  PetscCall(PetscOptionsBool("-ts_view", "Print the discretization (degree, h, dt, Coriolis velocity) and the rule that chose it (also with -ts_monitor)", NULL, ctx->ts.view, &ctx->ts.view, NULL));
+  PetscCall(PetscOptionsBool("-ts_view", "Print the discretization (degree, h, scheme, dt) and the rule that chose it (also with -ts_monitor)", NULL, ctx->ts.view, &ctx->ts.view, NULL));
   PetscCall(PetscOptionsInt("-ts_max_steps", "Cap on the number of steps (-1: none)", NULL, ctx->ts.max_steps, &ctx->ts.max_steps, NULL));
   PetscCall(PetscOptionsBool("-quiet", "Silence the progress line", NULL, ctx->ts.quiet, &ctx->ts.quiet, NULL));
   PetscCall(PetscOptionsBool("-ts_monitor", "Print R, alpha, energy (and contact) every step", NULL, ctx->ts.monitor, &ctx->ts.monitor, &monitor_set));
   PetscOptionsEnd();
+  PetscCall(RollerSchemeSetFromOptions(ctx));
   if (monitor_set) ctx->ts.view = PETSC_TRUE; /* -ts_monitor in any form also views the discretization */
   PetscCheck(ctx->ts.phase_error > 0 && ctx->ts.phase_error < 1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_phase_error %g must lie in (0, 1)", (double)ctx->ts.phase_error);
   PetscCheck(ctx->ts.dt >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_dt %g must be > 0 (or 0: chosen from -ts_phase_error)", (double)ctx->ts.dt);
@@ -47,6 +48,7 @@ static PetscErrorCode MonitorLine(Roller ctx, RollerMonitorEvent event, void *mc
 
   PetscFunctionBeginUser;
   if (event == ROLLER_MONITOR_FINAL) PetscFunctionReturn(0);
+  PetscCall(RollerStepInfoGet(ctx));
   PetscCall(PetscPrintf(ctx->comm, "%5" PetscInt_FMT " t %-10.6g R %+.6e alpha %+.6e energy %.10e", ctx->state.step, (double)ctx->state.time, (double)info->R, (double)info->alpha, (double)info->energy));
   if (ctx->contact)
     PetscCall(PetscPrintf(ctx->comm, " contact %" PetscInt_FMT " force %.6e gap %+.3e its %" PetscInt_FMT " kkt %.2e", info->contact_nodes, (double)info->contact_force, (double)info->gap_min, info->qp_iterations, (double)info->kkt_residual));

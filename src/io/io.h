@@ -1,7 +1,7 @@
-/* The output layer (docs/output.md): every output is an observer of the run (RollerMonitorSet), set up by
-   RollerOutputSetUp from the "Roller: output" options.
-     output.c        the HDF5 fields and their observer; the output options
-     output_csv.c    the monitor CSV (docs/model.md section 6) and its observer
+/* The output layer (docs/output.md): the writers; the observers of the run that call them are the driver's
+   (integrate/observers.c), set up from the "Roller: output" options read here.
+     output.c        the HDF5 fields; the output options
+     output_csv.c    the monitor CSV (docs/model.md section 6)
      output_xdmf.c   the HDF5 layout and the XDMF index
      series.c        the diagnostics time series in the HDF5 file
      output_modes.c  the mode shapes of -modes and their XDMF index; one read back
@@ -28,17 +28,20 @@ PETSC_INTERN PetscErrorCode     RollerSeriesWrite(Roller, RollerSeries, PetscVie
 PETSC_INTERN PetscErrorCode     RollerSeriesDestroy(RollerSeries *);
 
 /* output_csv.c: the CSV writer (RollerCsvOpen's resume: the step a restart continues after, -1 for a new run;
-   RollerCsvClose: the successful end, F.part renamed to F) and its observer */
+   RollerCsvClose: the successful end, F.part renamed to F) */
 typedef struct _n_RollerCsv *RollerCsv;
 PETSC_INTERN PetscErrorCode  RollerCsvOpen(MPI_Comm, const char[], PetscInt, RollerCsv *);
 PETSC_INTERN PetscErrorCode  RollerCsvRow(RollerCsv, PetscInt, PetscReal, const RollerStepInfo *, PetscReal);
 PETSC_INTERN PetscErrorCode  RollerCsvClose(RollerCsv);
 PETSC_INTERN PetscErrorCode  RollerCsvDestroy(RollerCsv *);
-PETSC_INTERN PetscErrorCode  RollerCsvMonitorSetUp(Roller, const char[]);
 
-/* output.c: the fields (HDF5 + XDMF index) and the output options; every output set as an observer */
+/* output.c: the fields (HDF5 + XDMF index, the diagnostics series) and the output options */
 typedef struct _n_RollerOutput *RollerOutput;
-PETSC_INTERN PetscErrorCode     RollerOutputSetUp(Roller);
+PETSC_INTERN PetscErrorCode     RollerOutputSetFromOptions(Roller, char[], char[], size_t, PetscInt *); /* csv, h5 paths (empty: none), every */
+PETSC_INTERN PetscErrorCode     RollerFieldsCreate(Roller, const char[], PetscInt, RollerOutput *);
+PETSC_INTERN PetscErrorCode     RollerFieldsStep(Roller, RollerOutput); /* the step's diagnostics (ctx->info) and, every N steps, its fields */
+PETSC_INTERN PetscErrorCode     RollerFieldsClose(Roller, RollerOutput);
+PETSC_INTERN PetscErrorCode     RollerFieldsDestroy(RollerOutput *);
 
 /* output_modes.c: the shapes of -modes (HDF5 + XDMF) and one of them read back */
 PETSC_INTERN PetscErrorCode RollerModeShapesWrite(Roller, const char[], PetscInt, const PetscReal[], const PetscReal[], const PetscInt[], Vec[], Vec[], Vec);

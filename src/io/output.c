@@ -2,8 +2,9 @@
    fields every N steps to HDF5 with an XDMF index so ParaView opens it directly. Output is what was
    asked: without -monitor_csv no CSV, without -output no field is computed.
 
-   Each output is an observer of the run (RollerMonitorSet), set up here from the options: the CSV
-   (output_csv.c) and the fields (this file). A run that fails must not leave output that looks complete:
+   This layer writes; the observers of the run that call the writers are the driver's (integrate/observers.c). The
+   options are read here (RollerOutputSetFromOptions): the CSV (output_csv.c) and the fields (this file). A run that
+   fails must not leave output that looks complete:
    the files are written as F.part (CSV and HDF5) and <base>.part.xmf (the index) and renamed to F and
    <base>.xmf at the end of the run (ROLLER_MONITOR_FINAL), which only a successful run reaches. After every field write the HDF5 file is flushed and the new step appended to
    the index in place (XdmfAppend: written once, not rewritten, so N steps cost O(N)), so a killed run
@@ -160,12 +161,19 @@ PetscErrorCode RollerCheckParameters(Roller ctx, PetscViewer h5, const char opti
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode FieldsCreate(Roller ctx, RollerOutput out)
+/* -output path, every N steps: the HDF5 file (as path.part), the mesh, the parameters, the output spaces. */
+PetscErrorCode RollerFieldsCreate(Roller ctx, const char path[], PetscInt every, RollerOutput *output)
 {
   PetscErrorCode (*position[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {RollerPosition};
-  PetscBool has;
+  PetscBool    has;
+  RollerOutput out;
 
   PetscFunctionBeginUser;
+  PetscCall(PetscNew(&out));
+  out->every   = every;
+  out->xdmf.fd = -1;
+  PetscCall(PetscStrncpy(out->h5_path, path, sizeof(out->h5_path)));
+  *output = out;
   PetscCall(RollerXdmfPaths(out));
   PetscCall(RollerJoinPath(out->h5_part, sizeof(out->h5_part), out->h5_path, ".part", "-output"));
   PetscCall(RollerRemoveStale(ctx->comm, out->h5_path));
@@ -199,7 +207,6 @@ static PetscErrorCode FieldsCreate(Roller ctx, RollerOutput out)
     PetscCall(RollerFieldCreate(out->cdm, "contact_state", &out->field[FIELD_CONTACT_STATE]));
     out->nfields = FIELD_CONTACT_STATE + 1;
   }
-  PetscCall(DMCreateGlobalVector(ctx->mesh.dm, &out->velocity));
   PetscCall(DMCreateGlobalVector(out->sdm, &out->count));
   PetscCall(DMCreateGlobalVector(out->vdm, &out->position));
   PetscCall(DMProjectFunction(out->vdm, 0.0, position, NULL, INSERT_VALUES, out->position));
@@ -244,9 +251,7 @@ static PetscErrorCode WriteFields(Roller ctx, RollerOutput out)
   RollerTheta(ctx, ctx->state.time, &theta, NULL, NULL);
   PetscCall(RollerProjectAtVertices(ctx, ctx->state.cur, RollerPadVector, INSERT_VALUES, out->field[FIELD_DISPLACEMENT].vec));
   PetscCall(LabDisplacement(out, theta, out->field[FIELD_DISPLACEMENT].vec, out->field[FIELD_LAB].vec));
-  PetscCall(VecWAXPY(out->velocity, -1.0, ctx->state.prev, ctx->state.cur));
-  PetscCall(VecScale(out->velocity, 1.0 / ctx->ts.dt));
-  PetscCall(RollerProjectAtVertices(ctx, out->velocity, RollerPadVector, INSERT_VALUES, out->field[FIELD_VELOCITY].vec));
+  PetscCall(RollerProjectAtVertices(ctx, ctx->state.velocity, RollerPadVector, INSERT_VALUES, out->field[FIELD_VELOCITY].vec));
   /* |sigma| (docs/model.md section 4); DMProjectField hands the kernel the constants of the input DS, ctx->mesh.dm's */
   PetscCall(RollerProjectAtVertices(ctx, ctx->state.cur, f_stress_norm, ADD_VALUES, out->field[FIELD_STRESS].vec));
   PetscCall(VecPointwiseDivide(out->field[FIELD_STRESS].vec, out->field[FIELD_STRESS].vec, out->count));
@@ -270,8 +275,18 @@ static PetscErrorCode WriteFields(Roller ctx, RollerOutput out)
   PetscFunctionReturn(0);
 }
 
+/* The step's output: its diagnostics (ctx->info, made by the caller) to the series, the fields every -output_every
+   steps. */
+PetscErrorCode RollerFieldsStep(Roller ctx, RollerOutput out)
+{
+  PetscFunctionBeginUser;
+  PetscCall(RollerSeriesAppend(ctx, &out->series));
+  if (ctx->state.step % out->every == 0) PetscCall(WriteFields(ctx, out));
+  PetscFunctionReturn(0);
+}
+
 /* The successful end: the diagnostics series, the HDF5 file closed and renamed, the final index written. */
-static PetscErrorCode FieldsClose(Roller ctx, RollerOutput out)
+PetscErrorCode RollerFieldsClose(Roller ctx, RollerOutput out)
 {
   PetscFunctionBeginUser;
   PetscCall(RollerSeriesWrite(ctx, out->series, out->h5));
@@ -284,36 +299,16 @@ static PetscErrorCode FieldsClose(Roller ctx, RollerOutput out)
   PetscFunctionReturn(0);
 }
 
-/* The observer: the diagnostics of every state, the fields every -output_every steps (a restart continues
-   after its step), the files completed at the end. */
-static PetscErrorCode MonitorFields(Roller ctx, RollerMonitorEvent event, void *mctx)
-{
-  RollerOutput out = (RollerOutput)mctx;
-
-  PetscFunctionBeginUser;
-  if (event == ROLLER_MONITOR_INITIAL && ctx->ck.restart[0]) PetscFunctionReturn(0);
-  if (event == ROLLER_MONITOR_FINAL) {
-    PetscCall(FieldsClose(ctx, out));
-    PetscFunctionReturn(0);
-  }
-  PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_OUTPUT]));
-  PetscCall(RollerSeriesAppend(ctx, &out->series));
-  if (ctx->state.step % out->every == 0) PetscCall(WriteFields(ctx, out));
-  PetscCall(PetscLogStagePop());
-  PetscFunctionReturn(0);
-}
-
 /* Frees the fields output; files a run did not complete stay F.part (the viewer closes the HDF5 file). */
-static PetscErrorCode MonitorFieldsDestroy(void **mctx)
+PetscErrorCode RollerFieldsDestroy(RollerOutput *output)
 {
-  RollerOutput out = (RollerOutput)*mctx;
+  RollerOutput out = *output;
 
   PetscFunctionBeginUser;
   if (!out) PetscFunctionReturn(0);
   PetscCall(PetscViewerDestroy(&out->h5));
   PetscCall(RollerXdmfClose(out));
   for (PetscInt f = 0; f < out->nfields; ++f) PetscCall(VecDestroy(&out->field[f].vec));
-  PetscCall(VecDestroy(&out->velocity));
   PetscCall(VecDestroy(&out->count));
   PetscCall(VecDestroy(&out->position));
   PetscCall(DMDestroy(&out->vdm));
@@ -324,37 +319,25 @@ static PetscErrorCode MonitorFieldsDestroy(void **mctx)
   PetscCall(PetscFree(out->xdmf.times));
   PetscCall(RollerSeriesDestroy(&out->series));
   PetscCall(PetscFree(out));
-  *mctx = NULL;
+  *output = NULL;
   PetscFunctionReturn(0);
 }
 
-/* The outputs the options ask for, each set as an observer of the run: -monitor_csv F (output_csv.c),
-   -output F.h5 every -output_every steps. After a restart has read its step, so that the CSV continues it. */
-PetscErrorCode RollerOutputSetUp(Roller ctx)
+/* The output options: -monitor_csv F (output_csv.c), -output F.h5 every -output_every steps; empty paths: none. */
+PetscErrorCode RollerOutputSetFromOptions(Roller ctx, char csv[], char h5[], size_t len, PetscInt *every)
 {
-  char      csv[PETSC_MAX_PATH_LEN] = "", h5[PETSC_MAX_PATH_LEN] = "";
-  PetscInt  every   = 10;
   PetscBool has_csv = PETSC_FALSE, has_h5 = PETSC_FALSE;
 
   PetscFunctionBeginUser;
+  csv[0] = h5[0] = 0;
+  *every         = 10;
   PetscOptionsBegin(ctx->comm, NULL, "Roller: output", NULL);
-  PetscCall(PetscOptionsString("-monitor_csv", "One CSV row per step: step,t,R,alpha,energy,contact_nodes,contact_force,gap_min,qp_iterations,kkt_residual,theta", NULL, csv, csv, sizeof(csv), &has_csv));
-  PetscCall(PetscOptionsString("-output", "Fields to this HDF5 file, with an XDMF index beside it (F.h5 -> F.xmf)", NULL, h5, h5, sizeof(h5), &has_h5));
-  PetscCall(PetscOptionsInt("-output_every", "Write fields every N steps", NULL, every, &every, NULL));
+  PetscCall(PetscOptionsString("-monitor_csv", "One CSV row per step: step,t,R,alpha,energy,contact_nodes,contact_force,gap_min,qp_iterations,kkt_residual,theta", NULL, csv, csv, len, &has_csv));
+  PetscCall(PetscOptionsString("-output", "Fields to this HDF5 file, with an XDMF index beside it (F.h5 -> F.xmf)", NULL, h5, h5, len, &has_h5));
+  PetscCall(PetscOptionsInt("-output_every", "Write fields every N steps", NULL, *every, every, NULL));
   PetscOptionsEnd();
-  PetscCheck(every > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-output_every %" PetscInt_FMT " must be > 0", every);
+  PetscCheck(*every > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-output_every %" PetscInt_FMT " must be > 0", *every);
   PetscCheck(!has_csv || csv[0], ctx->comm, PETSC_ERR_ARG_WRONG, "-monitor_csv needs a file name");
   PetscCheck(!has_h5 || h5[0], ctx->comm, PETSC_ERR_ARG_WRONG, "-output needs a file name");
-  if (csv[0]) PetscCall(RollerCsvMonitorSetUp(ctx, csv));
-  if (h5[0]) {
-    RollerOutput out;
-
-    PetscCall(PetscNew(&out));
-    out->every   = every;
-    out->xdmf.fd = -1;
-    PetscCall(PetscStrncpy(out->h5_path, h5, sizeof(out->h5_path)));
-    PetscCall(RollerMonitorSet(ctx, MonitorFields, out, MonitorFieldsDestroy));
-    PetscCall(FieldsCreate(ctx, out));
-  }
   PetscFunctionReturn(0);
 }

@@ -1,5 +1,5 @@
 /* Private to the output*.c files: the fields output (HDF5 fields, XDMF index) and the helpers the files
-   share. One concern a file: output.c the fields and their observer, output_csv.c the CSV and its observer,
+   share. One concern a file: output.c the fields, output_csv.c the CSV,
    output_xdmf.c the HDF5 layout and the XDMF index (the file handling they share with the checkpoint is
    output_files.c, declared in io.h). */
 #ifndef ROLLER_IO_OUTPUT_H
@@ -45,7 +45,7 @@ typedef struct {
   Dataset    vertices, cells;
 } RollerXdmf;
 
-/* The fields output (-output F.h5): the observer's context. */
+/* The fields output (-output F.h5): the writer (its observer is integrate/observers.c). */
 struct _n_RollerOutput {
   /* HDF5 h5_path (written as h5_part) and its index */
   char        h5_path[PETSC_MAX_PATH_LEN], h5_part[PETSC_MAX_PATH_LEN];
@@ -56,7 +56,6 @@ struct _n_RollerOutput {
   /* Output spaces on the same mesh: vdm P1 with 3 components; sdm, pdm (contact pressure), tdm and cdm (the
      friction traction and the stick/slip state) P1 scalar */
   DM           vdm, sdm, pdm, tdm, cdm;
-  Vec          velocity; /* on ctx->mesh.dm */
   Vec          position; /* (x, y, 0) at every vertex (vdm) */
   Vec          count;    /* the number of cells around every vertex (sdm) */
   OutputField  field[MAX_FIELDS];

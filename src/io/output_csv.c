@@ -1,6 +1,6 @@
 /* The monitor CSV (docs/model.md section 6.1): one row per step, %.17g so that it round-trips; written as
    F.part and renamed at the successful end; a restart continues the rows of the run it restarts. Rank 0
-   writes. -monitor_csv F makes it an observer of the run (RollerCsvMonitorSetUp). */
+   writes. -monitor_csv F makes the driver call it (integrate/observers.c). */
 #include "output.h"
 
 struct _n_RollerCsv {
@@ -104,42 +104,5 @@ PetscErrorCode RollerCsvDestroy(RollerCsv *csv)
   if (!*csv) PetscFunctionReturn(0);
   if ((*csv)->open) PetscCall(PetscFClose((*csv)->comm, (*csv)->fp));
   PetscCall(PetscFree(*csv));
-  PetscFunctionReturn(0);
-}
-
-/* The observer: a row for every state (a restart continues after its row), the rename at the end. */
-static PetscErrorCode MonitorCsv(Roller ctx, RollerMonitorEvent event, void *mctx)
-{
-  RollerCsv csv = (RollerCsv)mctx;
-  PetscReal theta;
-
-  PetscFunctionBeginUser;
-  if (event == ROLLER_MONITOR_INITIAL && ctx->ck.restart[0]) PetscFunctionReturn(0);
-  if (event == ROLLER_MONITOR_FINAL) {
-    PetscCall(RollerCsvClose(csv));
-    PetscFunctionReturn(0);
-  }
-  PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_OUTPUT]));
-  RollerTheta(ctx, ctx->state.time, &theta, NULL, NULL);
-  PetscCall(RollerCsvRow(csv, ctx->state.step, ctx->state.time, &ctx->info, theta));
-  PetscCall(PetscLogStagePop());
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode MonitorCsvDestroy(void **mctx)
-{
-  PetscFunctionBeginUser;
-  PetscCall(RollerCsvDestroy((RollerCsv *)mctx));
-  PetscFunctionReturn(0);
-}
-
-/* -monitor_csv path: opened now (after a restart has read its step), a row for every state from then on. */
-PetscErrorCode RollerCsvMonitorSetUp(Roller ctx, const char path[])
-{
-  RollerCsv csv;
-
-  PetscFunctionBeginUser;
-  PetscCall(RollerCsvOpen(ctx->comm, path, ctx->ck.restart[0] ? ctx->state.step : -1, &csv));
-  PetscCall(RollerMonitorSet(ctx, MonitorCsv, csv, MonitorCsvDestroy));
   PetscFunctionReturn(0);
 }

@@ -1,11 +1,9 @@
 /* Accurate by default (docs/model.md section 6.2): when -ts_dt or -mesh_h is not given, they are derived
    from the scene so that the max errors of R and alpha stay below the target -ts_phase_error P at the end
    time T. Each output's error is dominated by one mode and one source:
-     time:  the DMF is Newmark with beta = 1/2: the period of a mode of angular frequency w grows by
-            (5/24)(w dt)^2, so its phase error after T is phi = (5/24) w T (w dt)^2. R swings between 0 and
-            twice its static value at the radial breathing mode w_b (n = 0, P wave), so its relative error
-            is about phi/2: dt makes phi = P for the fastest mode the scene excites, max(w_b, b), which
-            leaves P/2 for R's spatial error (measured <= 0.2 P).
+     time:  the scheme's phase error of the fastest mode the scene excites, max(w_b, b) (w_b the radial breathing
+            mode, n = 0, P wave, which R swings at): dt makes it P after T (integrate/scheme.c, with each
+            scheme's own phase error), which leaves P/2 of R's error for its spatial part (measured <= 0.2 P).
      space: alpha oscillates about 0 at the slow torsional mode w_t (n = 0, S wave), whose spatial frequency
             error accumulates: its phase error after T, calibrated on the exact axisymmetric reference, is
             C_k w_t T (h/L)^q_k with L = r_C - r_D; h makes it 0.7 P, which leaves 0.3 P for alpha's
@@ -96,14 +94,61 @@ PetscErrorCode RollerModeFrequencies(Roller ctx, PetscReal *w_breathing, PetscRe
   PetscFunctionReturn(0);
 }
 
-/* How a discretization parameter was chosen, for -ts_view and -info. */
-static const char *Source(PetscBool set, PetscBool restart)
+/* The radial (n = 0, P) modes that R carries, for the time schemes' dt (docs/model.md section 6.2): the first n
+   roots w_j of the breathing determinant and the amplitudes a_j of the modes in R(t) = sum_j a_j (1 - cos(w_j t))
+   when the centrifugal load rho omega^2 r is switched on at rest (the scenes' start), normalized to sum a_j = 1:
+   a_j = F_j phi_j(r_C)/(w_j^2 m_j), F_j = int rho r phi_j r dr, m_j = int rho phi_j^2 r dr, phi_j = J1(k_j r) + B_j
+   Y1(k_j r) (phi_j(r_D) = 0). The load's jump at r_D makes a_j decay only algebraically (~ j^-3): a higher-order
+   scheme's error is then set by the second and third modes as much as by the first. */
+PetscErrorCode RollerRadialModes(Roller ctx, PetscInt nmax, PetscReal w[], PetscReal a[], PetscInt *n)
 {
-  return restart ? "from the checkpoint" : (set ? "given" : "from -ts_phase_error");
+  const PetscReal ri = ctx->mesh.r_inner, ro = ctx->mesh.r_outer, L = ro - ri, c_p = PetscSqrtReal((ctx->material.lambda + 2 * ctx->material.mu) / ctx->material.density);
+  const PetscInt  nq = 200, nscan = 40000;
+  PetscReal      *xq, *wq, k0 = 1e-3 / L, f0, sum = 0.0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc2(nq, &xq, nq, &wq));
+  PetscCall(PetscDTGaussQuadrature(nq, ri, ro, xq, wq));
+  f0 = BreathingDeterminant(k0, ri, ro, ctx->material.lambda, ctx->material.mu);
+  *n = 0;
+  for (PetscInt i = 1; i <= nscan && *n < nmax; i++) {
+    const PetscReal k1 = (PetscReal)i * 4.0 * nmax / (nscan * L), f1 = BreathingDeterminant(k1, ri, ro, ctx->material.lambda, ctx->material.mu);
+
+    if ((f0 < 0) != (f1 < 0)) {
+      PetscReal lo = k0, hi = k1, flo = f0, k, B, m = 0.0, F = 0.0;
+
+      for (PetscInt it = 0; it < 100 && hi - lo > 1e-14 * hi; it++) {
+        const PetscReal mid = 0.5 * (lo + hi), fm = BreathingDeterminant(mid, ri, ro, ctx->material.lambda, ctx->material.mu);
+
+        if ((flo < 0) == (fm < 0)) {
+          lo  = mid;
+          flo = fm;
+        } else hi = mid;
+      }
+      k = 0.5 * (lo + hi);
+      B = -j1(k * ri) / y1(k * ri);
+      for (PetscInt q = 0; q < nq; q++) {
+        const PetscReal phi = j1(k * xq[q]) + B * y1(k * xq[q]);
+
+        m += wq[q] * phi * phi * xq[q];
+        F += wq[q] * xq[q] * phi * xq[q];
+      }
+      w[*n] = k * c_p;
+      a[*n] = F * (j1(k * ro) + B * y1(k * ro)) / (w[*n] * w[*n] * m);
+      sum += a[*n];
+      (*n)++;
+    }
+    k0 = k1;
+    f0 = f1;
+  }
+  PetscCheck(*n > 0 && sum != 0, ctx->comm, PETSC_ERR_PLIB, "No radial breathing mode found for -r_inner %g -r_outer %g", (double)ri, (double)ro);
+  for (PetscInt j = 0; j < *n; j++) a[j] /= sum;
+  PetscCall(PetscFree2(xq, wq));
+  PetscFunctionReturn(0);
 }
 
 /* The end time the error target refers to: -ts_max_time, at least one period of the fastest mode. */
-static PetscReal EndTime(Roller ctx, PetscReal w_fast)
+PetscReal RollerEndTime(Roller ctx, PetscReal w_fast)
 {
   return PetscMax(ctx->ts.max_time, 2 * PETSC_PI / w_fast);
 }
@@ -116,7 +161,7 @@ PetscErrorCode RollerChooseMeshSize(Roller ctx)
   PetscFunctionBeginUser;
   if (ctx->mesh.h_set || ctx->mesh.file[0]) PetscFunctionReturn(0);
   PetscCall(RollerModeFrequencies(ctx, &w_b, &w_t));
-  T           = EndTime(ctx, PetscMax(w_b, ctx->rotation.b));
+  T           = RollerEndTime(ctx, PetscMax(w_b, ctx->rotation.b));
   ctx->mesh.h = L * PetscPowReal(0.7 * ctx->ts.phase_error / (calibration_C[ctx->disc.degree] * w_t * T), 1.0 / calibration_q[ctx->disc.degree]);
   ctx->mesh.h = PetscMin(ctx->mesh.h, 0.5 * L); /* at least two elements across the wall */
   PetscCall(PetscInfo(NULL, "-mesh_h %g from -ts_phase_error %g: torsional mode w_t = %g (period %g), T = %g, P%" PetscInt_FMT "\n", (double)ctx->mesh.h, (double)ctx->ts.phase_error, (double)w_t, (double)(2 * PETSC_PI / w_t), (double)T, ctx->disc.degree));
@@ -138,39 +183,6 @@ PetscErrorCode RollerChooseMeshSize(Roller ctx)
     } else if (a / 5.0 < ctx->mesh.h && ctx->mesh.h_contact == 0) {
       ctx->mesh.h = a / 5.0;
       PetscCall(PetscInfo(NULL, "-mesh_h %g: five elements across the contact half-width sqrt(r_outer depth) = %g\n", (double)ctx->mesh.h, (double)a));
-    }
-  }
-  PetscFunctionReturn(0);
-}
-
-/* -ts_dt when not given: (5/24) w T (w dt)^2 = P for the fastest excited mode w = max(w_b, b). Called after
-   the mesh is read, so that the radii of a mesh file count. */
-PetscErrorCode RollerChooseTimeStep(Roller ctx)
-{
-  PetscReal w_b, w_t, w, T;
-
-  PetscFunctionBeginUser;
-  PetscCall(RollerModeFrequencies(ctx, &w_b, &w_t));
-  w = PetscMax(w_b, ctx->rotation.b);
-  T = EndTime(ctx, w);
-  if (!ctx->ts.dt_set) ctx->ts.dt = PetscSqrtReal(24.0 * ctx->ts.phase_error / (5.0 * w * w * w * T));
-  PetscCall(PetscInfo(NULL, "-ts_dt %g (%s): fastest excited mode w = %g (period %g, %s), T = %g, phase error target %g\n", (double)ctx->ts.dt, Source(ctx->ts.dt_set, ctx->ts.dt_restart), (double)w, (double)(2 * PETSC_PI / w), w_b >= ctx->rotation.b ? "radial breathing" : "forcing b", (double)T,
-                      (double)ctx->ts.phase_error));
-  if (ctx->ts.view) {
-    const PetscReal phase = 5.0 * w * T * PetscSqr(w * ctx->ts.dt) / 24.0;
-
-    PetscCall(PetscPrintf(ctx->comm, "roller: P%" PetscInt_FMT "%s, %s -mesh_h %g, -ts_dt %g (%s), -coriolis_velocity %s\n", ctx->disc.degree, ctx->mesh.curved ? " curved" : "",
-                          ctx->mesh.file[0] ? "mesh file, not" : (ctx->mesh.h_set ? Source(PETSC_TRUE, ctx->mesh.h_restart) : "from -ts_phase_error:"), (double)ctx->mesh.h, (double)ctx->ts.dt, Source(ctx->ts.dt_set, ctx->ts.dt_restart),
-                          RollerCoriolisVelocities[ctx->disc.coriolis]));
-    PetscCall(PetscPrintf(ctx->comm, "roller: fastest excited mode: %s, w = %g (period %g); torsional mode w_t = %g (period %g); end time %g; its phase error (5/24) w T (w dt)^2 = %.3g (target %g)\n", w_b >= ctx->rotation.b ? "radial breathing" : "the forcing b", (double)w, (double)(2 * PETSC_PI / w), (double)w_t, (double)(2 * PETSC_PI / w_t), (double)T, (double)phase,
-                          (double)ctx->ts.phase_error));
-    if (ctx->mesh.h_contact > 0) {
-      const PetscReal v = PetscAbsReal(ctx->rotation.omega) * ctx->mesh.r_outer; /* speed of Gamma_C past the obstacle */
-
-      PetscCall(PetscPrintf(ctx->comm, "roller: mesh graded toward Gamma_C: -mesh_h_contact %g within -mesh_contact_layer %g, -mesh_h %g in the bulk; dt is set by the bulk modes above, not by h_c", (double)ctx->mesh.h_contact, (double)ctx->mesh.contact_layer,
-                            (double)ctx->mesh.h));
-      if (v > 0) PetscCall(PetscPrintf(ctx->comm, "; element passing f_e = omega r_C / h_c = %g (period %g = %.1f steps)", (double)(v / ctx->mesh.h_contact), (double)(ctx->mesh.h_contact / v), (double)(ctx->mesh.h_contact / (v * ctx->ts.dt))));
-      PetscCall(PetscPrintf(ctx->comm, "\n"));
     }
   }
   PetscFunctionReturn(0);

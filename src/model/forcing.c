@@ -66,3 +66,36 @@ PetscErrorCode RollerApplyRotate90(Vec x, Vec y)
   PetscCall(VecRestoreArrayWrite(y, &ya));
   PetscFunctionReturn(0);
 }
+
+/* y = cos(phi) x + sin(phi) R(-pi/2) x at every node: the exact flow of the Coriolis force on the velocity,
+   v' = 2 theta' R(-pi/2) v, over an interval in which theta advances by phi/2 (docs/model.md section 2.1); x and y
+   may be the same Vec. It commutes with M (M acts alike on both components) and keeps v . M v. */
+PetscErrorCode RollerApplyRotation(Vec x, PetscReal phi, Vec y)
+{
+  const PetscReal    c = PetscCosReal(phi), s = PetscSinReal(phi);
+  const PetscScalar *xa;
+  PetscScalar       *ya;
+  PetscInt           n;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(x, &n));
+  if (x == y) {
+    PetscCall(VecGetArray(y, &ya));
+    xa = ya;
+  } else {
+    PetscCall(VecGetArrayRead(x, &xa));
+    PetscCall(VecGetArrayWrite(y, &ya));
+  }
+  for (PetscInt i = 0; i < n; i += 2) {
+    const PetscScalar a = xa[i], b = xa[i + 1];
+
+    ya[i]     = c * a + s * b;
+    ya[i + 1] = c * b - s * a;
+  }
+  if (x == y) PetscCall(VecRestoreArray(y, &ya));
+  else {
+    PetscCall(VecRestoreArrayRead(x, &xa));
+    PetscCall(VecRestoreArrayWrite(y, &ya));
+  }
+  PetscFunctionReturn(0);
+}

@@ -2,12 +2,12 @@
      material.c     -young, -poisson, -density, the Lame constants, the material constants of the kernels
      forcing.c      the rotation theta(t) (-omega, -theta_a, -theta_b), the obstacle height g(t), R(-pi/2)
      fe.c           the discretization options, the PetscFE space and Dirichlet boundary, one DM per operator
-     operators.c    M, K, G, A, the rigid-body loads, the load assembly, the nodal positions
+     operators.c    M, K, G, the rigid-body loads, the load assembly, the nodal positions
      mass.c         -contact_mass, the massless contact nodes M_red = T^T M T and their loads T^T L
      mass_transfer.c, mass_layer.c  T: the weights of each Gamma_C node, from the cells around Gamma_C
-     solver.c       the factorization of A and the defaults of every direct solve
+     solver.c       the step matrices A = c_M M + c_K K of the time schemes, factored once; the defaults of every direct solve
      functionals.c  w_R, w_alpha and |Gamma_C| (boundary integrals on Gamma_C)
-     accuracy.c     the default dt and h from -ts_phase_error
+     accuracy.c     the default h from -ts_phase_error, the breathing and torsional frequencies (the time schemes' dt)
      kernels.h      pointwise FE kernels, the one kernel signature, the material constants */
 #ifndef ROLLER_MODEL_H
 #define ROLLER_MODEL_H
@@ -26,6 +26,7 @@ PETSC_INTERN void           RollerTheta(Roller, PetscReal, PetscReal *, PetscRea
 PETSC_INTERN PetscReal      RollerSheetPosition(Roller, PetscReal);
 PETSC_INTERN PetscReal      RollerObstacleHeight(Roller, PetscReal);
 PETSC_INTERN PetscErrorCode RollerApplyRotate90(Vec, Vec);
+PETSC_INTERN PetscErrorCode RollerApplyRotation(Vec, PetscReal, Vec); /* cos(phi) x + sin(phi) R(-pi/2) x, nodal */
 
 /* fe.c */
 PETSC_INTERN PetscErrorCode RollerDiscretizationSetFromOptions(Roller);
@@ -34,7 +35,6 @@ PETSC_INTERN PetscErrorCode RollerOperatorDMCreate(Roller, PetscFE, DM *); /* a 
 
 /* operators.c */
 PETSC_INTERN PetscErrorCode RollerOperatorsSetUp(Roller);
-PETSC_INTERN PetscErrorCode RollerUpdateGyroscopic(Roller, PetscReal);
 PETSC_INTERN PetscErrorCode RollerAddLoad(DM, Vec);                                                                         /* b += the residual kernel's load on an operator's DM */
 PETSC_INTERN PetscErrorCode RollerAssembleMatrix(Roller, const char *, PetscPointJac, PetscPointJac, PetscPointJac, Mat *); /* g0, g1, g3 on its own DM */
 PETSC_INTERN PetscErrorCode RollerAssembleLoad(Roller, PetscPointFunc, Vec *);                                              /* (f0, v) on its own DM */
@@ -47,16 +47,20 @@ PETSC_INTERN PetscErrorCode RollerMassReduce(Mat, PetscReal, Mat *);  /* B <- T^
 PETSC_INTERN PetscErrorCode RollerMassReduceLoad(Mat, Vec);           /* L <- T^T L */
 PETSC_INTERN PetscErrorCode RollerMassReducePattern(Mat, Mat, Mat *); /* G <- T^T G T (skew) on A's pattern, widened */
 
-/* solver.c */
-PETSC_INTERN PetscErrorCode RollerStepSolverSetUp(Roller);
+/* solver.c: the step matrices of the time schemes */
+PETSC_INTERN PetscErrorCode RollerStepOperatorCreate(Roller, PetscReal, PetscReal, Mat, PetscReal, PetscInt, RollerStepOperator *); /* c_M, c_K, G or NULL, c_G, id */
+PETSC_INTERN PetscErrorCode RollerStepOperatorUpdateGyroscopic(RollerStepOperator *, PetscReal);
+PETSC_INTERN PetscErrorCode RollerStepOperatorSolve(Roller, const RollerStepOperator *, Vec, Vec, PetscReal); /* b, x, t (for the message) */
+PETSC_INTERN PetscErrorCode RollerStepOperatorDestroy(RollerStepOperator *);
 PETSC_INTERN PetscErrorCode RollerDirectSolverDefaults(KSP, PCType); /* preonly + factorization: ND serial, MUMPS parallel */
 
 /* functionals.c */
 PETSC_INTERN PetscErrorCode RollerComputeBoundaryFunctionals(Roller);
 
-/* accuracy.c: the default -mesh_h and -ts_dt from the accuracy target -ts_phase_error */
+/* accuracy.c: the default -mesh_h from the accuracy target -ts_phase_error, the modes that set it and dt */
 PETSC_INTERN PetscErrorCode RollerModeFrequencies(Roller, PetscReal *, PetscReal *);
+PETSC_INTERN PetscReal      RollerEndTime(Roller, PetscReal);                                          /* -ts_max_time, at least one period of w */
+PETSC_INTERN PetscErrorCode RollerRadialModes(Roller, PetscInt, PetscReal[], PetscReal[], PetscInt *); /* nmax, w_j, a_j (sum 1), n */
 PETSC_INTERN PetscErrorCode RollerChooseMeshSize(Roller);
-PETSC_INTERN PetscErrorCode RollerChooseTimeStep(Roller);
 
 #endif

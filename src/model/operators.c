@@ -1,5 +1,5 @@
-/* The constant operators of the DMF step (docs/model.md section 2): mass M, stiffness K, the gyroscopic G,
-   A = rho/dt^2 M + (1/2 + tau/(2 dt)) K (+ eta/(2 dt) M) (- rho theta'/dt G), the loads of the rigid part of f,
+/* The constant operators of the model (docs/model.md section 2): mass M, stiffness K, the gyroscopic G (only for the
+   centred Coriolis velocity), the loads of the rigid part of f,
    the nodal positions; with -contact_mass redistributed M, G and the loads are T^T M T, T^T G T, T^T L
    (mass.c). Each bilinear form and load is assembled on a DM of its own (RollerOperatorDMCreate), whose
    PetscDS holds exactly its kernel and the constants that kernel reads, set once: no assembly changes what
@@ -64,27 +64,11 @@ PetscErrorCode RollerAssembleLoad(Roller ctx, RollerPointFunc f0, Vec *L)
   PetscFunctionReturn(0);
 }
 
-/* The implicit centred Coriolis term: A = A0 - rho theta'(t_{k-1})/dt G. With a constant theta' (no
-   perturbation) this happens once; with theta_a != 0 every step, and the factorization is redone. */
-PetscErrorCode RollerUpdateGyroscopic(Roller ctx, PetscReal t1)
-{
-  PetscReal td;
-
-  PetscFunctionBeginUser;
-  if (!ctx->ops.Gyro || (ctx->ops.ksp && ctx->rotation.a * ctx->rotation.b == 0)) PetscFunctionReturn(0);
-  RollerTheta(ctx, t1, NULL, &td, NULL);
-  PetscCall(MatCopy(ctx->ops.A0, ctx->ops.A, SAME_NONZERO_PATTERN));
-  PetscCall(MatAXPY(ctx->ops.A, -ctx->material.density * td / ctx->ts.dt, ctx->ops.Gyro, SAME_NONZERO_PATTERN));
-  if (ctx->ops.ksp) PetscCall(KSPSetOperators(ctx->ops.ksp, ctx->ops.A, ctx->ops.A));
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode RollerOperatorsSetUp(Roller ctx)
 {
   PetscErrorCode (*position[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {RollerPosition};
 
-  const PetscReal shift = ctx->material.density / (ctx->ts.dt * ctx->ts.dt) + ctx->disc.damping / (2.0 * ctx->ts.dt);
-  Mat             T; /* massless contact nodes: M <- T^T M T (model/mass.c); NULL with the consistent mass */
+  Mat T; /* massless contact nodes: M <- T^T M T (model/mass.c); NULL with the consistent mass */
 
   PetscFunctionBeginUser;
   PetscCall(DMCreateGlobalVector(ctx->mesh.dm, &ctx->ops.coordinates));
@@ -93,23 +77,19 @@ PetscErrorCode RollerOperatorsSetUp(Roller ctx)
   PetscCall(RollerAssembleMatrix(ctx, "M", g0_mass, NULL, NULL, &ctx->ops.M));
   if (T) PetscCall(RollerMassReduce(T, 1.0, &ctx->ops.M));
   PetscCall(RollerAssembleMatrix(ctx, "K", NULL, NULL, g3_elastic, &ctx->ops.K));
-  PetscCall(MatDuplicate(ctx->ops.K, MAT_COPY_VALUES, &ctx->ops.A));
-  if (!ctx->disc.static_solve) { /* -static: A = K, the step from rest is min 1/2 xi^T K xi over the admissible set */
-    /* Kelvin-Voigt: tau K (xi^k - xi^{k-2})/(2 dt), centred on t_{k-1} like the mass damping (docs/model.md section 2) */
-    PetscCall(MatScale(ctx->ops.A, 0.5 + ctx->material.viscosity / (2.0 * ctx->ts.dt)));
-    PetscCall(MatAXPY(ctx->ops.A, shift, ctx->ops.M, T ? DIFFERENT_NONZERO_PATTERN : SAME_NONZERO_PATTERN)); /* T^T M T couples more nodes than K */
+  if (ctx->disc.coriolis == ROLLER_CORIOLIS_CENTERED && !ctx->eig.on) {
+    /* the centred Coriolis term's step matrix A - rho theta'/dt G (integrate/scheme_newmark.c): G on the pattern of
+       the step matrix, K + M (T^T G T couples more nodes than G) */
+    PetscCall(RollerAssembleMatrix(ctx, "G", g0_gyro, NULL, NULL, &ctx->ops.G));
+    if (T) {
+      Mat P;
+
+      PetscCall(MatDuplicate(ctx->ops.K, MAT_COPY_VALUES, &P));
+      PetscCall(MatAXPY(P, 1.0, ctx->ops.M, DIFFERENT_NONZERO_PATTERN));
+      PetscCall(RollerMassReducePattern(T, P, &ctx->ops.G));
+      PetscCall(MatDestroy(&P));
+    }
   }
-  if (ctx->disc.coriolis == ROLLER_CORIOLIS_CENTERED) {
-    /* A - rho theta'/dt G: no longer symmetric (G is skew), still positive definite */
-    PetscCall(RollerAssembleMatrix(ctx, "G", g0_gyro, NULL, NULL, &ctx->ops.Gyro));
-    if (T) PetscCall(RollerMassReducePattern(T, ctx->ops.A, &ctx->ops.Gyro)); /* T^T G T, on A's pattern */
-    PetscCall(MatDuplicate(ctx->ops.A, MAT_COPY_VALUES, &ctx->ops.A0));
-    PetscCall(RollerUpdateGyroscopic(ctx, 0.0));
-  } else {
-    PetscCall(MatSetOption(ctx->ops.A, MAT_SPD, PETSC_TRUE));
-    PetscCall(MatSetOption(ctx->ops.A, MAT_SPD_ETERNAL, PETSC_TRUE));
-  }
-  PetscCall(PetscObjectSetName((PetscObject)ctx->ops.A, "A"));
   PetscCall(RollerAssembleLoad(ctx, f0_euler, &ctx->ops.L_euler));
   PetscCall(RollerAssembleLoad(ctx, f0_centrifugal, &ctx->ops.L_centrifugal));
   if (T) { /* M_red x = T^T M x: the loads of M_red */
@@ -117,6 +97,5 @@ PetscErrorCode RollerOperatorsSetUp(Roller ctx)
     PetscCall(RollerMassReduceLoad(T, ctx->ops.L_centrifugal));
   }
   PetscCall(MatDestroy(&T));
-  if (!ctx->eig.on) PetscCall(RollerStepSolverSetUp(ctx)); /* -modes factors its own shifted operator */
   PetscFunctionReturn(0);
 }

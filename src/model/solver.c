@@ -1,5 +1,5 @@
-/* The step solver: a direct factorization of A, computed once and reused by every step, and the defaults of
-   every factorization Roller makes. */
+/* The step solvers: a step matrix A = c_M M + c_K K of a time scheme (RollerStepOperator), assembled and
+   factored once and reused by every step, and the defaults of every factorization Roller makes. */
 #include "model/model.h"
 
 /* The defaults of every factorization Roller makes (the step matrix, the stability check, SNES VI's inner
@@ -20,25 +20,88 @@ PetscErrorCode RollerDirectSolverDefaults(KSP ksp, PCType type)
   PetscFunctionReturn(0);
 }
 
-/* Cholesky of A (LU with the centred Coriolis term, A is then non-symmetric), made once; -ksp_type cg
-   -pc_type gamg (the rigid-body near-null space is attached) or hypre for large meshes. */
-PetscErrorCode RollerStepSolverSetUp(Roller ctx)
+/* Cholesky of A (LU with the centred Coriolis term: A is then non-symmetric), made once; -ksp_type cg
+   -pc_type gamg (the rigid-body near-null space is attached) or hypre for large meshes. Every operator reads the
+   same options (its KSP has no prefix), so that -ksp_type and -pc_factor_* act on all of a scheme's matrices. */
+static PetscErrorCode StepSolverSetUp(Roller ctx, RollerStepOperator *op)
 {
   MatNullSpace nsp;
   PetscBool    direct;
 
   PetscFunctionBeginUser;
   PetscCall(DMPlexCreateRigidBody(ctx->mesh.dm, 0, &nsp));
-  PetscCall(MatSetNearNullSpace(ctx->ops.A, nsp));
+  PetscCall(MatSetNearNullSpace(op->A, nsp));
   PetscCall(MatNullSpaceDestroy(&nsp));
-  PetscCall(KSPCreate(ctx->comm, &ctx->ops.ksp));
-  PetscCall(KSPSetOperators(ctx->ops.ksp, ctx->ops.A, ctx->ops.A));
-  PetscCall(RollerDirectSolverDefaults(ctx->ops.ksp, ctx->ops.Gyro ? PCLU : PCCHOLESKY));
-  PetscCall(KSPSetTolerances(ctx->ops.ksp, 1e-12, 1e-50, PETSC_DEFAULT, PETSC_DEFAULT));
-  PetscCall(KSPSetFromOptions(ctx->ops.ksp));
-  /* an iterative solver starts from the extrapolation 2 xi^{k-1} - xi^{k-2} (step.c) */
-  PetscCall(PetscObjectTypeCompare((PetscObject)ctx->ops.ksp, KSPPREONLY, &direct));
-  PetscCall(KSPSetInitialGuessNonzero(ctx->ops.ksp, (PetscBool)!direct));
-  PetscCall(KSPSetUp(ctx->ops.ksp));
+  PetscCall(KSPCreate(ctx->comm, &op->ksp));
+  PetscCall(KSPSetOperators(op->ksp, op->A, op->A));
+  PetscCall(RollerDirectSolverDefaults(op->ksp, op->G ? PCLU : PCCHOLESKY));
+  PetscCall(KSPSetTolerances(op->ksp, 1e-12, 1e-50, PETSC_DEFAULT, PETSC_DEFAULT));
+  PetscCall(KSPSetFromOptions(op->ksp));
+  /* an iterative solver starts from the scheme's prediction of the new level */
+  PetscCall(PetscObjectTypeCompare((PetscObject)op->ksp, KSPPREONLY, &direct));
+  PetscCall(KSPSetInitialGuessNonzero(op->ksp, (PetscBool)!direct));
+  PetscCall(KSPSetUp(op->ksp));
+  PetscFunctionReturn(0);
+}
+
+/*
+  RollerStepOperatorCreate - A = c_M M + c_K K (M, K of ctx->ops), factored: the matrix of a step (or a stage) of a
+  time scheme. With G (the gyroscopic matrix of the centred Coriolis term, or NULL), A = A0 - c_G G, A0 = c_M M + c_K K:
+  non-symmetric, factored by LU (RollerStepOperatorUpdateGyroscopic changes c_G).
+*/
+PetscErrorCode RollerStepOperatorCreate(Roller ctx, PetscReal c_M, PetscReal c_K, Mat G, PetscReal c_G, PetscInt id, RollerStepOperator *op)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(op, sizeof(*op)));
+  op->c_M = c_M;
+  op->c_K = c_K;
+  op->id  = id;
+  PetscCall(MatDuplicate(ctx->ops.K, MAT_COPY_VALUES, &op->A));
+  PetscCall(MatScale(op->A, c_K));
+  if (c_M != 0) PetscCall(MatAXPY(op->A, c_M, ctx->ops.M, UNKNOWN_NONZERO_PATTERN)); /* T^T M T (massless contact nodes) couples more nodes than K */
+  if (G) {
+    PetscCall(PetscObjectReference((PetscObject)G));
+    op->G = G;
+    PetscCall(MatDuplicate(op->A, MAT_COPY_VALUES, &op->A0));
+    PetscCall(MatAXPY(op->A, -c_G, op->G, SAME_NONZERO_PATTERN));
+  } else {
+    PetscCall(MatSetOption(op->A, MAT_SPD, PETSC_TRUE));
+    PetscCall(MatSetOption(op->A, MAT_SPD_ETERNAL, PETSC_TRUE));
+  }
+  PetscCall(PetscObjectSetName((PetscObject)op->A, "A"));
+  PetscCall(StepSolverSetUp(ctx, op));
+  PetscFunctionReturn(0);
+}
+
+/* The centred Coriolis term: A = A0 - c_G G, re-factored (with a constant theta' only once: the scheme calls this
+   only when c_G changes). */
+PetscErrorCode RollerStepOperatorUpdateGyroscopic(RollerStepOperator *op, PetscReal c_G)
+{
+  PetscFunctionBeginUser;
+  PetscCall(MatCopy(op->A0, op->A, SAME_NONZERO_PATTERN));
+  PetscCall(MatAXPY(op->A, -c_G, op->G, SAME_NONZERO_PATTERN));
+  PetscCall(KSPSetOperators(op->ksp, op->A, op->A));
+  PetscFunctionReturn(0);
+}
+
+/* x = A^{-1} b, checked: a direct solve fails only on a zero pivot, an iterative one may diverge. */
+PetscErrorCode RollerStepOperatorSolve(Roller ctx, const RollerStepOperator *op, Vec b, Vec x, PetscReal t)
+{
+  KSPConvergedReason reason;
+
+  PetscFunctionBeginUser;
+  PetscCall(KSPSolve(op->ksp, b, x));
+  PetscCall(KSPGetConvergedReason(op->ksp, &reason));
+  PetscCheck(reason > 0, ctx->comm, PETSC_ERR_NOT_CONVERGED, "The step solve at t = %g diverged: %s", (double)t, KSPConvergedReasons[reason]);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerStepOperatorDestroy(RollerStepOperator *op)
+{
+  PetscFunctionBeginUser;
+  PetscCall(KSPDestroy(&op->ksp));
+  PetscCall(MatDestroy(&op->A));
+  PetscCall(MatDestroy(&op->A0));
+  PetscCall(MatDestroy(&op->G));
   PetscFunctionReturn(0);
 }

@@ -121,6 +121,17 @@ static PetscErrorCode MMSExact(PetscInt dim, PetscReal time, const PetscReal x[]
   return 0;
 }
 
+static PetscErrorCode MMSVelocity(PetscInt dim, PetscReal time, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *vctx)
+{
+  Roller    ctx = (Roller)vctx;
+  PetscReal T[3], B;
+
+  MMSTime(ctx->init.mms, time, T);
+  MMSShape(ctx->mesh.r_inner, ctx->mesh.r_outer, x, &B, NULL, NULL);
+  for (PetscInt c = 0; c < 2; ++c) u[c] = T[1] * ctx->init.amplitude * B * mms_c[c];
+  return 0;
+}
+
 /* The bump initial state of the Theorem 1 setting: the MMS shape at T = 1, at rest. */
 static PetscErrorCode BumpShape(PetscInt dim, PetscReal time, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *vctx)
 {
@@ -140,6 +151,17 @@ PetscErrorCode RollerMMSExact(Roller ctx, PetscReal t, Vec xi)
 
   PetscFunctionBeginUser;
   PetscCall(DMProjectFunction(ctx->mesh.dm, t, funcs, ctxs, INSERT_VALUES, xi));
+  PetscFunctionReturn(0);
+}
+
+/* v = I u_t(t), the nodal interpolant of the exact velocity (a one-step scheme's initial state). */
+PetscErrorCode RollerMMSVelocity(Roller ctx, PetscReal t, Vec v)
+{
+  PetscErrorCode (*funcs[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {MMSVelocity};
+  void *ctxs[1]                                                                                       = {ctx};
+
+  PetscFunctionBeginUser;
+  PetscCall(DMProjectFunction(ctx->mesh.dm, t, funcs, ctxs, INSERT_VALUES, v));
   PetscFunctionReturn(0);
 }
 

@@ -9,6 +9,7 @@
 
 PETSC_INTERN PetscErrorCode RollerAddMMSLoad(Roller, PetscReal, Vec);
 PETSC_INTERN PetscErrorCode RollerMMSExact(Roller, PetscReal, Vec);
+PETSC_INTERN PetscErrorCode RollerMMSVelocity(Roller, PetscReal, Vec);
 PETSC_INTERN PetscErrorCode RollerComputeErrors(Roller, PetscReal, PetscReal *, PetscReal *);
 PETSC_INTERN PetscErrorCode RollerCheckRotation(Roller);
 

@@ -35,10 +35,14 @@ static PetscErrorCode MakeRoller(Roller *ctx)
    and the least gap of its answer. */
 static PetscErrorCode SolveStep(Roller ctx, RollerContactSolver s, Vec b, Vec xi, RollerContactResult *res, PetscReal *kkt, PetscReal *gap_min)
 {
-  RollerContact c = ctx->contact;
+  RollerContact            c     = ctx->contact;
+  const RollerContactStage stage = {
+    c->step.op, ctx->state.time, ctx->state.cur, ctx->state.prev, {2.0, -1.0},
+        {1.0, -1.0}
+  }; /* the DMF's (-static) */
 
   PetscFunctionBeginUser;
-  PetscCall(RollerContactSetUpStep(ctx, c, ctx->ts.dt));
+  PetscCall(RollerContactSetUpStep(ctx, c, &stage, ctx->ts.dt));
   PetscCall(VecCopy(b, c->acc.b));
   PetscCall(RollerContactSolveWith(ctx, c, s, b, xi, res));
   PetscCall(RollerContactKKT(ctx, c, xi, res->lambda, gap_min, kkt));
@@ -97,8 +101,8 @@ static PetscErrorCode TestNoReach(Roller ctx)
   }
   PetscCall(VecRestoreArray(u, &ua));
   PetscCall(VecRestoreArrayRead(ctx->ops.coordinates, &x));
-  PetscCall(MatMult(ctx->ops.A, u, b));
-  PetscCall(KSPSolve(ctx->ops.ksp, b, xf));
+  PetscCall(MatMult(c->step.op->A, u, b)); /* the step matrix (the scheme's, made known to the contact layer) */
+  PetscCall(KSPSolve(c->step.op->ksp, b, xf));
   for (PetscInt k = 0; k < c->nsolvers; ++k) {
     RollerContactSolver s = c->solvers[k];
     PetscReal           kkt, gap_min, diff, lmax = 0.0;

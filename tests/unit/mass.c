@@ -147,16 +147,20 @@ static PetscErrorCode CheckZeroRows(Roller ctx)
   PetscFunctionReturn(0);
 }
 
-/* (d) the inertia of A from a symmetric-indefinite MUMPS factorization: all pivots positive */
+/* (d) the inertia of the step matrix A = rho/dt^2 M_red + K/2 (the DMF's; every scheme's is c_M M_red + c_K K with
+   c_M, c_K > 0) from a symmetric-indefinite MUMPS factorization: all pivots positive */
 static PetscErrorCode CheckDefinite(Roller ctx)
 {
-  Mat           B, F;
-  MatFactorInfo info;
-  IS            rperm, cperm;
-  PetscInt      nneg, nzero, npos, n;
+  Mat                B, F;
+  MatFactorInfo      info;
+  IS                 rperm, cperm;
+  PetscInt           nneg, nzero, npos, n;
+  RollerStepOperator op;
 
   PetscFunctionBeginUser;
-  PetscCall(MatDuplicate(ctx->ops.A, MAT_COPY_VALUES, &B));
+  PetscCall(RollerStepOperatorCreate(ctx, ctx->material.density / (ctx->ts.dt * ctx->ts.dt), 0.5, NULL, 0.0, 0, &op));
+  PetscCall(MatDuplicate(op.A, MAT_COPY_VALUES, &B));
+  PetscCall(RollerStepOperatorDestroy(&op));
   PetscCall(MatSetOption(B, MAT_SPD, PETSC_FALSE)); /* MUMPS's general symmetric mode, which reports the inertia */
   PetscCall(MatSetOption(B, MAT_SYMMETRIC, PETSC_TRUE));
   PetscCall(MatGetFactor(B, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &F));

@@ -1,0 +1,77 @@
+/* Private to the scheme*.c files: the time scheme as a component (docs/model.md section 2.1), like the contact
+   solvers: registered by name (-ts_scheme NAME, scheme.c), each one file that fills the ops of the object it is
+   given. Every scheme Roller offers keeps the DMF's properties: each step (or stage) a convex QP on factored
+   matrices, so contact stays the bound-constrained problem in rotated contact coordinates; an exact discrete
+   energy identity without contact; unconditional stability for the stiff modes.
+     scheme.c           the registry, the options block, the default (the scheme that meets -ts_phase_error at the
+                        least cost), the step count and dt rule, -ts_view, the dispatch
+     scheme_newmark.c   the three-level schemes: dmf (Newmark beta = 1/2, the paper's) and trapezoidal (beta = 1/4)
+     scheme_stage.c     the one-step trapezoidal stage with the rotational terms split off (Strang)
+     scheme_composed.c  its symmetric compositions: fourth order (Suzuki, Yoshida) */
+#ifndef ROLLER_SCHEME_IMPL_H
+#define ROLLER_SCHEME_IMPL_H
+
+#include "integrate/integrate.h"
+
+#define ROLLER_SCHEME_MAX_OPERATORS 4
+
+/* A scheme's operations. setfromoptions (optional) reads its own options inside the scheme's options block;
+   phase: the phase error per step of an undamped mode of angular frequency w, as a function of x = w dt
+   (|W dt - x|, W the scheme's frequency), for the default dt and -ts_view; usable (optional): why the scheme cannot
+   run this scene (a static string) or NULL; setup builds the step matrices (after the operators M, K) and whatever
+   the scheme keeps from the levels (and state.velocity, eta^0 for a one-step scheme); step advances
+   (ctx->state.step, .time and the levels cur, prev, prev2 move up one; state.Mcur = M xi^k and state.velocity
+   follow); energy: E^k of the newest level; balance: the terms of E^k - E^{k-1} of the last step (docs/model.md
+   section 2), added to info; 
+   level (NULL: (xi^k - xi^{k-1})/dt); kept: the vectors the scheme keeps beyond the levels (for the checkpoint,
+   so that a restart repeats the run to the last bit), at most ROLLER_SCHEME_KEPT. */
+typedef struct {
+  PetscErrorCode (*setfromoptions)(RollerScheme, Roller, PetscOptionItems *);
+  PetscErrorCode (*phase)(RollerScheme, PetscReal, PetscReal *);
+  PetscErrorCode (*usable)(RollerScheme, Roller, const char **);
+  PetscErrorCode (*setup)(RollerScheme, Roller);
+  PetscErrorCode (*step)(RollerScheme, Roller);
+  PetscErrorCode (*energy)(RollerScheme, Roller, PetscReal *);
+  PetscErrorCode (*balance)(RollerScheme, Roller, RollerStepInfo *);
+  PetscErrorCode (*kept)(RollerScheme, Roller, PetscInt *, Vec[], const char *[]);
+  PetscErrorCode (*view)(RollerScheme, Roller, PetscViewer);
+  PetscErrorCode (*destroy)(RollerScheme);
+} RollerSchemeOps;
+
+struct _n_RollerScheme {
+  char              *name;
+  RollerSchemeOps    ops[1];
+  void              *data;
+  PetscInt           stages; /* step solves per step: the cost model of the default choice */
+  PetscInt           order;  /* the order of the phase error without contact */
+  PetscInt           nop;    /* the step matrices */
+  RollerStepOperator op[ROLLER_SCHEME_MAX_OPERATORS];
+};
+
+PETSC_INTERN PetscFunctionList RollerSchemeList;
+
+/* scheme.c */
+PETSC_INTERN PetscErrorCode RollerSchemeCreate(const char[], RollerScheme *);
+PETSC_INTERN PetscErrorCode RollerSchemeDestroy(RollerScheme *);
+PETSC_INTERN PetscErrorCode RollerSchemeAddOperator(RollerScheme, Roller, PetscReal, PetscReal, Mat, PetscReal, RollerStepOperator **); /* c_M, c_K, G, c_G */
+
+/* scheme_stage.c: a stage of the one-step scheme. Its velocity v and M v (V, MV: the step's working copies, committed
+   at the step's end), scratch, the loads at t0 and t1 (L0 at time tL0 is reused when the next stage starts there),
+   and the energy terms it adds up over a step's stages (the contact's in contact). */
+typedef struct {
+  Vec            V, MV, dv, L0, L1;
+  PetscReal      tL0;
+  PetscReal      load_work, damping_dissipation, viscous_dissipation;
+  RollerStepInfo contact;
+} RollerStageWork;
+
+PETSC_INTERN PetscErrorCode RollerStageWorkCreate(Roller, RollerStageWork *);
+PETSC_INTERN PetscErrorCode RollerStageWorkDestroy(RollerStageWork *);
+PETSC_INTERN PetscErrorCode RollerSchemeStage(Roller, RollerStageWork *, RollerStepOperator *, PetscReal, PetscReal, PetscReal, PetscReal, Vec, Vec, Vec, Vec, Vec, Vec); /* h, t0, t1, delta, x0, M x0, K x0 -> x1, M x1, K x1 */
+
+/* The schemes' create functions, for RollerSchemesRegisterAll */
+PETSC_INTERN PetscErrorCode RollerSchemeCreate_DMF(RollerScheme);
+PETSC_INTERN PetscErrorCode RollerSchemeCreate_Trapezoidal(RollerScheme);
+PETSC_INTERN PetscErrorCode RollerSchemeCreate_Composed(RollerScheme);
+
+#endif
