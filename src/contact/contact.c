@@ -186,6 +186,15 @@ PetscErrorCode RollerContactSolve(Roller ctx, RollerContact c, const RollerConta
   PetscFunctionReturn(0);
 }
 
+/* The contact force of the last solve as a vector of the displacement space, E (N lambda + T lambda_t): the solve's
+   xi satisfies A xi = b + f (a scheme gets M xi from this instead of a product with M). */
+PetscErrorCode RollerContactForceVector(RollerContact c, Vec f)
+{
+  PetscFunctionBeginUser;
+  PetscCall(RollerContactForce(c, c->acc.result.lambda, c->friction ? c->acc.result.lambda_t : NULL, f));
+  PetscFunctionReturn(0);
+}
+
 /* Set-up for the step matrix op of a scheme, in the set-up stage: the solver's work that depends on the matrix
    (the condensed solver's S = E^T A^{-1} E, for the Gamma_C nodes the run will need). */
 PetscErrorCode RollerContactPrepare(Roller ctx, RollerContact c, const RollerStepOperator *op)

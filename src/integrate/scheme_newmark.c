@@ -10,9 +10,9 @@
    Energy: E^k = rho/2 |xi^k - xi^{k-1}|^2_M/dt^2 + beta/2 (a(xi^k, xi^k) + a(xi^{k-1}, xi^{k-1}))
                  + (1 - 2 beta)/2 a(xi^k, xi^{k-1});
    multiplying the step by (xi^k - xi^{k-2})/2 gives the balance of docs/model.md section 2 for any beta (the
-   beta terms telescope). The products M xi of the last three levels are kept (state.Mcur, Mprev, Mprev2: two
-   products with M per step, of the newest level and its increment), so that the load F^{k-1}, the trapezoidal
-   right-hand side, the energy and the angular momentum cost no other. */
+   beta terms telescope). The products M xi of the last three levels are kept (state.Mcur, Mprev, Mprev2; M xi^k from
+   the step's equation), so that the load F^{k-1}, the trapezoidal right-hand side and the angular momentum cost no
+   product with M; the energy costs one, when a row is written. */
 #include "scheme_impl.h"
 #include "model/model.h"
 
@@ -20,7 +20,8 @@ typedef struct {
   PetscReal           beta;
   RollerStepOperator *op;
   Vec                 Mprev, Mprev2, Mv; /* M xi^{k-1}, M xi^{k-2} (state.Mcur = M xi^k); scratch */
-  PetscReal           kinetic;           /* (xi^k - xi^{k-1}) . M (xi^k - xi^{k-1}) */
+  PetscReal           kinetic;           /* (xi^k - xi^{k-1}) . M (xi^k - xi^{k-1}) of step kinetic_step (made when asked) */
+  PetscInt            kinetic_step;
 } Newmark;
 
 /* v^{k-1} of the explicit Coriolis term as c1 xi^{k-1} + c2 xi^{k-2} + c3 xi^{k-3} (docs/model.md section 2);
@@ -107,27 +108,32 @@ static PetscErrorCode RightHandSide(Roller ctx, Newmark *nm, Vec b)
   PetscFunctionReturn(0);
 }
 
-/* After the levels moved up (cur = xi^k): K xi^k and M xi^k (products of the level itself: summed from increments
-   they would drift from it by round-off over many steps, and the trapezoidal right-hand side is made of them), the
-   kinetic term d . M d of d = xi^k - xi^{k-1} (its own product: M xi^k - M xi^{k-1} would cancel) and the velocity
-   d/dt. */
+/* After the levels moved up (cur = xi^k): K xi^k, M xi^k and the velocity (xi^k - xi^{k-1})/dt. M xi^k comes from the
+   step's own equation, c_M M xi^k = b + f - c_K K xi^k (f the contact force; no product with M: the products are of the
+   level itself, never summed from increments, which would drift from it by round-off over many steps), except with
+   the centred Coriolis term or -static (A = K). */
 static PetscErrorCode NewLevel(Roller ctx, Newmark *nm)
 {
-  Vec         d = ctx->state.velocity, Md = ctx->state.work, tmp;
-  PetscScalar kin;
+  const RollerStepOperator *op = nm->op;
+  Vec                       tmp;
 
   PetscFunctionBeginUser;
   PetscCall(MatMult(ctx->ops.K, ctx->state.cur, ctx->state.Kcur));
-  PetscCall(VecWAXPY(d, -1.0, ctx->state.prev, ctx->state.cur));
-  PetscCall(MatMult(ctx->ops.M, d, Md));
-  PetscCall(VecDot(d, Md, &kin));
-  nm->kinetic     = PetscRealPart(kin);
   tmp             = nm->Mprev2;
   nm->Mprev2      = nm->Mprev;
   nm->Mprev       = ctx->state.Mcur;
   ctx->state.Mcur = tmp;
-  PetscCall(MatMult(ctx->ops.M, ctx->state.cur, ctx->state.Mcur));
-  PetscCall(VecScale(d, 1.0 / ctx->ts.dt));
+  if (op->G || op->c_M == 0) PetscCall(MatMult(ctx->ops.M, ctx->state.cur, ctx->state.Mcur));
+  else {
+    if (ctx->contact) {
+      PetscCall(RollerContactForceVector(ctx->contact, ctx->state.Mcur));
+      PetscCall(VecAXPY(ctx->state.Mcur, 1.0, ctx->state.rhs));
+    } else PetscCall(VecCopy(ctx->state.rhs, ctx->state.Mcur));
+    PetscCall(VecAXPBY(ctx->state.Mcur, -op->c_K / op->c_M, 1.0 / op->c_M, ctx->state.Kcur));
+  }
+  PetscCall(VecWAXPY(ctx->state.velocity, -1.0, ctx->state.prev, ctx->state.cur));
+  PetscCall(VecScale(ctx->state.velocity, 1.0 / ctx->ts.dt));
+  nm->kinetic_step = -1;
   PetscFunctionReturn(0);
 }
 
@@ -192,6 +198,7 @@ static PetscErrorCode NewmarkStep(RollerScheme s, Roller ctx)
   PetscFunctionReturn(0);
 }
 
+/* The kinetic term d . M d, d = xi^k - xi^{k-1}, with its own product (M xi^k - M xi^{k-1} would cancel): when asked. */
 static PetscErrorCode NewmarkEnergy(RollerScheme s, Roller ctx, PetscReal *energy)
 {
   Newmark        *nm = (Newmark *)s->data;
@@ -199,6 +206,16 @@ static PetscErrorCode NewmarkEnergy(RollerScheme s, Roller ctx, PetscReal *energ
   PetscScalar     pot1, pot2, cross = 0.0;
 
   PetscFunctionBeginUser;
+  if (nm->kinetic_step != ctx->state.step) {
+    Vec         d = ctx->state.work, Md = ctx->state.next; /* scratch between steps */
+    PetscScalar kin;
+
+    PetscCall(VecWAXPY(d, -1.0, ctx->state.prev, ctx->state.cur));
+    PetscCall(MatMult(ctx->ops.M, d, Md));
+    PetscCall(VecDot(d, Md, &kin));
+    nm->kinetic      = PetscRealPart(kin);
+    nm->kinetic_step = ctx->state.step;
+  }
   PetscCall(VecDot(ctx->state.cur, ctx->state.Kcur, &pot1));
   PetscCall(VecDot(ctx->state.prev, ctx->state.Kprev, &pot2));
   if (nm->beta != 0.5) PetscCall(VecDot(ctx->state.cur, ctx->state.Kprev, &cross));
@@ -241,7 +258,6 @@ static PetscErrorCode NewmarkSetUp(RollerScheme s, Roller ctx)
 {
   Newmark        *nm = (Newmark *)s->data;
   const PetscReal dt = ctx->ts.dt, rho = ctx->material.density;
-  PetscScalar     kin;
 
   PetscFunctionBeginUser;
   if (ctx->disc.static_solve) PetscCall(RollerSchemeAddOperator(s, ctx, 0.0, 1.0, NULL, 0.0, &nm->op));
@@ -258,10 +274,8 @@ static PetscErrorCode NewmarkSetUp(RollerScheme s, Roller ctx)
   PetscCall(MatMult(ctx->ops.M, ctx->state.prev, nm->Mprev));
   PetscCall(MatMult(ctx->ops.M, ctx->state.prev2, nm->Mprev2));
   PetscCall(VecWAXPY(ctx->state.velocity, -1.0, ctx->state.prev, ctx->state.cur));
-  PetscCall(MatMult(ctx->ops.M, ctx->state.velocity, ctx->state.work));
-  PetscCall(VecDot(ctx->state.velocity, ctx->state.work, &kin));
-  nm->kinetic = PetscRealPart(kin);
   PetscCall(VecScale(ctx->state.velocity, 1.0 / dt));
+  nm->kinetic_step = -1;
   PetscFunctionReturn(0);
 }
 

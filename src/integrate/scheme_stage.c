@@ -89,7 +89,7 @@ PetscErrorCode RollerSchemeStage(Roller ctx, RollerStageWork *cp, RollerStepOper
     PetscCall(VecWAXPY(D, -1.0, x0, x1));
   } else {
     /* the increment D = x1 - x0 itself, A D = b - A x0 = 2 rho/h M v0 - K x0 + (L0 + L1)/2: without the large
-       2 rho/h^2 M x0 that cancels, the velocity 2 D/h - v0 keeps its round-off (energy to 1e-12 over 1e5 steps) */
+       2 rho/h^2 M x0 that cancels, the velocity 2 D/h - v0 keeps its round-off */
     PetscBool guess;
 
     PetscCall(VecAXPBYPCZ(b, 2.0 * rho / h, -1.0, 0.0, cp->MV, Kx0));
@@ -107,9 +107,11 @@ PetscErrorCode RollerSchemeStage(Roller ctx, RollerStageWork *cp, RollerStepOper
     PetscCall(VecAXPBYPCZ(b, -op->c_K, op->c_K, 1.0, Kx1, Kx0));
     PetscCall(VecWAXPY(Mx1, 1.0 / op->c_M, b, Mx0));
   }
-  if (ctx->contact) {
-    PetscCall(MatMult(ctx->ops.M, x1, Mx1));
+  if (ctx->contact) { /* c_M M x1 = b + f - c_K K x1, f the contact force */
     PetscCall(MatMult(ctx->ops.K, x1, Kx1));
+    PetscCall(RollerContactForceVector(ctx->contact, Mx1));
+    PetscCall(VecAXPY(Mx1, 1.0, b));
+    PetscCall(VecAXPBY(Mx1, -op->c_K / op->c_M, 1.0 / op->c_M, Kx1));
   }
   /* the stage's energy terms: the loads' work (x1 - x0) . (L0 + L1)/2 and the dampings' dissipation */
   PetscCall(VecWAXPY(b, 1.0, cp->L0, cp->L1));
