@@ -93,12 +93,13 @@ def main():
             f_e = element_passing(res)
             rows[k] = dict(steps=len(res["series"]["t"]) - 1, dt=res["series"]["t"][1], err_F=s["mean_F"] / sref["mean_F"] - 1,
                            err_R=s["mean_R"] / sref["mean_R"] - 1, line=line(s, f_e), line_ref=line(sref, f_e))
-            print(f"round {r + 1} {k}: cpu {res['cpu']:.1f} s", file=sys.stderr, flush=True)
+            print(f"round {r + 1} {k}: cpu {res['cpu']:.1f} s, dt {rows[k]['dt']:.4g}, force {100 * rows[k]['err_F']:+.3f} %, R {100 * rows[k]['err_R']:+.3f} %, "
+                  f"line {100 * rows[k]['line']:.3f} % (reference {100 * rows[k]['line_ref']:.3f} %)", file=sys.stderr, flush=True)
     out = ["| run | dt | steps | mean force error | mean R error | element-passing line / mean force (reference) | CPU [s], median of %d |" % o.rounds,
            "|---|---|---|---|---|---|---|"]
     for k in labels:
         w = rows[k]
-        out.append(f"| {k} `{' '.join(runs[k])}` | {w['dt']:.4g} | {w['steps']} | {100 * w['err_F']:+.3f} % | {100 * w['err_R']:+.3f} % | "
+        out.append(f"| {k} `{' '.join(str(a) for a in runs[k])}` | {w['dt']:.4g} | {w['steps']} | {100 * w['err_F']:+.3f} % | {100 * w['err_R']:+.3f} % | "
                    f"{100 * w['line']:.3f} % ({100 * w['line_ref']:.3f} %) | {statistics.median(cpu[k]):.1f} |")
     print("\n".join(out))
     with open(os.path.join(ROOT, "bench", "results", "rolling_schemes.md"), "w") as f:

@@ -200,9 +200,10 @@ def measure(scene, c, t_end, ref):
         c = dict(c)
         c["degree"], c["h"], c["dt"], c["coriolis"] = chosen(base, t_end)
         args = base + ["-ts_max_time", t_end] + c["extra"]
-    else:
-        args = base + ["-degree", c["degree"], "-mesh_h", c["h"], "-ts_dt", c["dt"], "-coriolis_velocity", c["coriolis"],
-                       "-ts_max_time", t_end] + c["extra"]
+    else:  # an explicit discretization: the three-level DMF unless the config names a scheme (docs/model.md section 2.1)
+        scheme = [] if "-ts_scheme" in c["extra"] else ["-ts_scheme", "dmf"]
+        args = base + scheme + ["-degree", c["degree"], "-mesh_h", c["h"], "-ts_dt", c["dt"], "-coriolis_velocity", c["coriolis"],
+                                "-ts_max_time", t_end] + c["extra"]
     load = os.getloadavg()[0]
     res = benchlib.run(args, csv=True)
     d = res["series"]

@@ -210,6 +210,7 @@ PetscErrorCode RollerSchemeChoose(Roller ctx)
       best = k;
       break;
     }
+    if (!why && s->ops->by_default) PetscCall((*s->ops->by_default)(s, ctx, &why));
     if (!ctx->ts.scheme[0] && !why && (best < 0 || cost[k] < cost[best])) best = k;
   }
   PetscCheck(best >= 0, ctx->comm, PETSC_ERR_ARG_WRONG, "-ts_scheme %s: no such scheme (see -help)", ctx->ts.scheme);
@@ -233,7 +234,11 @@ PetscErrorCode RollerSchemeChoose(Roller ctx)
       const char *why;
 
       PetscCall(SchemeUsable(ctx->ts.schemes[k], ctx, &why));
-      PetscCall(PetscPrintf(ctx->comm, " %s %.0f (dt %.3g)%s%s", ctx->ts.schemes[k]->name, (double)cost[k], (double)dt[k], why ? ": not usable, " : "", why ? why : ""));
+      if (why) PetscCall(PetscPrintf(ctx->comm, " %s %.0f (dt %.3g): not usable, %s", ctx->ts.schemes[k]->name, (double)cost[k], (double)dt[k], why));
+      else {
+        if (ctx->ts.schemes[k]->ops->by_default) PetscCall((*ctx->ts.schemes[k]->ops->by_default)(ctx->ts.schemes[k], ctx, &why));
+        PetscCall(PetscPrintf(ctx->comm, " %s %.0f (dt %.3g)%s%s", ctx->ts.schemes[k]->name, (double)cost[k], (double)dt[k], why ? ": not the default, " : "", why ? why : ""));
+      }
       if (k + 1 < ctx->ts.nschemes) PetscCall(PetscPrintf(ctx->comm, ";"));
     }
     PetscCall(PetscPrintf(ctx->comm, "\n"));

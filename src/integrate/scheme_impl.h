@@ -18,7 +18,8 @@
 /* A scheme's operations. setfromoptions (optional) reads its own options inside the scheme's options block;
    phase: the phase error per step of an undamped mode of angular frequency w, as a function of x = w dt
    (|W dt - x|, W the scheme's frequency), for the default dt and -ts_view; usable (optional): why the scheme cannot
-   run this scene (a static string) or NULL; setup builds the step matrices (after the operators M, K) and whatever
+   run this scene (a static string) or NULL; by_default (optional): why the default should not take it although its
+   phase error would (an error the phase-error rule does not see), or NULL; setup builds the step matrices (after the operators M, K) and whatever
    the scheme keeps from the levels (and state.velocity, eta^0 for a one-step scheme); step advances
    (ctx->state.step, .time and the levels cur, prev, prev2 move up one; state.Mcur = M xi^k and state.velocity
    follow); energy: E^k of the newest level; balance: the terms of E^k - E^{k-1} of the last step (docs/model.md
@@ -29,6 +30,7 @@ typedef struct {
   PetscErrorCode (*setfromoptions)(RollerScheme, Roller, PetscOptionItems *);
   PetscErrorCode (*phase)(RollerScheme, PetscReal, PetscReal *);
   PetscErrorCode (*usable)(RollerScheme, Roller, const char **);
+  PetscErrorCode (*by_default)(RollerScheme, Roller, const char **); /* why the default should not take it (it may be named) */
   PetscErrorCode (*setup)(RollerScheme, Roller);
   PetscErrorCode (*step)(RollerScheme, Roller);
   PetscErrorCode (*energy)(RollerScheme, Roller, PetscReal *);
