@@ -96,7 +96,7 @@ static PetscErrorCode ComposedStep(RollerScheme s, Roller ctx)
     const PetscReal t0 = t_start + frac * dt, t1 = (i == cp->n - 1) ? t_end : t_start + (frac + cp->gamma[i]) * dt;
 
     j = i % 2;
-    PetscCall(RollerSchemeStage(ctx, &cp->w, cp->op[i], cp->gamma[i] * dt, t0, t1, cp->gamma[i] > 0 ? cp->delta : 0.0, x0, Mx0, Kx0, cp->X[j], cp->MX[j], cp->KX[j]));
+    PetscCall(RollerSchemeStage(ctx, &cp->w, cp->op[i], cp->gamma[i] * dt, t0, t1, cp->gamma[i] > 0 ? cp->delta : 0.0, (PetscBool)(i == 0), x0, Mx0, Kx0, cp->X[j], cp->MX[j], cp->KX[j]));
     x0  = cp->X[j];
     Mx0 = cp->MX[j];
     Kx0 = cp->KX[j];

@@ -69,7 +69,7 @@ typedef struct {
 
 PETSC_INTERN PetscErrorCode RollerStageWorkCreate(Roller, RollerStageWork *);
 PETSC_INTERN PetscErrorCode RollerStageWorkDestroy(RollerStageWork *);
-PETSC_INTERN PetscErrorCode RollerSchemeStage(Roller, RollerStageWork *, RollerStepOperator *, PetscReal, PetscReal, PetscReal, PetscReal, Vec, Vec, Vec, Vec, Vec, Vec); /* h, t0, t1, delta, x0, M x0, K x0 -> x1, M x1, K x1 */
+PETSC_INTERN PetscErrorCode RollerSchemeStage(Roller, RollerStageWork *, RollerStepOperator *, PetscReal, PetscReal, PetscReal, PetscReal, PetscBool, Vec, Vec, Vec, Vec, Vec, Vec); /* h, t0, t1, delta, refresh M v, x0, M x0, K x0 -> x1, M x1, K x1 */
 
 /* The schemes' create functions, for RollerSchemesRegisterAll */
 PETSC_INTERN PetscErrorCode RollerSchemeCreate_DMF(RollerScheme);

@@ -56,7 +56,7 @@ static PetscErrorCode Kick(Roller ctx, RollerStageWork *cp, PetscReal t, PetscRe
 
 /* One stage of length h (exactly the h of its matrix: t1 - t0 has the round-off of t, which would break the energy
    identity) from (x0, v) at t0 to x1 at t1 (step 3 with the kicks and Coriolis flows around it). */
-PetscErrorCode RollerSchemeStage(Roller ctx, RollerStageWork *cp, RollerStepOperator *op, PetscReal h, PetscReal t0, PetscReal t1, PetscReal delta, Vec x0, Vec Mx0, Vec Kx0, Vec x1, Vec Mx1, Vec Kx1)
+PetscErrorCode RollerSchemeStage(Roller ctx, RollerStageWork *cp, RollerStepOperator *op, PetscReal h, PetscReal t0, PetscReal t1, PetscReal delta, PetscBool refresh, Vec x0, Vec Mx0, Vec Kx0, Vec x1, Vec Mx1, Vec Kx1)
 {
   const PetscReal rho = ctx->material.density, eta = delta * ctx->disc.damping, tau = delta * ctx->material.viscosity;
   Vec             b = ctx->state.rhs, D = ctx->state.work, v = cp->V, tmp;
@@ -65,9 +65,9 @@ PetscErrorCode RollerSchemeStage(Roller ctx, RollerStageWork *cp, RollerStepOper
   PetscFunctionBeginUser;
   PetscCall(Coriolis(ctx, cp, t0, t0 + 0.5 * h));
   PetscCall(Kick(ctx, cp, t0, 0.5 * h, x0, Mx0));
-  /* M v of this v itself: the stages' recurrences for M v would drift from it by round-off over many steps (and with
-     it the right-hand side, and the energy, by 1e-15 a step) */
-  PetscCall(MatMult(ctx->ops.M, v, cp->MV));
+  /* M v of this v itself at a step's first stage (refresh): the stages' recurrences for M v would drift from it by
+     round-off over many steps (and with it the right-hand side, and the energy); within a step they cost no product */
+  if (refresh) PetscCall(MatMult(ctx->ops.M, v, cp->MV));
   if (cp->tL0 != t0) PetscCall(Load(ctx, t0, cp->L0));
   PetscCall(Load(ctx, t1, cp->L1));
   if (ctx->contact) {
