@@ -129,11 +129,12 @@ typedef struct {
    functionals R = w_R . xi, alpha = w_alpha . xi. With -contact_mass redistributed M is M_red = T^T M T, G is
    T^T G T and the loads are T^T L (model/mass.c). */
 typedef struct {
-  Mat M, K;
-  Mat G; /* the gyroscopic matrix int rho N^T R(pi/2) N: only for the centred Coriolis velocity (its step matrix) */
-  Vec L_euler, L_centrifugal;
-  Vec coordinates; /* nodal positions x_n of every free dof pair */
-  Vec w_R, w_alpha;
+  Mat       M, K;
+  Mat       G; /* the gyroscopic matrix int rho N^T R(pi/2) N: only for the centred Coriolis velocity (its step matrix) */
+  Vec       L_euler, L_centrifugal;
+  Vec       coordinates; /* nodal positions x_n of every free dof pair */
+  PetscReal I0;          /* x . M x, the rigid body's polar moment over rho (the shaft torque, integrate/diagnostics.c) */
+  Vec       w_R, w_alpha;
 } RollerOperators;
 
 /* A step matrix of a time scheme (model/solver.c): A = c_M M + c_K K (- c_G G with the centred Coriolis term, which

@@ -22,9 +22,9 @@ typedef struct {
 PETSC_INTERN PetscErrorCode RollerContactCreate(Roller, RollerContact *);
 PETSC_INTERN PetscErrorCode RollerContactHelp(Roller); /* -help without -obstacle: the options block only */
 PETSC_INTERN PetscErrorCode RollerContactSolve(Roller, RollerContact, const RollerContactStage *, PetscReal, Vec, Vec);
-PETSC_INTERN PetscErrorCode RollerContactPrepare(Roller, RollerContact, const RollerStepOperator *); /* set-up for an operator (the condensed S) */
-PETSC_INTERN PetscErrorCode RollerContactForceVector(RollerContact, Vec); /* E N lambda (+ the friction's) of the last solve: A xi = b + it */
-PETSC_INTERN PetscErrorCode RollerContactInfo(Roller, RollerContact, Vec, PetscReal, RollerStepInfo *);
+PETSC_INTERN PetscErrorCode RollerContactPrepare(Roller, RollerContact, const RollerStepOperator *);              /* set-up for an operator (the condensed S) */
+PETSC_INTERN PetscErrorCode RollerContactForceVector(RollerContact, Vec);                                         /* E N lambda (+ the friction's) of the last solve: A xi = b + it */
+PETSC_INTERN PetscErrorCode RollerContactInfo(Roller, RollerContact, Vec, Vec, Vec, PetscReal, RollerStepInfo *); /* xi, M xi and K xi (or NULL), t */
 /* The contact's terms of the energy balance of a solve from the level x_from at t_from, the force of the last solve
    paired with its displacement times weight (contact_energy.c), added to info: obstacle_work, contact_dissipation
    and the contact's parts of the shaft's and the sheet's works */

@@ -167,7 +167,7 @@ PETSC_INTERN PetscErrorCode RollerContactSetUpStep(Roller, RollerContact, const 
 PETSC_INTERN PetscErrorCode RollerContactAddPenetrating(Roller, RollerContact, PetscInt *);
 
 /* contact_report.c */
-PETSC_INTERN PetscErrorCode RollerContactKKT(Roller, RollerContact, Vec, const PetscReal[], PetscReal *, PetscReal *);
+PETSC_INTERN PetscErrorCode RollerContactKKT(Roller, RollerContact, Vec, Vec, Vec, const PetscReal[], PetscReal *, PetscReal *); /* xi, M xi and K xi or NULL, lambda */
 PETSC_INTERN PetscErrorCode RollerContactCheckStep(Roller, RollerContact, Vec, Vec);
 PETSC_INTERN PetscErrorCode RollerContactCheckSummary(RollerContact);
 

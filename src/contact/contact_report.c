@@ -5,8 +5,9 @@
 
 /* The KKT residual of (xi, lambda) for the step's QP (docs/contact.md), with F = max(||b||, ||E N lambda||):
    max of  max(0, -min gap)/r_C,  max(0, -min lambda)/F,  max |lambda_n gap_n|/(F r_C),
-   ||A xi - b - E N lambda||/F. Also returns the least gap over all Gamma_C nodes. */
-PetscErrorCode RollerContactKKT(Roller ctx, RollerContact c, Vec xi, const PetscReal lambda[], PetscReal *gap_min, PetscReal *kkt)
+   ||A xi - b - E N lambda||/F. Also returns the least gap over all Gamma_C nodes. With M xi and K xi (or NULL), A xi =
+   c_M M xi + c_K K xi costs no product (A without the centred Coriolis term). */
+PetscErrorCode RollerContactKKT(Roller ctx, RollerContact c, Vec xi, Vec Mxi, Vec Kxi, const PetscReal lambda[], PetscReal *gap_min, PetscReal *kkt)
 {
   RollerContactAccepted *acc = &c->acc;
   PetscReal              nb, nf, nr, fs, lmin = 0.0, comp = 0.0;
@@ -15,7 +16,8 @@ PetscErrorCode RollerContactKKT(Roller ctx, RollerContact c, Vec xi, const Petsc
   PetscCall(RollerContactGather(c, xi, c->nodes.red));
   PetscCall(RollerContactGaps(c, c->nodes.red, c->step.gap, gap_min));
   PetscCall(RollerContactForce(c, lambda, lambda == acc->result.lambda ? acc->result.lambda_t : NULL, acc->force));
-  PetscCall(MatMult(c->step.op->A, xi, acc->work));
+  if (Mxi && Kxi && !c->step.op->G) PetscCall(VecAXPBYPCZ(acc->work, c->step.op->c_M, c->step.op->c_K, 0.0, Mxi, Kxi));
+  else PetscCall(MatMult(c->step.op->A, xi, acc->work));
   PetscCall(VecAXPBYPCZ(acc->work, -1.0, -1.0, 1.0, acc->b, acc->force));
   PetscCall(VecNorm(acc->work, NORM_2, &nr));
   PetscCall(VecNorm(acc->b, NORM_2, &nb));
@@ -55,7 +57,7 @@ PetscErrorCode RollerContactCheckStep(Roller ctx, RollerContact c, Vec b, Vec xi
   if (xmax == 0.0) xmax = 1.0;
   for (PetscInt k = 0; k < c->nsolvers; ++k)
     if (c->solvers[k] == c->solver) self = k;
-  PetscCall(RollerContactKKT(ctx, c, xi, c->acc.result.lambda, &gap_min, &kkt));
+  PetscCall(RollerContactKKT(ctx, c, xi, NULL, NULL, c->acc.result.lambda, &gap_min, &kkt));
   ck->max_kkt[self] = PetscMax(ck->max_kkt[self], kkt);
   PetscCall(CheckPrint(ctx, c, c->solver, c->acc.result.its, 0.0, kkt, gap_min));
   for (PetscInt k = 0; k < c->nsolvers; ++k) {
@@ -64,7 +66,7 @@ PetscErrorCode RollerContactCheckStep(Roller ctx, RollerContact c, Vec b, Vec xi
 
     if (k == self) continue;
     PetscCall(RollerContactSolveWith(ctx, c, s, b, ck->xi, &ck->result));
-    PetscCall(RollerContactKKT(ctx, c, ck->xi, ck->result.lambda, &gap_min, &kkt));
+    PetscCall(RollerContactKKT(ctx, c, ck->xi, NULL, NULL, ck->result.lambda, &gap_min, &kkt));
     PetscCall(VecAXPY(ck->xi, -1.0, xi));
     PetscCall(VecNorm(ck->xi, NORM_INFINITY, &diff));
     diff /= xmax;
@@ -137,8 +139,8 @@ static PetscErrorCode ContactMonitor(Roller ctx, RollerContact c, const RollerSt
   PetscFunctionReturn(0);
 }
 
-/* The contact columns of the CSV (docs/model.md section 6) for the solution xi at t. */
-PetscErrorCode RollerContactInfo(Roller ctx, RollerContact c, Vec xi, PetscReal t, RollerStepInfo *info)
+/* The contact columns of the CSV (docs/model.md section 6) for the solution xi at t (M xi, K xi: its products, or NULL). */
+PetscErrorCode RollerContactInfo(Roller ctx, RollerContact c, Vec xi, Vec Mxi, Vec Kxi, PetscReal t, RollerStepInfo *info)
 {
   RollerContactResult *res = &c->acc.result;
   PetscReal            gap_min, kkt;
@@ -151,7 +153,7 @@ PetscErrorCode RollerContactInfo(Roller ctx, RollerContact c, Vec xi, PetscReal 
     PetscCall(RollerContactGather(c, xi, c->nodes.red));
     PetscCall(RollerContactGaps(c, c->nodes.red, c->step.gap, &gap_min));
     kkt = PetscMax(0.0, -gap_min) / ctx->mesh.r_outer;
-  } else PetscCall(RollerContactKKT(ctx, c, xi, res->lambda, &gap_min, &kkt));
+  } else PetscCall(RollerContactKKT(ctx, c, xi, Mxi, Kxi, res->lambda, &gap_min, &kkt));
   info->contact_nodes = 0;
   info->contact_force = 0.0;
   for (PetscInt i = 0; i < c->nodes.nc; ++i) {

@@ -10,23 +10,21 @@
    and with the rigid part written apart (its difference over a step would cancel to round-off over 1/dt),
      L = rho theta' I_0 + L_rel,  I_0 = x . M x,
      L_rel = rho [(M x + M xi) . R(-pi/2) v + theta' (2 xi . M x + xi . M xi)],
-   M x being the centrifugal load L_centrifugal. Returns L_rel and I_0. Scratch: work, next. */
-static PetscErrorCode AngularMomentum(Roller ctx, PetscReal *L_rel, PetscReal *I0)
+   M x being the centrifugal load L_centrifugal (I_0: ops.I0). Returns L_rel. Scratch: work, next. */
+static PetscErrorCode AngularMomentum(Roller ctx, PetscReal *L_rel)
 {
   Vec         v = ctx->state.work, w = ctx->state.next, Mx = ctx->ops.L_centrifugal, xi = ctx->state.cur;
   PetscReal   td;
-  PetscScalar a, b, c, e;
+  PetscScalar a, b, c;
 
   PetscFunctionBeginUser;
   RollerTheta(ctx, ctx->state.time, NULL, &td, NULL);
   PetscCall(VecDot(xi, Mx, &a));
   PetscCall(VecDot(xi, ctx->state.Mcur, &b));
-  PetscCall(VecDot(ctx->ops.coordinates, Mx, &e));
   PetscCall(RollerApplyRotate90(ctx->state.velocity, v));
   PetscCall(VecWAXPY(w, 1.0, Mx, ctx->state.Mcur));
   PetscCall(VecDot(v, w, &c));
   *L_rel = ctx->material.density * (PetscRealPart(c) + td * (2.0 * PetscRealPart(a) + PetscRealPart(b)));
-  *I0    = PetscRealPart(e);
   PetscFunctionReturn(0);
 }
 
@@ -38,7 +36,7 @@ PetscErrorCode RollerStepAccumulate(Roller ctx)
 {
   RollerState    *st   = &ctx->state;
   RollerStepInfo *info = &ctx->info;
-  PetscReal       L    = 0.0, I0;
+  PetscReal       L    = 0.0;
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_DIAGNOSTICS]));
@@ -47,7 +45,7 @@ PetscErrorCode RollerStepAccumulate(Roller ctx)
   st->info_step = -1;
   PetscCall(RollerSchemeBalance(ctx, info));
   if (st->step != st->momentum_step) {
-    PetscCall(AngularMomentum(ctx, &L, &I0));
+    PetscCall(AngularMomentum(ctx, &L));
     st->momentum[1]   = st->momentum_step == st->step - 1 ? st->momentum[0] : PETSC_MAX_REAL;
     st->momentum[0]   = L;
     st->momentum_step = st->step;
@@ -82,7 +80,7 @@ PetscErrorCode RollerStepInfoGet(Roller ctx)
   info->alpha = PetscRealPart(a) / ctx->mesh.boundary_length;
   PetscCall(RollerSchemeEnergy(ctx, &info->energy));
   info->friction.torque = 0.0;
-  if (ctx->contact) PetscCall(RollerContactInfo(ctx, ctx->contact, st->cur, st->time, info));
+  if (ctx->contact) PetscCall(RollerContactInfo(ctx, ctx->contact, st->cur, st->Mcur, st->Kcur, st->time, info));
   else {
     /* no obstacle: no contact, and no gap to report (docs/output.md) */
     info->contact_nodes = 0;
@@ -93,13 +91,11 @@ PetscErrorCode RollerStepInfoGet(Roller ctx)
     info->contact_flips = info->contact_reversals = 0;
   }
   if (st->step > 0 && st->momentum[1] != PETSC_MAX_REAL) {
-    PetscReal   td, td_prev;
-    PetscScalar I0;
+    PetscReal td, td_prev;
 
     RollerTheta(ctx, st->time, NULL, &td, NULL);
     RollerTheta(ctx, st->time - ctx->ts.dt, NULL, &td_prev, NULL);
-    PetscCall(VecDot(ctx->ops.coordinates, ctx->ops.L_centrifugal, &I0));
-    info->friction.torque += (st->momentum[0] - st->momentum[1]) / ctx->ts.dt + ctx->material.density * PetscRealPart(I0) * (td - td_prev) / ctx->ts.dt;
+    info->friction.torque += (st->momentum[0] - st->momentum[1]) / ctx->ts.dt + ctx->material.density * ctx->ops.I0 * (td - td_prev) / ctx->ts.dt;
   }
   info->friction.shaft_work = st->works[0];
   info->friction.sheet_work = st->works[1];

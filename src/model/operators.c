@@ -97,5 +97,11 @@ PetscErrorCode RollerOperatorsSetUp(Roller ctx)
     PetscCall(RollerMassReduceLoad(T, ctx->ops.L_centrifugal));
   }
   PetscCall(MatDestroy(&T));
+  {
+    PetscScalar I0;
+
+    PetscCall(VecDot(ctx->ops.coordinates, ctx->ops.L_centrifugal, &I0));
+    ctx->ops.I0 = PetscRealPart(I0);
+  }
   PetscFunctionReturn(0);
 }

@@ -45,7 +45,7 @@ static PetscErrorCode SolveStep(Roller ctx, RollerContactSolver s, Vec b, Vec xi
   PetscCall(RollerContactSetUpStep(ctx, c, &stage, ctx->ts.dt));
   PetscCall(VecCopy(b, c->acc.b));
   PetscCall(RollerContactSolveWith(ctx, c, s, b, xi, res));
-  PetscCall(RollerContactKKT(ctx, c, xi, res->lambda, gap_min, kkt));
+  PetscCall(RollerContactKKT(ctx, c, xi, NULL, NULL, res->lambda, gap_min, kkt));
   PetscFunctionReturn(0);
 }
 
