@@ -31,6 +31,7 @@ PETSC_INTERN PetscErrorCode RollerContactInfo(Roller, RollerContact, Vec, Vec, V
 PETSC_INTERN PetscErrorCode RollerContactEnergyAdd(Roller, RollerContact, Vec, PetscReal, PetscReal, RollerStepInfo *);
 PETSC_INTERN PetscErrorCode RollerContactFields(Roller, RollerContact, Vec, Vec, Vec); /* pressure, traction, state: P1 scalar Vecs on the mesh */
 PETSC_INTERN PetscBool      RollerContactHasFriction(RollerContact);
+PETSC_INTERN PetscBool      RollerContactWantsRow(RollerContact);
 /* Dense pieces the steady state of -modes (modes/steady*.c) shares with the step's contact solvers:
    contact_lemke.c: the LCP w = M z + q >= 0, z >= 0, z . w = 0 (M n x n column-major) by Lemke's method;
    *solved false on a secondary ray (no solution found);

@@ -89,3 +89,9 @@ PetscBool RollerContactHasFriction(RollerContact c)
 {
   return c && c->friction ? PETSC_TRUE : PETSC_FALSE;
 }
+
+/* Whether the contact needs its row every step: the friction's dissipation (a cumulative column) or -contact_monitor. */
+PetscBool RollerContactWantsRow(RollerContact c)
+{
+  return c && (c->friction || c->opt.monitor) ? PETSC_TRUE : PETSC_FALSE;
+}

@@ -50,7 +50,7 @@ PetscErrorCode RollerStepAccumulate(Roller ctx)
     st->momentum[0]   = L;
     st->momentum_step = st->step;
   }
-  if (ctx->contact && RollerContactHasFriction(ctx->contact)) PetscCall(RollerStepInfoGet(ctx)); /* the friction dissipation */
+  if (RollerContactWantsRow(ctx->contact)) PetscCall(RollerStepInfoGet(ctx)); /* the friction dissipation, the contact monitor */
   if (st->step > st->work_step) {
     st->works[0] += info->load_work + info->friction.shaft_step;
     st->works[1] += info->friction.sheet_step;
