@@ -21,6 +21,7 @@ int main(int argc, char **argv)
     PetscCall(RollerSolve(roller));
     PetscCall(RollerDestroy(&roller));
   }
+  PetscCall(RollerOptionsCheck(PETSC_COMM_WORLD, PETSC_TRUE)); /* what no solver used: an error (docs/options.md) */
   PetscCall(SlepcFinalize());
   return 0;
 }

@@ -18,10 +18,10 @@ PetscErrorCode RollerTimeStepSetFromOptions(Roller ctx)
   PetscOptionsEnd();
   PetscCall(RollerSchemeSetFromOptions(ctx));
   if (monitor_set) ctx->ts.view = PETSC_TRUE; /* -ts_monitor in any form also views the discretization */
-  PetscCheck(ctx->ts.phase_error > 0 && ctx->ts.phase_error < 1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_phase_error %g must lie in (0, 1)", (double)ctx->ts.phase_error);
-  PetscCheck(ctx->ts.dt >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_dt %g must be > 0 (or 0: chosen from -ts_phase_error)", (double)ctx->ts.dt);
+  RollerCheckOption(ctx->comm, "-ts_phase_error", ctx->ts.phase_error, ctx->ts.phase_error > 0 && ctx->ts.phase_error < 1, "lie in (0, 1)");
+  RollerCheckOption(ctx->comm, "-ts_dt", ctx->ts.dt, ctx->ts.dt >= 0, "> 0 (or 0: chosen from -ts_phase_error)");
   ctx->ts.dt_set = (PetscBool)(ctx->ts.dt > 0);
-  PetscCheck(ctx->ts.max_time >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_max_time %g must be >= 0", (double)ctx->ts.max_time);
+  RollerCheckOption(ctx->comm, "-ts_max_time", ctx->ts.max_time, ctx->ts.max_time >= 0, ">= 0");
   PetscCheck(ctx->ts.max_steps >= -1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_max_steps %" PetscInt_FMT " must be >= 0 (or -1 for no cap)", ctx->ts.max_steps);
   PetscFunctionReturn(0);
 }
