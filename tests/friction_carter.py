@@ -86,7 +86,7 @@ def one_run(xi, dt, tag, mesh):
     nsteps = int(round(t_end / dt))
     every = max(k for k in range(1, nsteps // 40 + 1) if nsteps % k == 0)  # about 40 frames, the last at t_end
     run(["-dm_plex_filename", mesh, "-degree", 2, "-obstacle", "-obstacle_speed", 0.01, "-obstacle_depth", DEPTH,
-         "-omega", om, "-sheet_speed", repr(om * R * (1 - xi)), "-friction", MU, *CFG["damping"], "-ts_dt", dt,
+         "-omega", om, "-sheet_speed", repr(om * R * (1 - xi)), "-friction", MU, *CFG["damping"], "-ts_scheme", "dmf", "-ts_dt", dt,
          "-ts_max_time", t_end, "-quiet", "-monitor_csv", f"{tag}.csv", "-output", f"{tag}.h5", "-output_every", every])
     d = read_csv(f"{tag}.csv")
     t = d["t"]

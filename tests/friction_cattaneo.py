@@ -66,7 +66,8 @@ else:
     RUNS = [("l1_T40", 0.001, 40.0, 10), ("l2_T40", 0.002, 40.0, 5), ("l2_T80", 0.002, 80.0, 10)]
     PAIRS = [("l2_T40", "l2_T80")]
 SCENE = ["-degree", 2, "-obstacle", "-omega", 0, "-damping", 1, "-viscosity", 0.01, "-obstacle_speed", 0.005,
-         "-obstacle_depth", 0.002, "-ts_dt", DT, "-theta_a", A, "-theta_start", T0, "-coriolis_velocity", "backward", "-quiet"]
+         "-obstacle_depth", 0.002, "-ts_dt", DT, "-theta_a", A, "-theta_start", T0, "-coriolis_velocity", "backward", "-quiet",
+         "-ts_scheme", "dmf"]  # the scheme its dt was chosen for (docs/friction.md 5.1)
 
 
 def ell(x, w):

@@ -57,6 +57,11 @@ PetscErrorCode RollerStepAccumulate(Roller ctx)
     st->works[2] += info->friction.dissipation;
     st->work_step = st->step;
   }
+  if (st->info_step == st->step) { /* the row made above for the friction dissipation: its works up to this step */
+    info->friction.shaft_work = st->works[0];
+    info->friction.sheet_work = st->works[1];
+    info->friction.work       = st->works[2];
+  }
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }

@@ -254,6 +254,23 @@ static PetscErrorCode NewmarkBalance(RollerScheme s, Roller ctx, RollerStepInfo 
   PetscFunctionReturn(0);
 }
 
+/* M xi of the three levels: made from the step's equation, a product of the level would differ in its last bits, so a
+   restart reads them from the checkpoint. */
+static PetscErrorCode NewmarkKept(RollerScheme s, Roller ctx, PetscInt *n, Vec v[], const char *names[])
+{
+  Newmark *nm = (Newmark *)s->data;
+
+  PetscFunctionBeginUser;
+  *n       = 3;
+  v[0]     = ctx->state.Mcur;
+  v[1]     = nm->Mprev;
+  v[2]     = nm->Mprev2;
+  names[0] = "M_xi_k";
+  names[1] = "M_xi_k1";
+  names[2] = "M_xi_k2";
+  PetscFunctionReturn(0);
+}
+
 /* The step matrix (A = K for -static: the step from rest is min 1/2 xi^T K xi over the admissible set) and the
    M products of the levels (the initial ones, or the checkpoint's). */
 static PetscErrorCode NewmarkSetUp(RollerScheme s, Roller ctx)
@@ -336,6 +353,7 @@ static PetscErrorCode NewmarkCreate(RollerScheme s, PetscReal beta)
   s->ops->step    = NewmarkStep;
   s->ops->energy  = NewmarkEnergy;
   s->ops->balance = NewmarkBalance;
+  s->ops->kept    = NewmarkKept;
   s->ops->view    = NewmarkView;
   s->ops->destroy = NewmarkDestroy;
   PetscFunctionReturn(0);
