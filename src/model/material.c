@@ -22,7 +22,7 @@ PetscErrorCode RollerMaterialSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsReal("-viscosity", "Kelvin-Voigt damping tau of the rubber, sigma = C:(eps + tau eps_t) (time)", NULL, ctx->material.viscosity, &ctx->material.viscosity, NULL));
   PetscOptionsEnd();
   RollerCheckOption(ctx->comm, "-young", ctx->material.young, ctx->material.young > 0, "> 0");
-  RollerCheckOption(ctx->comm, "-poisson", ctx->material.poisson, ctx->material.poisson > -1 && ctx->material.poisson < 0.5, "lie in (-1, 0.5)");
+  RollerCheckOption(ctx->comm, "-poisson", ctx->material.poisson, ctx->material.poisson > -1 && ctx->material.poisson < 0.5, "in (-1, 0.5)");
   RollerCheckOption(ctx->comm, "-density", ctx->material.density, ctx->material.density > 0, "> 0");
   RollerCheckOption(ctx->comm, "-viscosity", ctx->material.viscosity, ctx->material.viscosity >= 0, ">= 0 (a time: tau of sigma = C:(eps + tau eps_t))");
   PetscCall(RollerLameFromYoung(ctx->material.young, ctx->material.poisson, &ctx->material.lambda, &ctx->material.mu));
