@@ -88,6 +88,22 @@ c.check(code != 0 and not os.path.exists("typo.csv") and not os.path.exists("typ
 # the opt-out: -options_left 0 runs anyway
 code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet", "-youngg", "0.2", "-options_left", "0"], check=False)
 c.check(code == 0, f"-youngg 0.2 -options_left 0: exit {code} (the check turned off)")
+# files: a restart that is not HDF5, or truncated; an options file with a YAML error: one line naming the file
+with open("not_hdf5.h5", "w") as f:
+    f.write("not a checkpoint\n")
+with open("bad.yaml", "w") as f:
+    f.write("young: 0.1\nomega: [1\npoisson: 0.3\n")
+run(["-mesh_h", "0.05", "-ts_max_steps", "3", "-quiet", "-checkpoint", "whole.h5", "-checkpoint_every", "1"])
+with open("whole.h5", "rb") as f, open("truncated.h5", "wb") as g:
+    g.write(f.read()[:3000])
+for args, name, what in ((["-restart", "not_hdf5.h5"], "not_hdf5.h5", "not an HDF5 file"),
+                         (["-restart", "truncated.h5"], "truncated.h5", "truncated"),
+                         (["-options_file", "bad.yaml"], "bad.yaml", "line 3")):
+    code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet"] + args, check=False)
+    text = out + err
+    line = next((ln for ln in text.splitlines() if name in ln), "")
+    c.check(code != 0 and what in line and "HDF5-DIAG" not in text, f"{' '.join(args)}: exit {code}, one line: {line.strip()[:150]}")
+
 # an options file's unknown option is refused (naming it); a known one the run does not use is reported, not refused
 with open("typo.yaml", "w") as f:
     f.write("youngg: 0.2\n")
