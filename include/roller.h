@@ -18,6 +18,13 @@ PETSC_EXTERN PetscErrorCode RollerDestroy(Roller *);
 /* -sweep F.csv: the modes of every case of a product of scene option values, each case a Roller (create, set from
    options, set up, solve, destroy) on one of the communicator's sub-communicators; one gathered CSV. */
 PETSC_EXTERN PetscErrorCode RollerSweep(MPI_Comm);
+/* Unknown or unused options: an error (a typo suggested), before any output (final: PETSC_FALSE) and at the end
+   (PETSC_TRUE); -options_left 0 turns it off (docs/options.md) */
+PETSC_EXTERN PetscErrorCode RollerOptionsCheck(MPI_Comm, PetscBool);
+PETSC_EXTERN PetscErrorCode RollerOptionsCheckValues(MPI_Comm);
+/* Before PetscInitialize: 1 (after a line naming the file and the line) if a YAML options file does not parse */
+PETSC_EXTERN int RollerOptionsFilesParse(int, char **);
+PETSC_EXTERN PetscErrorCode RollerOptionNameGivenOnCommandLine(const char[], PetscBool *);
 
 /* Observers of the run (TSMonitorSet-style): RollerSolve calls every one, in the order they were set, at the
    state the run starts from (step 0, or the step a restart continues), after every step, and once at the

@@ -17,6 +17,17 @@
 #include <petscds.h>
 #include <petscsf.h>
 
+/* A real option checked in its component's options block: finite and ok; one message naming the option, its value
+   and what is allowed ("" if any finite value is; PETSC_ERR_USER_INPUT: exit non-zero). */
+#define RollerCheckOption(comm, name, value, ok, allowed) \
+  do { \
+    if (PetscUnlikely(PetscIsInfOrNanReal((PetscReal)(value)) || !(ok))) { \
+      char value_[32]; \
+      snprintf(value_, sizeof(value_), "%g", (double)(value)); \
+      SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s %s: must be finite%s%s", name, value_, (allowed)[0] ? " and " : "", allowed); \
+    } \
+  } while (0)
+
 typedef enum { ROLLER_IC_REST, ROLLER_IC_BUMP, ROLLER_IC_MMS, ROLLER_IC_MODE } RollerInitialCondition;
 PETSC_EXTERN const char *const RollerInitialConditions[];
 

@@ -60,6 +60,19 @@ cases = [
     (["-modes", "-sweep", "bad_sweep.csv", "-sweep_omega", "0,0.1x,0.2"], "-sweep_omega", "0.1x"),
     (["-modes", "-sweep", "bad_sweep.csv", "-sweep_young_range", "0.05,0.2"], "-sweep_young_range", "0.05,0.2"),
     (["-modes", "-sweep", "bad_sweep.csv", "-sweep_poisson", "0.3,0.4"], "-sweep_poisson", "omega, young"),
+    # issue 26: nothing passes silently
+    (["-youngg", "0.2"], "-youngg", "did you mean -young?"),
+    (["-frictoin", "0.8"], "-frictoin", "did you mean -friction?"),
+    (["-obstacle", "-friction", "0.5", "-sheet_speed", "nan"], "-sheet_speed", "nan"),
+    (["-young", "inf"], "-young", "must be finite"),
+    (["-young", "abc"], "-young", "not a number"),
+    (["-ts_max_steps", "1e300"], "-ts_max_steps", "not an integer"),
+    (["-modes", "-friction", "0.8"], "-friction", "-obstacle"),
+    (["-coriolis_velocity", "foo"], "-coriolis_velocity", "backward"),
+    (["-ts_scheme", "foo"], "-ts_scheme", "trapezoidal"),
+    (["-obstacle", "-contact_solver", "foo"], "-contact_solver", "condensed"),
+    (["-ts_dt", "100", "-ts_max_time", "20"], "-ts_dt", "no step"),
+    (["-monitor_csv", "unused.csv", "-modes"], "-monitor_csv", "not used"),
 ]
 for args, name, value in cases:
     code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet"] + args if args[0] != "-mesh_h" else args + ["-ts_max_steps", "2"], check=False)
@@ -68,6 +81,39 @@ for args, name, value in cases:
     c.check(code != 0 and name in text and value in first, f"{' '.join(args)}: exit {code}, message: {first.strip()[:150]}")
 
 c.check(not os.path.exists("bad_sweep.csv"), "no sweep CSV left by a refused -sweep")
+
+# a typo refused before any output file is opened: no CSV, not even its .part
+code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet", "-monitor_csv", "typo.csv", "-youngg", "0.2"], check=False)
+c.check(code != 0 and not os.path.exists("typo.csv") and not os.path.exists("typo.csv.part"), f"-youngg: exit {code}, no typo.csv or typo.csv.part written")
+# the opt-out: -options_left 0 runs anyway
+code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet", "-youngg", "0.2", "-options_left", "0"], check=False)
+c.check(code == 0, f"-youngg 0.2 -options_left 0: exit {code} (the check turned off)")
+# files: a restart that is not HDF5, or truncated; an options file with a YAML error: one line naming the file
+with open("not_hdf5.h5", "w") as f:
+    f.write("not a checkpoint\n")
+with open("bad.yaml", "w") as f:
+    f.write("young: 0.1\nomega: [1\npoisson: 0.3\n")
+run(["-mesh_h", "0.05", "-ts_max_steps", "3", "-quiet", "-checkpoint", "whole.h5", "-checkpoint_every", "1"])
+with open("whole.h5", "rb") as f, open("truncated.h5", "wb") as g:
+    g.write(f.read()[:3000])
+for args, name, what in ((["-restart", "not_hdf5.h5"], "not_hdf5.h5", "not an HDF5 file"),
+                         (["-restart", "truncated.h5"], "truncated.h5", "truncated"),
+                         (["-options_file", "bad.yaml"], "bad.yaml", "line 3")):
+    code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet"] + args, check=False)
+    text = out + err
+    line = next((ln for ln in text.splitlines() if name in ln), "")
+    c.check(code != 0 and what in line and "HDF5-DIAG" not in text, f"{' '.join(args)}: exit {code}, one line: {line.strip()[:150]}")
+
+# an options file's unknown option is refused (naming it); a known one the run does not use is reported, not refused
+with open("typo.yaml", "w") as f:
+    f.write("youngg: 0.2\n")
+code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet", "-options_file", "typo.yaml"], check=False)
+c.check(code != 0 and "did you mean -young?" in out + err, f"options file with youngg: exit {code}")
+with open("contact_scene.yaml", "w") as f:
+    f.write("obstacle: false\ncontact_solver: vi\nfriction: 0.8\n")
+code, out, err = run(["-mesh_h", "0.05", "-quiet", "-options_file", "contact_scene.yaml", "-modes", "-modes_nev", "2"], check=False)
+c.check(code == 0 and "-friction 0.8, set by an options file" in err and "-contact_solver vi, set by an options file" in err,
+        f"a contact scene's YAML with -modes and no obstacle: exit {code}, its unused -friction and -contact_solver reported on stderr")
 
 # a modes file of another roller: refused, naming the parameter
 run(["-mesh_h", "0.05", "-modes", "-modes_output", "bad_modes.h5", "-quiet"])

@@ -11,6 +11,7 @@ int main(int argc, char **argv)
   Roller    roller;
   PetscBool sweep;
 
+  if (RollerOptionsFilesParse(argc, argv)) return 1; /* a YAML error: the file and the line */
   PetscCall(SlepcInitialize(&argc, &argv, NULL, help)); /* PETSc and SLEPc (-modes) */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-sweep", &sweep));
   if (sweep) PetscCall(RollerSweep(PETSC_COMM_WORLD)); /* many scenes, each a Roller on a sub-communicator */
@@ -21,6 +22,7 @@ int main(int argc, char **argv)
     PetscCall(RollerSolve(roller));
     PetscCall(RollerDestroy(&roller));
   }
+  PetscCall(RollerOptionsCheck(PETSC_COMM_WORLD, PETSC_TRUE)); /* what no solver used: an error (docs/options.md) */
   PetscCall(SlepcFinalize());
   return 0;
 }

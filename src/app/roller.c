@@ -30,6 +30,15 @@ PetscErrorCode RollerSetUp(Roller ctx)
   }
   /* The observers, in the order they see every state: the console lines, the outputs (CSV, fields), the
      periodic checkpoint (after the outputs: a restart continues after the CSV row of its step), the MMS errors */
+  { /* a typo refused before any output file is opened (the outputs' options read, not yet acted on) */
+    char      csv[PETSC_MAX_PATH_LEN], h5[PETSC_MAX_PATH_LEN];
+    PetscInt  every;
+    PetscBool help;
+
+    PetscCall(PetscOptionsHasHelp(NULL, &help));
+    if (!ctx->eig.on && !help) PetscCall(RollerOutputSetFromOptions(ctx, csv, h5, sizeof(csv), &every));
+    PetscCall(RollerOptionsCheck(ctx->comm, PETSC_FALSE));
+  }
   if (!ctx->eig.on) {
     PetscCall(RollerTimeStepMonitorSetUp(ctx));
     PetscCall(RollerOutputMonitorSetUp(ctx));

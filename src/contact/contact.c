@@ -79,10 +79,10 @@ static PetscErrorCode ContactSetFromOptions(Roller ctx, RollerContact c, char mo
   for (PetscInt k = 0; k < c->nsolvers; ++k)
     if (c->solvers[k]->ops->setfromoptions) PetscCall((*c->solvers[k]->ops->setfromoptions)(c->solvers[k], PetscOptionsObject));
   PetscOptionsEnd();
-  PetscCheck(c->opt.friction_rtol > 0 && c->opt.friction_rtol < 1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_friction_rtol %g must lie in (0, 1)", (double)c->opt.friction_rtol);
+  RollerCheckOption(ctx->comm, "-contact_friction_rtol", c->opt.friction_rtol, c->opt.friction_rtol > 0 && c->opt.friction_rtol < 1, "in (0, 1)");
   PetscCheck(c->opt.friction_max_it >= 1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_friction_max_it %" PetscInt_FMT " must be >= 1", c->opt.friction_max_it);
-  PetscCheck(c->opt.margin > -ctx->mesh.r_outer, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_margin %g must be > -r_outer", (double)c->opt.margin);
-  PetscCheck(c->opt.rtol > 0 && c->opt.rtol < 1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_rtol %g must lie in (0, 1)", (double)c->opt.rtol);
+  RollerCheckOption(ctx->comm, "-contact_margin", c->opt.margin, c->opt.margin > -ctx->mesh.r_outer, "> -r_outer");
+  RollerCheckOption(ctx->comm, "-contact_rtol", c->opt.rtol, c->opt.rtol > 0 && c->opt.rtol < 1, "in (0, 1)");
   PetscCheck(c->opt.max_resolves >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_max_resolves %" PetscInt_FMT " must be >= 0", c->opt.max_resolves);
   for (PetscInt k = 0; k < c->nsolvers; ++k) {
     PetscBool match;
@@ -90,7 +90,15 @@ static PetscErrorCode ContactSetFromOptions(Roller ctx, RollerContact c, char mo
     PetscCall(PetscStrcmp(c->solvers[k]->name, c->opt.solver, &match));
     if (match) c->solver = c->solvers[k];
   }
-  PetscCheck(c->solver, ctx->comm, PETSC_ERR_ARG_UNKNOWN_TYPE, "Unknown -contact_solver %s (see -help for the registered solvers)", c->opt.solver);
+  if (!c->solver) {
+    char names[256] = "";
+
+    for (PetscInt k = 0; k < c->nsolvers; ++k) {
+      PetscCall(PetscStrlcat(names, " ", sizeof(names)));
+      PetscCall(PetscStrlcat(names, c->solvers[k]->name, sizeof(names)));
+    }
+    SETERRQ(ctx->comm, PETSC_ERR_USER_INPUT, "-contact_solver %s: no such solver; allowed:%s", c->opt.solver, names);
+  }
   PetscFunctionReturn(0);
 }
 

@@ -29,7 +29,7 @@ static PetscErrorCode PCGSetFromOptions(RollerContactSolver s, PetscOptionItems 
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsReal("-contact_pcg_rtol", "Projected CG stops when ||T(-grad J)|| <= rtol max(||b||, ||A|| ||xi_0||)", NULL, pcg->rtol, &pcg->rtol, NULL));
   PetscCall(PetscOptionsInt("-contact_pcg_max_it", "Iteration cap of the projected CG", NULL, pcg->max_it, &pcg->max_it, NULL));
-  PetscCheck(pcg->rtol > 0 && pcg->rtol < 1, PetscOptionsObject->comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_pcg_rtol %g must lie in (0, 1)", (double)pcg->rtol);
+  RollerCheckOption(PetscOptionsObject->comm, "-contact_pcg_rtol", pcg->rtol, pcg->rtol > 0 && pcg->rtol < 1, "in (0, 1)");
   PetscCheck(pcg->max_it > 0, PetscOptionsObject->comm, PETSC_ERR_ARG_OUTOFRANGE, "-contact_pcg_max_it %" PetscInt_FMT " must be > 0", pcg->max_it);
   PetscFunctionReturn(0);
 }

@@ -16,7 +16,8 @@ PetscErrorCode RollerInitialSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsViewer("-mms_view", "Where the L2 and H1 errors against the manufactured solution go at the end (default stdout; ascii:F:ascii_csv writes the CSV t,L2,H1)", NULL, &ctx->init.mms_view, &ctx->init.mms_format, NULL));
   PetscOptionsEnd();
   if (ctx->init.mms != ROLLER_MMS_NONE) ctx->init.type = ROLLER_IC_MMS; /* -mms implies its initial condition */
-  PetscCheck(ctx->init.amplitude >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ic_amplitude %g must be >= 0", (double)ctx->init.amplitude);
+  PetscCheck(ctx->init.mode_index >= 0, ctx->comm, PETSC_ERR_USER_INPUT, "-initial_mode %" PetscInt_FMT ": a row of the eigenvalue CSV, must be >= 0", ctx->init.mode_index);
+  RollerCheckOption(ctx->comm, "-ic_amplitude", ctx->init.amplitude, ctx->init.amplitude >= 0, ">= 0");
   PetscCheck(ctx->init.type != ROLLER_IC_MODE || ctx->init.mode_file[0], ctx->comm, PETSC_ERR_ARG_WRONG, "-initial_condition mode needs -initial_mode_file F.h5 (written by -modes -modes_output F.h5)");
   PetscCheck(ctx->init.type != ROLLER_IC_MMS || ctx->init.mms != ROLLER_MMS_NONE, ctx->comm, PETSC_ERR_ARG_INCOMP, "-initial_condition mms needs -mms linear or sine");
   PetscFunctionReturn(0);

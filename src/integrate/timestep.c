@@ -1,6 +1,7 @@
 /* Time stepping: its options (-ts_*, -quiet), the number of steps, and its observers on the console: the
    -ts_monitor line of every step and the progress line (at most every 5 s, and at the last step). */
 #include "integrate/integrate.h"
+#include "integrate/scheme_impl.h"
 
 PetscErrorCode RollerTimeStepSetFromOptions(Roller ctx)
 {
@@ -17,11 +18,31 @@ PetscErrorCode RollerTimeStepSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsBool("-ts_monitor", "Print R, alpha, energy (and contact) every step", NULL, ctx->ts.monitor, &ctx->ts.monitor, &monitor_set));
   PetscOptionsEnd();
   PetscCall(RollerSchemeSetFromOptions(ctx));
+  if (ctx->ts.scheme[0]) { /* an unknown -ts_scheme refused here with the registered names */
+    PetscVoidFunction f;
+
+    PetscCall(PetscFunctionListFind(RollerSchemeList, ctx->ts.scheme, &f));
+    if (!f) {
+      const char **names;
+      int          n;
+      char         list[256] = "";
+
+      PetscCall(PetscFunctionListGet(RollerSchemeList, &names, &n));
+      for (int i = 0; i < n; ++i) {
+        PetscCall(PetscStrlcat(list, " ", sizeof(list)));
+        PetscCall(PetscStrlcat(list, names[i], sizeof(list)));
+      }
+      PetscCall(PetscFree(names));
+      SETERRQ(ctx->comm, PETSC_ERR_USER_INPUT, "-ts_scheme %s: no such scheme; allowed:%s", ctx->ts.scheme, list);
+    }
+  }
   if (monitor_set) ctx->ts.view = PETSC_TRUE; /* -ts_monitor in any form also views the discretization */
-  PetscCheck(ctx->ts.phase_error > 0 && ctx->ts.phase_error < 1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_phase_error %g must lie in (0, 1)", (double)ctx->ts.phase_error);
-  PetscCheck(ctx->ts.dt >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_dt %g must be > 0 (or 0: chosen from -ts_phase_error)", (double)ctx->ts.dt);
+  RollerCheckOption(ctx->comm, "-ts_phase_error", ctx->ts.phase_error, ctx->ts.phase_error > 0 && ctx->ts.phase_error < 1, "in (0, 1)");
+  RollerCheckOption(ctx->comm, "-ts_dt", ctx->ts.dt, ctx->ts.dt >= 0, "> 0 (or 0: chosen from -ts_phase_error)");
   ctx->ts.dt_set = (PetscBool)(ctx->ts.dt > 0);
-  PetscCheck(ctx->ts.max_time >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_max_time %g must be >= 0", (double)ctx->ts.max_time);
+  RollerCheckOption(ctx->comm, "-ts_max_time", ctx->ts.max_time, ctx->ts.max_time >= 0, ">= 0");
+  PetscCheck(ctx->ts.dt <= ctx->ts.max_time || ctx->ts.max_time == 0, ctx->comm, PETSC_ERR_USER_INPUT, "-ts_dt %g: longer than -ts_max_time %g, the run would take no step; allowed: (0, %g]", (double)ctx->ts.dt, (double)ctx->ts.max_time,
+             (double)ctx->ts.max_time);
   PetscCheck(ctx->ts.max_steps >= -1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_max_steps %" PetscInt_FMT " must be >= 0 (or -1 for no cap)", ctx->ts.max_steps);
   PetscFunctionReturn(0);
 }

@@ -92,10 +92,13 @@ PetscErrorCode RollerMeshSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsBool("-mesh_gmsh_verbose", "Let gmsh print its progress (in-process mesh, no -dm_plex_filename)", NULL, mesh->gmsh_verbose, &mesh->gmsh_verbose, NULL));
   PetscCall(PetscOptionsBool("-mesh_view_info", "Print the global vertex, cell and boundary counts, area and boundary lengths", NULL, mesh->view_info, &mesh->view_info, NULL));
   PetscOptionsEnd();
-  PetscCheck(mesh->h >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_h %g must be > 0 (or 0: chosen from -ts_phase_error)", (double)mesh->h);
+  RollerCheckOption(ctx->comm, "-mesh_h", mesh->h, mesh->h >= 0, "> 0 (or 0: chosen from -ts_phase_error)");
   mesh->h_set = (PetscBool)(mesh->h > 0);
+  RollerCheckOption(ctx->comm, "-r_outer", mesh->r_outer, mesh->r_outer > 0, "> 0");
+  RollerCheckOption(ctx->comm, "-r_inner", mesh->r_inner, mesh->r_inner > 0, "> 0 (and < r_outer)");
+  RollerCheckOption(ctx->comm, "-mesh_contact_layer", mesh->contact_layer, mesh->contact_layer >= 0, ">= 0 (0: 2 h_c)");
   PetscCheck(mesh->r_inner > 0 && mesh->r_inner < mesh->r_outer, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-r_inner %g and -r_outer %g must satisfy 0 < r_inner < r_outer", (double)mesh->r_inner, (double)mesh->r_outer);
-  PetscCheck(mesh->h_contact >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_h_contact %g must be >= 0 (0: uniform mesh; > 0: the edge length on Gamma_C, at most -mesh_h)", (double)mesh->h_contact);
+  RollerCheckOption(ctx->comm, "-mesh_h_contact", mesh->h_contact, mesh->h_contact >= 0, ">= 0 (0: uniform mesh; > 0: the edge length on Gamma_C, at most -mesh_h)");
   PetscCheck(!(mesh->h_contact > 0 && mesh->file[0]), ctx->comm, PETSC_ERR_ARG_INCOMP, "-mesh_h_contact %g grades the in-process gmsh mesh; it cannot apply to -dm_plex_filename %s (grade that mesh in gmsh, or drop one of the two)", (double)mesh->h_contact,
              mesh->file);
   PetscCheck(!(mesh->h_contact > 0 && mesh->h_set && mesh->h_contact > mesh->h), ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-mesh_h_contact %g must not exceed -mesh_h %g (the bulk edge length): allowed 0 (uniform) or (0, %g]", (double)mesh->h_contact,

@@ -22,7 +22,7 @@ PetscErrorCode RollerDiscretizationSetFromOptions(Roller ctx)
   PetscOptionsEnd();
   PetscCheck(ctx->disc.degree == 1 || ctx->disc.degree == 2, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-degree %" PetscInt_FMT " must be 1 or 2", ctx->disc.degree);
   PetscCheck(!ctx->mesh.curved || ctx->disc.degree == 2, ctx->comm, PETSC_ERR_ARG_INCOMP, "-mesh_curved needs -degree 2 (a P1 field cannot see a curved edge), got -degree %" PetscInt_FMT, ctx->disc.degree);
-  PetscCheck(ctx->disc.damping >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-damping %g must be >= 0", (double)ctx->disc.damping);
+  RollerCheckOption(ctx->comm, "-damping", ctx->disc.damping, ctx->disc.damping >= 0, ">= 0");
   PetscFunctionReturn(0);
 }
 

@@ -11,8 +11,10 @@ PetscErrorCode RollerRotationSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsReal("-theta_b", "Angular frequency b of the rotation perturbation", NULL, ctx->rotation.b, &ctx->rotation.b, NULL));
   PetscCall(PetscOptionsReal("-theta_start", "Time t0 at which the drive starts (the roller is held at theta = a before: press first, then turn)", NULL, ctx->rotation.start, &ctx->rotation.start, NULL));
   PetscOptionsEnd();
-  PetscCheck(ctx->rotation.start >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-theta_start %g must be >= 0", (double)ctx->rotation.start);
-  PetscCheck(ctx->rotation.b >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-theta_b %g must be >= 0", (double)ctx->rotation.b);
+  RollerCheckOption(ctx->comm, "-omega", ctx->rotation.omega, PETSC_TRUE, "");
+  RollerCheckOption(ctx->comm, "-theta_a", ctx->rotation.a, PETSC_TRUE, "");
+  RollerCheckOption(ctx->comm, "-theta_start", ctx->rotation.start, ctx->rotation.start >= 0, ">= 0");
+  RollerCheckOption(ctx->comm, "-theta_b", ctx->rotation.b, ctx->rotation.b >= 0, ">= 0");
   PetscFunctionReturn(0);
 }
 

@@ -21,10 +21,10 @@ PetscErrorCode RollerMaterialSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsReal("-density", "Density rho", NULL, ctx->material.density, &ctx->material.density, NULL));
   PetscCall(PetscOptionsReal("-viscosity", "Kelvin-Voigt damping tau of the rubber, sigma = C:(eps + tau eps_t) (time)", NULL, ctx->material.viscosity, &ctx->material.viscosity, NULL));
   PetscOptionsEnd();
-  PetscCheck(ctx->material.young > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-young %g must be > 0", (double)ctx->material.young);
-  PetscCheck(ctx->material.poisson > -1 && ctx->material.poisson < 0.5, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-poisson %g must lie in (-1, 0.5)", (double)ctx->material.poisson);
-  PetscCheck(ctx->material.density > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-density %g must be > 0", (double)ctx->material.density);
-  PetscCheck(ctx->material.viscosity >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-viscosity %g must be >= 0 (a time: tau of sigma = C:(eps + tau eps_t))", (double)ctx->material.viscosity);
+  RollerCheckOption(ctx->comm, "-young", ctx->material.young, ctx->material.young > 0, "> 0");
+  RollerCheckOption(ctx->comm, "-poisson", ctx->material.poisson, ctx->material.poisson > -1 && ctx->material.poisson < 0.5, "in (-1, 0.5)");
+  RollerCheckOption(ctx->comm, "-density", ctx->material.density, ctx->material.density > 0, "> 0");
+  RollerCheckOption(ctx->comm, "-viscosity", ctx->material.viscosity, ctx->material.viscosity >= 0, ">= 0 (a time: tau of sigma = C:(eps + tau eps_t))");
   PetscCall(RollerLameFromYoung(ctx->material.young, ctx->material.poisson, &ctx->material.lambda, &ctx->material.mu));
   PetscFunctionReturn(0);
 }

@@ -64,7 +64,7 @@ PetscErrorCode RollerCheckRotation(Roller ctx)
   PetscCall(PetscOptionsReal("-stability_margin", "Allowed fraction of the limit omega_1", NULL, margin, &margin, NULL));
   PetscCall(PetscOptionsBool("-stability_view", "Print the lowest natural frequency omega_1 and the limit", NULL, view, &view, NULL));
   PetscOptionsEnd();
-  PetscCheck(margin > 0 && margin <= 1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-stability_margin %g must lie in (0, 1]", (double)margin);
+  RollerCheckOption(ctx->comm, "-stability_margin", margin, margin > 0 && margin <= 1, "in (0, 1]");
   if (!check || (max_rate == 0 && !view)) PetscFunctionReturn(0);
   PetscCall(LowestFrequency(ctx, &omega1));
   if (view) PetscCall(PetscPrintf(ctx->comm, "stability: omega_1 = %.10g, max |theta'| = %.10g, allowed < %.10g\n", (double)omega1, (double)max_rate, (double)(margin * omega1)));
