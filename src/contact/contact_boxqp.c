@@ -155,10 +155,13 @@ static PetscErrorCode VIJacobian(SNES snes, Vec x, Mat J, Mat P, void *ctx)
 }
 
 /* SNES VI (vinewtonrsls) on G x + d = 0 with the bounds, from x = the projection of 0, to the absolute residual
-   tolerance atol (a length). */
+   tolerance atol (a length). The unknown is scaled to y = x/s, s the largest finite bound: SNES VI counts a
+   component within an absolute 1e-8 of its bound as on it, which for forces of 1e-5 would pin sticking nodes to
+   the cone (a law residual of 1e-6 on the feeder). */
 static PetscErrorCode BoxVI(RollerContactLCP *qp, PetscInt n, PetscReal atol, PetscReal t, PetscReal x[], PetscInt *its)
 {
   SNESConvergedReason reason;
+  PetscReal           s;
   const PetscScalar  *xa;
   KSP                 ksp;
   PC                  pc;
@@ -181,6 +184,18 @@ static PetscErrorCode BoxVI(RollerContactLCP *qp, PetscInt n, PetscReal atol, Pe
     PetscCall(PCSetType(pc, PCLU));
     PetscCall(SNESSetFromOptions(qp->snes));
   }
+  {
+    PetscReal scale = 0.0;
+
+    for (PetscInt j = 0; j < n; ++j) {
+      if (qp->lo && qp->lo[j] > -PETSC_MAX_REAL) scale = PetscMax(scale, PetscAbsReal(qp->lo[j]));
+      if (qp->up && qp->up[j] < PETSC_MAX_REAL) scale = PetscMax(scale, PetscAbsReal(qp->up[j]));
+    }
+    s = scale > 0.0 ? scale : 1.0;
+  }
+  PetscCall(MatScale(qp->tG, s)); /* F(y) = s G y + d */
+  PetscCall(VecScale(qp->tlb, 1.0 / s));
+  PetscCall(VecScale(qp->tub, 1.0 / s));
   PetscCall(SNESVISetVariableBounds(qp->snes, qp->tlb, qp->tub));
   PetscCall(SNESSetTolerances(qp->snes, atol, 0.0, 0.0, 200, 10000));
   PetscCall(VecZeroEntries(qp->tx));
@@ -191,7 +206,7 @@ static PetscErrorCode BoxVI(RollerContactLCP *qp, PetscInt n, PetscReal atol, Pe
   PetscCall(SNESGetIterationNumber(qp->snes, its));
   PetscCheck(reason > 0, PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED, "Friction box QP at t = %g: SNES VI did not converge: %s", (double)t, SNESConvergedReasons[reason]);
   PetscCall(VecGetArrayRead(qp->tx, &xa));
-  for (PetscInt j = 0; j < n; ++j) x[j] = PetscMin(PetscMax(qp->lo[j], PetscRealPart(xa[j])), qp->up[j]);
+  for (PetscInt j = 0; j < n; ++j) x[j] = PetscMin(PetscMax(qp->lo[j], s * PetscRealPart(xa[j])), qp->up[j]);
   PetscCall(VecRestoreArrayRead(qp->tx, &xa));
   PetscFunctionReturn(0);
 }

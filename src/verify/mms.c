@@ -110,25 +110,25 @@ static void f0_mms(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstant
   for (PetscInt c = 0; c < 2; ++c) f0[c] = rho * utt[c] - divsig[c] - rho * f[c];
 }
 
-static PetscErrorCode MMSExact(PetscInt dim, PetscReal time, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *vctx)
+/* The manufactured field's k-th time derivative (0: the displacement, 1: the velocity) at x. */
+static void MMSField(Roller ctx, PetscReal time, const PetscReal x[], PetscInt k, PetscScalar *u)
 {
-  Roller    ctx = (Roller)vctx;
   PetscReal T[3], B;
 
   MMSTime(ctx->init.mms, time, T);
   MMSShape(ctx->mesh.r_inner, ctx->mesh.r_outer, x, &B, NULL, NULL);
-  for (PetscInt c = 0; c < 2; ++c) u[c] = T[0] * ctx->init.amplitude * B * mms_c[c];
+  for (PetscInt c = 0; c < 2; ++c) u[c] = T[k] * ctx->init.amplitude * B * mms_c[c];
+}
+
+static PetscErrorCode MMSExact(PetscInt dim, PetscReal time, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *vctx)
+{
+  MMSField((Roller)vctx, time, x, 0, u);
   return 0;
 }
 
 static PetscErrorCode MMSVelocity(PetscInt dim, PetscReal time, const PetscReal x[], PetscInt Nc, PetscScalar *u, void *vctx)
 {
-  Roller    ctx = (Roller)vctx;
-  PetscReal T[3], B;
-
-  MMSTime(ctx->init.mms, time, T);
-  MMSShape(ctx->mesh.r_inner, ctx->mesh.r_outer, x, &B, NULL, NULL);
-  for (PetscInt c = 0; c < 2; ++c) u[c] = T[1] * ctx->init.amplitude * B * mms_c[c];
+  MMSField((Roller)vctx, time, x, 1, u);
   return 0;
 }
 
