@@ -221,6 +221,7 @@ PetscErrorCode RollerContactDestroy(RollerContact *contact)
   PetscFunctionBeginUser;
   if (!c) PetscFunctionReturn(0);
   PetscCall(RollerContactCheckSummary(c));
+  PetscCall(RollerContactFrictionSummary(c));
   PetscCall(ContactSolversDestroy(c));
   PetscCall(RollerContactFrictionDestroy(&c->friction));
   PetscCall(PetscFree(c->acc.result.lambda_t));

@@ -21,6 +21,7 @@ struct _n_RollerContactFriction {
   PetscInt        *node_state; /* nc: 0 off the sheet, 1 stick, 2 slip, of the accepted step */
   PetscReal       *M, *q, *z;  /* Lemke's LCP of 4 m unknowns (allocated when first needed, for lemke_cap) */
   PetscInt         lemke_cap, its, lemke_steps;
+  PetscInt         steps, newton_failures; /* the run's Coulomb solves and those whose Newton method failed (Tresca passes took over) */
 };
 
 /* mu(|v|) = mu + (mu_s - mu) exp(-|v| / v_c), constant mu without -friction_decay (v_c = 0); *dmu its derivative
@@ -61,13 +62,23 @@ PetscErrorCode RollerContactFrictionCreate(Roller ctx, RollerContact c)
   PetscFunctionReturn(0);
 }
 
+/* At the end of a run: how often the Coulomb solve fell back (never silent, docs/friction.md section 3). */
+PetscErrorCode RollerContactFrictionSummary(RollerContact c)
+{
+  RollerContactFriction fr = c->friction;
+
+  PetscFunctionBeginUser;
+  if (!fr || !(fr->newton_failures || fr->lemke_steps)) PetscFunctionReturn(0);
+  PetscCall(PetscPrintf(c->comm, "friction: of %" PetscInt_FMT " Coulomb solves, the semismooth Newton method failed in %" PetscInt_FMT " (Tresca passes took over) and Lemke's method was needed in %" PetscInt_FMT "\n", fr->steps, fr->newton_failures, fr->lemke_steps));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode RollerContactFrictionDestroy(RollerContactFriction *friction)
 {
   RollerContactFriction fr = *friction;
 
   PetscFunctionBeginUser;
   if (!fr) PetscFunctionReturn(0);
-  if (fr->lemke_steps) PetscCall(PetscInfo(NULL, "Friction: Lemke's method took over in %" PetscInt_FMT " steps\n", fr->lemke_steps));
   PetscCall(RollerContactBoxQPDestroy(&fr->box));
   PetscCall(PetscFree5(fr->state, fr->lam_n, fr->mu_n, fr->x, fr->node_state));
   PetscCall(PetscFree3(fr->M, fr->q, fr->z));
@@ -234,6 +245,7 @@ static PetscErrorCode CoulombNewton(Roller ctx, RollerContact c, PetscInt m, Pet
     PetscCall(UpdateMu(fr, m, ctx->ts.dt, &change, &lmax, &dmu, PETSC_TRUE));
   }
   PetscCall(PetscInfo(NULL, "Friction at t = %g: the semismooth Newton method failed after %" PetscInt_FMT " iterations; fixed point of Tresca steps\n", (double)c->step.t, fr->its));
+  fr->newton_failures++;
   for (PetscInt a = 0; a < m; ++a) fr->mu_n[a] = FrictionCoefficient(fr, 0.0);
   PetscFunctionReturn(0);
 }
@@ -255,6 +267,7 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
   fr->its = 0;
   for (PetscInt a = 0; a < m; ++a) lmax = PetscMax(lmax, lcp->lam[a]);
   if (lmax <= 0.0) PetscFunctionReturn(0); /* nothing touches: no friction either */
+  fr->steps++;
   PetscCall(FrictionData(ctx, c, S, lcp->d));
   for (PetscInt a = 0; a < m2; ++a) dmax = PetscMax(dmax, PetscAbsReal(fr->box.d[a]));
   for (PetscInt a = 0; a < m; ++a) {
