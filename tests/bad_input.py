@@ -98,6 +98,7 @@ with open("whole.h5", "rb") as f, open("truncated.h5", "wb") as g:
     g.write(f.read()[:3000])
 for args, name, what in ((["-restart", "not_hdf5.h5"], "not_hdf5.h5", "not an HDF5 file"),
                          (["-restart", "truncated.h5"], "truncated.h5", "truncated"),
+                         (["-initial_condition", "mode", "-initial_mode_file", "not_hdf5.h5"], "not_hdf5.h5", "not an HDF5 file"),
                          (["-options_file", "bad.yaml"], "bad.yaml", "line 3")):
     code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet"] + args, check=False)
     text = out + err
