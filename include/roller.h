@@ -23,7 +23,7 @@ PETSC_EXTERN PetscErrorCode RollerSweep(MPI_Comm);
 PETSC_EXTERN PetscErrorCode RollerOptionsCheck(MPI_Comm, PetscBool);
 PETSC_EXTERN PetscErrorCode RollerOptionsCheckValues(MPI_Comm);
 /* Before PetscInitialize: 1 (after a line naming the file and the line) if a YAML options file does not parse */
-PETSC_EXTERN int RollerOptionsFilesParse(int, char **);
+PETSC_EXTERN int            RollerOptionsFilesParse(int, char **);
 PETSC_EXTERN PetscErrorCode RollerOptionNameGivenOnCommandLine(const char[], PetscBool *);
 
 /* Observers of the run (TSMonitorSet-style): RollerSolve calls every one, in the order they were set, at the

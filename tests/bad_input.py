@@ -98,11 +98,68 @@ with open("whole.h5", "rb") as f, open("truncated.h5", "wb") as g:
     g.write(f.read()[:3000])
 for args, name, what in ((["-restart", "not_hdf5.h5"], "not_hdf5.h5", "not an HDF5 file"),
                          (["-restart", "truncated.h5"], "truncated.h5", "truncated"),
+                         (["-initial_condition", "mode", "-initial_mode_file", "not_hdf5.h5"], "not_hdf5.h5", "not an HDF5 file"),
                          (["-options_file", "bad.yaml"], "bad.yaml", "line 3")):
     code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet"] + args, check=False)
     text = out + err
     line = next((ln for ln in text.splitlines() if name in ln), "")
     c.check(code != 0 and what in line and "HDF5-DIAG" not in text, f"{' '.join(args)}: exit {code}, one line: {line.strip()[:150]}")
+
+# mesh files checked at read time, one message each: clockwise, one inverted cell, radii against -r_inner,
+# a missing physical group, not an annulus
+def mesh_variant(path, flip="none", rename=None, move=False):
+    lines = open(os.path.join(SOURCE, "meshes", "annulus-h0.05-v41.msh")).read().splitlines()
+    out, i, flipped = [], 0, 0
+    while i < len(lines):
+        ln = lines[i]
+        if rename and ln.endswith(f'"{rename[0]}"'):
+            ln = ln.replace(rename[0], rename[1])
+        out.append(ln)
+        if ln == "$Nodes" and move:  # pull node 2 (on the inner circle, x = -0.25) in to x = -0.22
+            i += 1
+            while lines[i] != "$EndNodes":
+                out.append(lines[i].replace("-0.25 0 0", "-0.22 0 0") if lines[i].startswith("-0.25 0 0") else lines[i])
+                i += 1
+            continue
+        if ln == "$Elements":
+            out.append(lines[i + 1])
+            i += 2
+            while lines[i] != "$EndElements":
+                head = lines[i].split()
+                out.append(lines[i])
+                i += 1
+                for _ in range(int(head[3])):
+                    p = lines[i].split()
+                    if head[2] == "2" and (flip == "all" or (flip == "one" and not flipped)):
+                        p, flipped = [p[0], p[1], p[3], p[2]], flipped + 1
+                    elif head[2] == "1" and flip == "all":
+                        p = [p[0], p[2], p[1]]
+                    out.append(" ".join(p))
+                    i += 1
+            continue
+        i += 1
+    open(path, "w").write("\n".join(out) + "\n")
+
+
+mesh_variant("clockwise.msh", flip="all")
+mesh_variant("tangled.msh", flip="one")
+mesh_variant("no_outer.msh", rename=("outer", "rim"))
+mesh_variant("not_annulus.msh", move=True)
+good = os.path.join(SOURCE, "meshes", "annulus-h0.05-v41.msh")
+for args, name, what in ((["-dm_plex_filename", "clockwise.msh", "-obstacle"], "clockwise.msh", "clockwise"),
+                         (["-dm_plex_filename", "tangled.msh"], "tangled.msh", "inverted"),
+                         (["-dm_plex_filename", good, "-r_inner", "0.3"], "-r_inner", "disagrees"),
+                         (["-dm_plex_filename", "no_outer.msh"], "no_outer.msh", "outer"),
+                         (["-dm_plex_filename", "not_annulus.msh"], "not_annulus.msh", "circle")):
+    code, out, err = run(["-ts_max_steps", "2", "-quiet"] + args, check=False)
+    line = next((ln for ln in (out + err).splitlines() if name in ln), "")
+    c.check(code != 0 and what in line, f"{' '.join(args[:2])}: exit {code}, {line.strip()[:150]}")
+
+# warnings where physics says the result is meaningless (stderr, once; the run goes on)
+for args, what in ((["-ts_dt", "100", "-ts_max_time", "1000"], "slowest mode"),
+                   (["-obstacle", "-obstacle_depth", "0.002", "-mesh_h_contact", "0"], "contact half-width")):
+    code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet"] + args, check=False)
+    c.check(code == 0 and err.count(what) == 1, f"{' '.join(args)}: exit {code}, warned once: {next((ln for ln in err.splitlines() if what in ln), '')[:120]}")
 
 # an options file's unknown option is refused (naming it); a known one the run does not use is reported, not refused
 with open("typo.yaml", "w") as f:

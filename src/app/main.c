@@ -11,7 +11,7 @@ int main(int argc, char **argv)
   Roller    roller;
   PetscBool sweep;
 
-  if (RollerOptionsFilesParse(argc, argv)) return 1; /* a YAML error: the file and the line */
+  if (RollerOptionsFilesParse(argc, argv)) return 1;    /* a YAML error: the file and the line */
   PetscCall(SlepcInitialize(&argc, &argv, NULL, help)); /* PETSc and SLEPc (-modes) */
   PetscCall(PetscOptionsHasName(NULL, NULL, "-sweep", &sweep));
   if (sweep) PetscCall(RollerSweep(PETSC_COMM_WORLD)); /* many scenes, each a Roller on a sub-communicator */

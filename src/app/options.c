@@ -136,5 +136,11 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   }
   if (ctx->ck.restart[0]) PetscCall(RollerCheckpointDiscretization(ctx, ctx->ck.restart));
   PetscCall(RollerChooseMeshSize(ctx));
+  if (ctx->obstacle.on && ctx->obstacle.depth > 0 && !ctx->mesh.file[0] && !ctx->eig.on) { /* said once */
+    const PetscReal a = PetscSqrtReal(ctx->mesh.r_outer * ctx->obstacle.depth), h_c = ctx->mesh.h_contact > 0 ? ctx->mesh.h_contact : ctx->mesh.h;
+
+    if (h_c > a)
+      PetscCall(PetscFPrintf(ctx->comm, PETSC_STDERR, "Warning: the edge length on Gamma_C, %g, is longer than the contact half-width sqrt(r_outer depth) = %g: the contact patch falls between nodes (the default: no -mesh_h, or -mesh_h_contact %g)\n", (double)h_c, (double)a, (double)(a / 5)));
+  }
   PetscFunctionReturn(0);
 }

@@ -5,6 +5,7 @@
    use, but that is a Roller option or a solver's, is reported on stderr, not refused: a contact scene runs with
    -obstacle false -modes unchanged. -options_left 0 turns the check off (PETSc's own option of that name). */
 #include "integrate/integrate.h"
+#include <ctype.h>
 #include <roller_option_names.h> /* RollerOptionNames[]: every "-name" literal of src/, made by CMake */
 
 /* The names that solver objects, created after the set-up, query, and PETSc's own run-time options. */

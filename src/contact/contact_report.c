@@ -165,6 +165,7 @@ PetscErrorCode RollerContactInfo(Roller ctx, RollerContact c, Vec xi, Vec Mxi, V
   info->kkt_residual  = kkt;
   PetscCall(RollerContactFlips(ctx, c, res->lambda, info));
   if (c->friction) PetscCall(RollerContactFrictionInfo(ctx, c, res->lambda, info));
-  if (c->opt.monitor) PetscCall(ContactMonitor(ctx, c, info));
+  /* after -restart, the checkpoint's state has no multipliers: its row is the run's before the stop, not a row of 0 */
+  if (c->opt.monitor && (c->acc.solved || !ctx->ck.restart[0])) PetscCall(ContactMonitor(ctx, c, info));
   PetscFunctionReturn(0);
 }

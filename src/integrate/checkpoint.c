@@ -87,21 +87,7 @@ static PetscErrorCode CheckpointOpen(Roller ctx, const char *path, PetscViewer *
   PetscFunctionBeginUser;
   PetscCall(PetscTestFile(path, 'r', &exists));
   PetscCheck(exists, ctx->comm, PETSC_ERR_FILE_OPEN, "-restart %s: no such readable file", path);
-  { /* one line, not HDF5's error stack, for a file that is not HDF5 or is truncated */
-    H5E_auto2_t func;
-    void       *data;
-    htri_t      is_h5;
-    hid_t       f = -1;
-
-    (void)H5Eget_auto2(H5E_DEFAULT, &func, &data);
-    (void)H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-    is_h5 = H5Fis_hdf5(path);
-    if (is_h5 > 0) f = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
-    if (f >= 0) H5Fclose(f);
-    (void)H5Eset_auto2(H5E_DEFAULT, func, data);
-    PetscCheck(is_h5 > 0, ctx->comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: not an HDF5 file (not a Roller checkpoint)", path);
-    PetscCheck(f >= 0, ctx->comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: an HDF5 file that does not open (truncated or damaged)", path);
-  }
+  PetscCall(RollerHDF5Probe(ctx->comm, "-restart", path)); /* one line for a file that is not HDF5 or truncated */
   PetscCall(PetscViewerHDF5Open(ctx->comm, path, FILE_MODE_READ, viewer));
   PetscCall(PetscViewerHDF5HasAttribute(*viewer, "/", "step", &exists));
   PetscCheck(exists, ctx->comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: not a Roller checkpoint (no step attribute)", path);

@@ -62,13 +62,14 @@ PetscErrorCode RollerStepCount(Roller ctx, PetscInt *nsteps)
   PetscFunctionReturn(0);
 }
 
-/* -ts_monitor: the diagnostics of every state, the initial one too. */
+/* -ts_monitor: the diagnostics of every state, the initial one too; after -restart from the step after the
+   checkpoint's, like the CSV (the contact force of the checkpoint's step is not in it: a row there would say 0). */
 static PetscErrorCode MonitorLine(Roller ctx, RollerMonitorEvent event, void *mctx)
 {
   const RollerStepInfo *info = &ctx->info;
 
   PetscFunctionBeginUser;
-  if (event == ROLLER_MONITOR_FINAL) PetscFunctionReturn(0);
+  if (event == ROLLER_MONITOR_FINAL || (event == ROLLER_MONITOR_INITIAL && ctx->ck.restart[0])) PetscFunctionReturn(0);
   PetscCall(RollerStepInfoGet(ctx));
   PetscCall(PetscPrintf(ctx->comm, "%5" PetscInt_FMT " t %-10.6g R %+.6e alpha %+.6e energy %.10e", ctx->state.step, (double)ctx->state.time, (double)info->R, (double)info->alpha, (double)info->energy));
   if (ctx->contact)

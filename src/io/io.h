@@ -17,6 +17,7 @@ PETSC_INTERN PetscErrorCode RollerJoinPath(char[], size_t, const char[], const c
 PETSC_INTERN PetscErrorCode RollerRenameFile(MPI_Comm, const char[], const char[]);
 PETSC_INTERN PetscErrorCode RollerRemoveStale(MPI_Comm, const char[]);
 PETSC_INTERN PetscErrorCode RollerCheckWritable(MPI_Comm, const char[], const char[]);
+PETSC_INTERN PetscErrorCode RollerHDF5Probe(MPI_Comm, const char[], const char[]);                             /* option, path: HDF5 that opens, or one line */
 PETSC_INTERN PetscErrorCode RollerPartFileOpen(MPI_Comm, const char[], const char[], char[], size_t, FILE **); /* path, option, part */
 PETSC_INTERN PetscErrorCode RollerPartFileClose(MPI_Comm, FILE **, const char[], const char[]);                /* part, path */
 PETSC_INTERN PetscErrorCode RollerPlainVecView(Vec, const char[], PetscViewer, PetscBool);                     /* a flat dataset by name: view, or load (PETSC_TRUE) */

@@ -5,6 +5,7 @@
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
+#include <hdf5.h>
 
 PetscErrorCode RollerJoinPath(char dst[], size_t len, const char a[], const char b[], const char option[])
 {
@@ -111,5 +112,26 @@ PetscErrorCode RollerPlainVecView(Vec v, const char *name, PetscViewer viewer, P
     PetscCall(VecView(plain, viewer));
   }
   PetscCall(VecDestroy(&plain));
+  PetscFunctionReturn(0);
+}
+
+/* A file to read with HDF5: one line, not HDF5's error stack, if it is not HDF5 or does not open (truncated or
+   damaged); HDF5's error printing is off during the probe. */
+PetscErrorCode RollerHDF5Probe(MPI_Comm comm, const char option[], const char path[])
+{
+  H5E_auto2_t func;
+  void       *data;
+  htri_t      is_h5;
+  hid_t       f = -1;
+
+  PetscFunctionBeginUser;
+  (void)H5Eget_auto2(H5E_DEFAULT, &func, &data);
+  (void)H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+  is_h5 = H5Fis_hdf5(path);
+  if (is_h5 > 0) f = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (f >= 0) H5Fclose(f);
+  (void)H5Eset_auto2(H5E_DEFAULT, func, data);
+  PetscCheck(is_h5 > 0, comm, PETSC_ERR_FILE_UNEXPECTED, "%s %s: not an HDF5 file (not one Roller wrote)", option, path);
+  PetscCheck(f >= 0, comm, PETSC_ERR_FILE_UNEXPECTED, "%s %s: an HDF5 file that does not open (truncated or damaged)", option, path);
   PetscFunctionReturn(0);
 }

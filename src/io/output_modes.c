@@ -89,6 +89,7 @@ PetscErrorCode RollerModeFileRead(Roller ctx, const char path[], PetscInt j, Rol
   PetscFunctionBeginUser;
   PetscCall(PetscTestFile(path, 'r', &has));
   PetscCheck(has, ctx->comm, PETSC_ERR_FILE_OPEN, "-initial_mode_file %s: no such readable file (write one with -modes -modes_output)", path);
+  PetscCall(RollerHDF5Probe(ctx->comm, "-initial_mode_file", path));
   PetscCall(PetscViewerHDF5Open(ctx->comm, path, FILE_MODE_READ, &h5));
   PetscCall(RollerCheckParameters(ctx, h5, "-initial_mode_file", path));
   PetscCall(PetscViewerHDF5HasAttribute(h5, "/parameters", "modes_frame", &has));

@@ -245,6 +245,7 @@ PetscErrorCode RollerMeshCreate(Roller ctx)
   if (rank == 0 && dir[0]) PetscCall(PetscRMTree(dir));
   PetscCall(PetscObjectSetName((PetscObject)ctx->mesh.dm, "annulus"));
   PetscCall(RollerMeshCheckCells(ctx, what));
+  PetscCall(RollerMeshCheckOrientation(ctx, what));
   PetscCall(RollerMeshCheckGroups(ctx, what, &groups));
   PetscCall(RollerMeshLabelGroup(ctx, what, "inner", groups.tags[ROLLER_GROUP_INNER]));
   PetscCall(RollerMeshLabelGroup(ctx, what, "outer", groups.tags[ROLLER_GROUP_OUTER]));

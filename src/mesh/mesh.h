@@ -12,6 +12,7 @@
 
 PETSC_INTERN PetscErrorCode RollerMeshSetFromOptions(Roller);
 PETSC_INTERN PetscErrorCode RollerMeshCreate(Roller);
+PETSC_INTERN PetscErrorCode RollerMeshCheckOrientation(Roller, const char *);      /* counter-clockwise, no inverted or degenerate cell */
 PETSC_INTERN PetscErrorCode RollerMeshGenerate(Roller, PetscBool, char[], char[]); /* verbose; temporary dir, msh file */
 PETSC_INTERN PetscErrorCode RollerMeshDistribute(Roller);
 PETSC_INTERN PetscErrorCode RollerMeshMeasure(Roller);

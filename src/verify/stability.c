@@ -65,8 +65,17 @@ PetscErrorCode RollerCheckRotation(Roller ctx)
   PetscCall(PetscOptionsBool("-stability_view", "Print the lowest natural frequency omega_1 and the limit", NULL, view, &view, NULL));
   PetscOptionsEnd();
   RollerCheckOption(ctx->comm, "-stability_margin", margin, margin > 0 && margin <= 1, "in (0, 1]");
+  if (!ctx->disc.static_solve && ctx->ts.dt > 0) { /* a step that resolves no mode of the scene: said once */
+    PetscReal w_b, w_t;
+
+    PetscCall(RollerModeFrequencies(ctx, &w_b, &w_t)); /* cheap: omega_1 (a solve with K) only past their periods */
+    if (ctx->ts.dt > 2 * PETSC_PI / PetscMax(w_b, w_t)) PetscCall(LowestFrequency(ctx, &omega1));
+    if (omega1 > 0 && ctx->ts.dt > 2 * PETSC_PI / omega1)
+      PetscCall(PetscFPrintf(ctx->comm, PETSC_STDERR, "Warning: -ts_dt %g is longer than the period 2 pi/omega_1 = %g of the roller's slowest mode: the step resolves no mode of the scene, the transient is meaningless (the accurate default: no -ts_dt)\n",
+                             (double)ctx->ts.dt, (double)(2 * PETSC_PI / omega1)));
+  }
   if (!check || (max_rate == 0 && !view)) PetscFunctionReturn(0);
-  PetscCall(LowestFrequency(ctx, &omega1));
+  if (omega1 == 0) PetscCall(LowestFrequency(ctx, &omega1));
   if (view) PetscCall(PetscPrintf(ctx->comm, "stability: omega_1 = %.10g, max |theta'| = %.10g, allowed < %.10g\n", (double)omega1, (double)max_rate, (double)(margin * omega1)));
   PetscCheck(max_rate < margin * omega1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-omega %g (max |theta'| = |omega| + |theta_a theta_b| = %g) is beyond the centrifugal-softening limit: the roller's lowest natural frequency is omega_1 = %g, and the rotating-frame model loses stability at |theta'| = omega_1; allowed: max |theta'| < %g (-stability_margin %g)",
              (double)ctx->rotation.omega, (double)max_rate, (double)omega1, (double)(margin * omega1), (double)margin);
