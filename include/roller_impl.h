@@ -59,14 +59,15 @@ enum { ROLLER_STAGE_SETUP, ROLLER_STAGE_STEP, ROLLER_STAGE_CONTACT, ROLLER_STAGE
    the shaft and the sheet and the cumulative friction dissipation (E^k - E^0 = shaft_work + sheet_work -
    friction_work - the other dissipations), the step's friction dissipation and the contact's parts of the step's
    shaft and sheet works (the rotation and the motion of the sheet), the largest residual of the Coulomb law over
-   the contact nodes and the Coulomb fixed point's iterations. Zero without friction, except the torque and
-   the works. */
+   the contact nodes, the Coulomb fixed point's iterations and its fallback (0 none, 1 the semismooth Newton
+   method failed and Tresca passes took over, 2 Lemke's method took over). Zero without friction, except the
+   torque and the works. */
 typedef struct {
   PetscReal force, torque;
   PetscInt  stick, slip;
   PetscReal shaft_work, sheet_work, work;
   PetscReal dissipation, shaft_step, sheet_step, residual;
-  PetscInt  iterations;
+  PetscInt  iterations, fallback;
 } RollerStepFriction;
 
 /* What the diagnostics of one step give (docs/model.md section 6, CSV columns and extras). */

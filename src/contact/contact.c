@@ -221,9 +221,8 @@ PetscErrorCode RollerContactDestroy(RollerContact *contact)
   PetscFunctionBeginUser;
   if (!c) PetscFunctionReturn(0);
   PetscCall(RollerContactCheckSummary(c));
-  PetscCall(RollerContactFrictionSummary(c));
   PetscCall(ContactSolversDestroy(c));
-  PetscCall(RollerContactFrictionDestroy(&c->friction));
+  PetscCall(RollerContactFrictionDestroy(c->comm, &c->friction));
   PetscCall(PetscFree(c->acc.result.lambda_t));
   PetscCall(PetscViewerDestroy(&c->opt.monitor));
   PetscCall(RollerContactNodesDestroy(c));

@@ -8,20 +8,20 @@
    |lambda_T| <= g. Coulomb is solved first directly by the semismooth Newton method (contact_coulomb.c); if that
    fails, as the fixed point g = mu(v) lambda_N of Tresca steps, v = |Delta s|/(2 dt) the slip speed, from the
    frictionless multipliers; if that has not converged in -contact_friction_max_it steps, Coulomb as one LCP by
-   Lemke's method (contact_lemke.c) takes over, and if that ends on a ray the step fails with an error. */
+   Lemke's method (contact_lemke.c) takes over, and if that ends on a ray the step fails with an error. Each
+   fallback is counted: the CSV's coulomb_fallback, one line at the end of the run. */
 #include "contact_impl.h"
 
 struct _n_RollerContactFriction {
   PetscReal        mu, mu_s, v_c;
-  RollerContactLCP box;        /* the Tresca dual, sized 2 nc */
-  PetscInt        *state;      /* 2 nc: its active bounds, warm start of the next Tresca step */
-  PetscReal       *lam_n;      /* nc: lambda_N of the last iterate */
-  PetscReal       *mu_n;       /* nc: mu(v) of the candidates at the last iterate */
-  PetscReal       *x;          /* 2 nc: the box QP's solution */
-  PetscInt        *node_state; /* nc: 0 off the sheet, 1 stick, 2 slip, of the accepted step */
-  PetscReal       *M, *q, *z;  /* Lemke's LCP of 4 m unknowns (allocated when first needed, for lemke_cap) */
-  PetscInt         lemke_cap, its, lemke_steps;
-  PetscInt         steps, newton_failures; /* the run's Coulomb solves and those whose Newton method failed (Tresca passes took over) */
+  RollerContactLCP box;                                                           /* the Tresca dual, sized 2 nc */
+  PetscInt        *state;                                                         /* 2 nc: its active bounds, warm start of the next Tresca step */
+  PetscReal       *lam_n;                                                         /* nc: lambda_N of the last iterate */
+  PetscReal       *mu_n;                                                          /* nc: mu(v) of the candidates at the last iterate */
+  PetscReal       *x;                                                             /* 2 nc: the box QP's solution */
+  PetscInt        *node_state;                                                    /* nc: 0 off the sheet, 1 stick, 2 slip, of the accepted step */
+  PetscReal       *M, *q, *z;                                                     /* Lemke's LCP of 4 m unknowns (allocated when first needed, for lemke_cap) */
+  PetscInt         lemke_cap, its, lemke_steps, fallback, steps, newton_failures; /* the last solve's fallback; the run's solves, Newton failures */
 };
 
 /* mu(|v|) = mu + (mu_s - mu) exp(-|v| / v_c), constant mu without -friction_decay (v_c = 0); *dmu its derivative
@@ -62,23 +62,15 @@ PetscErrorCode RollerContactFrictionCreate(Roller ctx, RollerContact c)
   PetscFunctionReturn(0);
 }
 
-/* At the end of a run: how often the Coulomb solve fell back (never silent, docs/friction.md section 3). */
-PetscErrorCode RollerContactFrictionSummary(RollerContact c)
-{
-  RollerContactFriction fr = c->friction;
-
-  PetscFunctionBeginUser;
-  if (!fr || !(fr->newton_failures || fr->lemke_steps)) PetscFunctionReturn(0);
-  PetscCall(PetscPrintf(c->comm, "friction: of %" PetscInt_FMT " Coulomb solves, the semismooth Newton method failed in %" PetscInt_FMT " (Tresca passes took over) and Lemke's method was needed in %" PetscInt_FMT "\n", fr->steps, fr->newton_failures, fr->lemke_steps));
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode RollerContactFrictionDestroy(RollerContactFriction *friction)
+/* At the end of a run, with one line on comm if the Coulomb solve fell back (never silent). */
+PetscErrorCode RollerContactFrictionDestroy(MPI_Comm comm, RollerContactFriction *friction)
 {
   RollerContactFriction fr = *friction;
 
   PetscFunctionBeginUser;
   if (!fr) PetscFunctionReturn(0);
+  if (fr->newton_failures || fr->lemke_steps)
+    PetscCall(PetscPrintf(comm, "friction: of %" PetscInt_FMT " Coulomb solves, the semismooth Newton method failed in %" PetscInt_FMT " (Tresca passes took over) and Lemke's method was needed in %" PetscInt_FMT "\n", fr->steps, fr->newton_failures, fr->lemke_steps));
   PetscCall(RollerContactBoxQPDestroy(&fr->box));
   PetscCall(PetscFree5(fr->state, fr->lam_n, fr->mu_n, fr->x, fr->node_state));
   PetscCall(PetscFree3(fr->M, fr->q, fr->z));
@@ -246,6 +238,7 @@ static PetscErrorCode CoulombNewton(Roller ctx, RollerContact c, PetscInt m, Pet
   }
   PetscCall(PetscInfo(NULL, "Friction at t = %g: the semismooth Newton method failed after %" PetscInt_FMT " iterations; fixed point of Tresca steps\n", (double)c->step.t, fr->its));
   fr->newton_failures++;
+  fr->fallback = 1;
   for (PetscInt a = 0; a < m; ++a) fr->mu_n[a] = FrictionCoefficient(fr, 0.0);
   PetscFunctionReturn(0);
 }
@@ -264,7 +257,8 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
 
   PetscFunctionBeginUser;
   PetscCall(PetscArrayzero(res->lambda_t, c->nodes.nc));
-  fr->its = 0;
+  fr->its      = 0;
+  fr->fallback = 0;
   for (PetscInt a = 0; a < m; ++a) lmax = PetscMax(lmax, lcp->lam[a]);
   if (lmax <= 0.0) PetscFunctionReturn(0); /* nothing touches: no friction either */
   fr->steps++;
@@ -306,7 +300,8 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
       PetscCall(PetscInfo(NULL, "Friction at t = %g: no fixed point in %" PetscInt_FMT " Tresca steps (change %g of %g), Lemke's method\n", (double)t, it, (double)change, (double)lmax));
       lemke = PETSC_TRUE;
       fr->lemke_steps++;
-      it = 0;
+      fr->fallback = 2;
+      it           = 0;
     }
   }
   if (!lemke) { /* the last Tresca step bounded lambda_T by mu lambda_N of the iterate before (equal to rtol): a node
@@ -348,6 +343,7 @@ PetscErrorCode RollerContactFrictionInfo(Roller ctx, RollerContact c, const Pets
   f->force = f->dissipation = f->residual = 0.0;
   f->stick = f->slip = 0;
   f->iterations      = fr->its;
+  f->fallback        = fr->fallback;
   SlipFrame(ctx, t, t2, &dX);
   { /* the drive's own motion of the contact nodes over the step: the scale of a sticking node's slip */
     PetscReal th0, th2;

@@ -240,8 +240,7 @@ PETSC_INTERN PetscErrorCode RollerContactFrictionCreate(Roller, RollerContact);
 PETSC_INTERN PetscErrorCode RollerContactFrictionSolve(Roller, RollerContact, const PetscReal[], RollerContactLCP *, RollerContactResult *);
 PETSC_INTERN PetscErrorCode RollerContactFrictionInfo(Roller, RollerContact, const PetscReal[], RollerStepInfo *);
 PETSC_INTERN PetscErrorCode RollerContactFrictionState(RollerContact, PetscReal[]);
-PETSC_INTERN PetscErrorCode RollerContactFrictionDestroy(RollerContactFriction *);
-PETSC_INTERN PetscErrorCode RollerContactFrictionSummary(RollerContact); /* one line at the end of a run if the Coulomb solve fell back */
+PETSC_INTERN PetscErrorCode RollerContactFrictionDestroy(MPI_Comm, RollerContactFriction *); /* prints the run's fallbacks */
 
 /* The solvers' create functions, for RollerContactSolversRegisterAll */
 PETSC_INTERN PetscErrorCode RollerContactSolverCreate_Condensed(RollerContactSolver);
