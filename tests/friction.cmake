@@ -7,11 +7,11 @@ roller_test(friction_mpi friction_mpi.py LABELS mpi PROCESSORS 2 TIMEOUT 300)
 # zone c/a = sqrt(1 - Q/(mu P)) within a mesh spacing, Cattaneo's traction, full sliding at Q = mu P, the
 # reversal's b/a = sqrt(1 - (Q* - Q)/(2 mu P)); quasi-static (twice slower, the same Q). long: finer meshes.
 roller_test(friction_cattaneo friction_cattaneo.py LABELS quick TIMEOUT 400)
-roller_test(friction_cattaneo_long friction_cattaneo.py LABELS long ARGS long TIMEOUT 2400)
+roller_test(friction_cattaneo_long friction_cattaneo.py LABELS long ARGS long TIMEOUT 3600)
 # Carter's steady rolling contact: at low speed the stick zone sits at the leading edge and Q/(mu P) follows Carter's
 # creep curve (section 5.2); quick: h_c = 0.003 (about 2 minutes); long: h_c = 0.002 and a dt check.
 roller_test(friction_carter friction_carter.py LABELS quick TIMEOUT 600)
-roller_test(friction_carter_long friction_carter.py LABELS long ARGS long TIMEOUT 1800)
+roller_test(friction_carter_long friction_carter.py LABELS long ARGS long TIMEOUT 3600)
 # stick-slip of the roller turned slowly on the resting sheet with velocity-weakening friction, and steady
 # sliding with constant mu (jobs/stickslip.yaml, docs/friction.md section 5.3; two runs of about 4 minutes)
 roller_test(friction_stickslip friction_stickslip.py LABELS long TIMEOUT 1200)
