@@ -114,8 +114,8 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
 
       if (values[i] == 0 || (i == 2 && values[2] == values[0])) continue; /* mu_s defaults to mu */
       PetscCall(RollerOptionNameGivenOnCommandLine(names[i], &cli));
-      PetscCheck(ctx->eig.on && !cli, ctx->comm, PETSC_ERR_ARG_INCOMP, "%s %g needs -obstacle (the sheet)%s", names[i], (double)values[i], ctx->eig.on ? ": -modes without -obstacle are the free roller's" : "");
-      PetscCall(PetscFPrintf(ctx->comm, PETSC_STDERR, "Warning: %s %g, set by an options file, is not used by -modes without -obstacle\n", names[i], (double)values[i]));
+      PetscCheck(ctx->eig.on && !cli, ctx->comm, PETSC_ERR_ARG_INCOMP, "%s %.6g needs -obstacle (the sheet)%s", names[i], (double)values[i], ctx->eig.on ? ": -modes without -obstacle are the free roller's" : "");
+      PetscCall(PetscFPrintf(ctx->comm, PETSC_STDERR, "Warning: %s %.6g, set by an options file, is not used by -modes without -obstacle\n", names[i], (double)values[i]));
     }
   }
   PetscCheck(ctx->obstacle.depth >= 0 && ctx->obstacle.depth < ctx->mesh.r_outer - ctx->mesh.r_inner, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-obstacle_depth %g must lie in [0, r_outer - r_inner = %g)", (double)ctx->obstacle.depth,
@@ -140,7 +140,7 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
     const PetscReal a = PetscSqrtReal(ctx->mesh.r_outer * ctx->obstacle.depth), h_c = ctx->mesh.h_contact > 0 ? ctx->mesh.h_contact : ctx->mesh.h;
 
     if (h_c > a)
-      PetscCall(PetscFPrintf(ctx->comm, PETSC_STDERR, "Warning: the edge length on Gamma_C, %g, is longer than the contact half-width sqrt(r_outer depth) = %g: the contact patch falls between nodes (the default: no -mesh_h, or -mesh_h_contact %g)\n", (double)h_c, (double)a, (double)(a / 5)));
+      PetscCall(PetscFPrintf(ctx->comm, PETSC_STDERR, "Warning: the edge length on Gamma_C, %.6g, is longer than the contact half-width sqrt(r_outer depth) = %.6g: the contact patch falls between nodes (the default: no -mesh_h, or -mesh_h_contact %.6g)\n", (double)h_c, (double)a, (double)(a / 5)));
   }
   PetscFunctionReturn(0);
 }

@@ -41,7 +41,7 @@ PetscErrorCode RollerTimeStepSetFromOptions(Roller ctx)
   RollerCheckOption(ctx->comm, "-ts_dt", ctx->ts.dt, ctx->ts.dt >= 0, "> 0 (or 0: chosen from -ts_phase_error)");
   ctx->ts.dt_set = (PetscBool)(ctx->ts.dt > 0);
   RollerCheckOption(ctx->comm, "-ts_max_time", ctx->ts.max_time, ctx->ts.max_time >= 0, ">= 0");
-  PetscCheck(ctx->ts.dt <= ctx->ts.max_time || ctx->ts.max_time == 0, ctx->comm, PETSC_ERR_USER_INPUT, "-ts_dt %g: longer than -ts_max_time %g, the run would take no step; allowed: (0, %g]", (double)ctx->ts.dt, (double)ctx->ts.max_time,
+  PetscCheck(ctx->ts.dt <= ctx->ts.max_time || ctx->ts.max_time == 0, ctx->comm, PETSC_ERR_USER_INPUT, "-ts_dt %.6g: longer than -ts_max_time %.6g, the run would take no step; allowed: (0, %.6g]", (double)ctx->ts.dt, (double)ctx->ts.max_time,
              (double)ctx->ts.max_time);
   PetscCheck(ctx->ts.max_steps >= -1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_max_steps %" PetscInt_FMT " must be >= 0 (or -1 for no cap)", ctx->ts.max_steps);
   PetscFunctionReturn(0);

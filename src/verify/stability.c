@@ -71,7 +71,7 @@ PetscErrorCode RollerCheckRotation(Roller ctx)
     PetscCall(RollerModeFrequencies(ctx, &w_b, &w_t)); /* cheap: omega_1 (a solve with K) only past their periods */
     if (ctx->ts.dt > 2 * PETSC_PI / PetscMax(w_b, w_t)) PetscCall(LowestFrequency(ctx, &omega1));
     if (omega1 > 0 && ctx->ts.dt > 2 * PETSC_PI / omega1)
-      PetscCall(PetscFPrintf(ctx->comm, PETSC_STDERR, "Warning: -ts_dt %g is longer than the period 2 pi/omega_1 = %g of the roller's slowest mode: the step resolves no mode of the scene, the transient is meaningless (the accurate default: no -ts_dt)\n",
+      PetscCall(PetscFPrintf(ctx->comm, PETSC_STDERR, "Warning: -ts_dt %.6g is longer than the period 2 pi/omega_1 = %.6g of the roller's slowest mode: the step resolves no mode of the scene, the transient is meaningless (the accurate default: no -ts_dt)\n",
                              (double)ctx->ts.dt, (double)(2 * PETSC_PI / omega1)));
   }
   if (!check || (max_rate == 0 && !view)) PetscFunctionReturn(0);
