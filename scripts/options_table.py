@@ -60,6 +60,9 @@ Nothing passes silently (src/app/options_check.c):
 - **Warnings** (stderr, once, the run goes on) where physics says the result is meaningless: `-ts_dt` longer than
   the period of the roller's slowest mode, an edge on Gamma_C longer than the contact half-width sqrt(r_outer depth).
   A rotation past the first critical speed is refused (`-stability_check`, the rotation stability block below).
+- **Tested**: `tests/bad_input.py` (quick: each case of issue 26), `tests/options_fuzz.py` (label hard: every
+  option from `-help` with nan, inf, -1, 0, 1e300 and a word, every enum with an unknown name),
+  `tests/hard_crash.py` (label hard: 50 random SIGKILLs while the CSV, the fields and the checkpoint are written).
 
 Defaults that depend on other options are stated with their rule: `-ts_dt 0` and `-mesh_h 0` mean "chosen from
 `-ts_phase_error`" (`-ts_view` prints the values chosen), `-ts_scheme` is the cheapest scheme meeting the target,
