@@ -15,8 +15,8 @@
 /* Calibration of the spatial phase error C_k w_t T (h/L)^q_k (docs/validation.md, "accurate defaults"):
    measured against the exact-in-space DMF reference for E = 0.05, 0.1, 0.2 and T = 20, 60 with the
    curved P2 boundary (largest C) and P1 (which locks at nu = 0.49: it needs far finer meshes). */
-static const PetscReal calibration_C[3] = {0, 1.2, 0.025};
-static const PetscReal calibration_q[3] = {0, 1.7, 2.0};
+static const PetscReal calibration_C[4] = {0, 1.2, 0.025, 0.025};
+static const PetscReal calibration_q[4] = {0, 1.7, 2.0, 2.0};
 
 /* Contact scenes: edges of the graded layer across the contact half-width sqrt(r_C d) (RollerChooseMeshSize) */
 #define ROLLER_CONTACT_ELEMENTS 14
