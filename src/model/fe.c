@@ -10,7 +10,7 @@ PetscErrorCode RollerDiscretizationSetFromOptions(Roller ctx)
 {
   PetscFunctionBeginUser;
   PetscOptionsBegin(ctx->comm, NULL, "Roller: discretization", NULL);
-  PetscCall(PetscOptionsInt("-degree", "Lagrange degree of the displacement (1 = the paper, 2, 3: scenes without -obstacle)", NULL, ctx->disc.degree, &ctx->disc.degree, &ctx->disc.degree_set));
+  PetscCall(PetscOptionsInt("-degree", "Lagrange degree of the displacement: 1 (the paper), 2, 3 (default: 3 without -obstacle when -mesh_h comes from -ts_phase_error, else 2)", NULL, ctx->disc.degree, &ctx->disc.degree, &ctx->disc.degree_set));
   ctx->mesh.curved = (PetscBool)(ctx->disc.degree >= 2);
   PetscCall(PetscOptionsBool("-mesh_curved", "Curved (P2 geometric map) boundary: mid-edge nodes of Gamma_D, Gamma_C on the circles (default: on with -degree 2 or 3)", NULL, ctx->mesh.curved, &ctx->mesh.curved, NULL));
   PetscCall(PetscOptionsEnum("-coriolis_velocity", "Coriolis velocity: backward (the paper, explicit, 1st order), extrapolated (explicit, 2nd order), centered (implicit, 2nd order, stable)", "RollerCoriolisVelocity", RollerCoriolisVelocities,
