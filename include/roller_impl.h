@@ -127,7 +127,8 @@ typedef struct {
 
 /* The discretization choices (model/fe.c) */
 typedef struct {
-  PetscInt               degree;      /* Lagrange degree, 1 (the paper) or 2 */
+  PetscInt               degree;      /* Lagrange degree, 1 (the paper), 2 or 3 */
+  PetscBool              degree_set;  /* -degree given (else P3 without -obstacle, P2 with: RollerChooseMeshSize) */
   PetscBool              clamp_outer; /* xi = 0 on Gamma_C too (Theorem 1 setting) */
   RollerCoriolisVelocity coriolis;
   PetscReal              damping;      /* eta of the DMF functional */

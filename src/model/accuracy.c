@@ -14,9 +14,11 @@
 
 /* Calibration of the spatial phase error C_k w_t T (h/L)^q_k (docs/validation.md, "accurate defaults"):
    measured against the exact-in-space DMF reference for E = 0.05, 0.1, 0.2 and T = 20, 60 with the
-   curved P2 boundary (largest C) and P1 (which locks at nu = 0.49: it needs far finer meshes). */
-static const PetscReal calibration_C[3] = {0, 1.2, 0.025};
-static const PetscReal calibration_q[3] = {0, 1.7, 2.0};
+   curved P2 boundary (largest C) and P1 (which locks at nu = 0.49: it needs far finer meshes). P3 (curved P2
+   geometric map): errors of R, alpha 1.2 %, 2.0 % at h = 0.14, 0.53 %, 0.68 % at h = 0.1 (figure-4 scene, T = 20,
+   the composed scheme): q = 2.5; C = 0.0062 gives h = 0.09 there and keeps -young 0.05 (h 0.104) below 1 %. */
+static const PetscReal calibration_C[4] = {0, 1.2, 0.025, 0.0062};
+static const PetscReal calibration_q[4] = {0, 1.7, 2.0, 2.5};
 
 /* Contact scenes: edges of the graded layer across the contact half-width sqrt(r_C d) (RollerChooseMeshSize) */
 #define ROLLER_CONTACT_ELEMENTS 14
@@ -160,10 +162,18 @@ PetscErrorCode RollerChooseMeshSize(Roller ctx)
 
   PetscFunctionBeginUser;
   if (ctx->mesh.h_set || ctx->mesh.file[0]) PetscFunctionReturn(0);
+  if (!ctx->disc.degree_set && !ctx->obstacle.on && !ctx->eig.on && !ctx->disc.static_solve && !ctx->ck.restart[0]) {
+    /* P3 where it buys the most accuracy per CPU (no contact: the contact nodes and mass layer are P2) */
+    ctx->disc.degree = 3;
+    ctx->mesh.curved = PETSC_TRUE;
+  }
   PetscCall(RollerModeFrequencies(ctx, &w_b, &w_t));
   T           = RollerEndTime(ctx, PetscMax(w_b, ctx->rotation.b));
   ctx->mesh.h = L * PetscPowReal(0.7 * ctx->ts.phase_error / (calibration_C[ctx->disc.degree] * w_t * T), 1.0 / calibration_q[ctx->disc.degree]);
   ctx->mesh.h = PetscMin(ctx->mesh.h, 0.5 * L); /* at least two elements across the wall */
+  if (ctx->ts.view && !ctx->disc.degree_set)
+    PetscCall(PetscPrintf(ctx->comm, "roller: P%" PetscInt_FMT " (the default %s), -mesh_h %g from -ts_phase_error %g: spatial phase error %g w_t T (h/L)^%g = 0.7 P\n", ctx->disc.degree, ctx->disc.degree == 3 ? "without -obstacle: P3 at h 0.09 reaches P2's error at h 0.035 with 1/3 of the unknowns, docs/model.md 6.2" : "with -obstacle: the contact nodes are P2",
+                          (double)ctx->mesh.h, (double)ctx->ts.phase_error, (double)calibration_C[ctx->disc.degree], (double)calibration_q[ctx->disc.degree]));
   PetscCall(PetscInfo(NULL, "-mesh_h %g from -ts_phase_error %g: torsional mode w_t = %g (period %g), T = %g, P%" PetscInt_FMT "\n", (double)ctx->mesh.h, (double)ctx->ts.phase_error, (double)w_t, (double)(2 * PETSC_PI / w_t), (double)T, ctx->disc.degree));
   if (ctx->obstacle.on && ctx->obstacle.depth > 0) {
     /* Contact: the patch's half-width a ~ sqrt(r_C d) (Hertz's a^2 = 4 P R/(pi E*) is close to r_C d for these

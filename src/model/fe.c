@@ -10,9 +10,9 @@ PetscErrorCode RollerDiscretizationSetFromOptions(Roller ctx)
 {
   PetscFunctionBeginUser;
   PetscOptionsBegin(ctx->comm, NULL, "Roller: discretization", NULL);
-  PetscCall(PetscOptionsInt("-degree", "Lagrange degree of the displacement (1 = the paper, 2)", NULL, ctx->disc.degree, &ctx->disc.degree, NULL));
-  ctx->mesh.curved = (PetscBool)(ctx->disc.degree == 2);
-  PetscCall(PetscOptionsBool("-mesh_curved", "Curved (isoparametric P2) boundary: mid-edge nodes of Gamma_D, Gamma_C on the circles (default: on with -degree 2)", NULL, ctx->mesh.curved, &ctx->mesh.curved, NULL));
+  PetscCall(PetscOptionsInt("-degree", "Lagrange degree of the displacement: 1 (the paper), 2, 3 (default: 3 without -obstacle when -mesh_h comes from -ts_phase_error, else 2)", NULL, ctx->disc.degree, &ctx->disc.degree, &ctx->disc.degree_set));
+  ctx->mesh.curved = (PetscBool)(ctx->disc.degree >= 2);
+  PetscCall(PetscOptionsBool("-mesh_curved", "Curved (P2 geometric map) boundary: mid-edge nodes of Gamma_D, Gamma_C on the circles (default: on with -degree 2 or 3)", NULL, ctx->mesh.curved, &ctx->mesh.curved, NULL));
   PetscCall(PetscOptionsEnum("-coriolis_velocity", "Coriolis velocity: backward (the paper, explicit, 1st order), extrapolated (explicit, 2nd order), centered (implicit, 2nd order, stable)", "RollerCoriolisVelocity", RollerCoriolisVelocities,
                              (PetscEnum)ctx->disc.coriolis, (PetscEnum *)&ctx->disc.coriolis, NULL));
   PetscCall(PetscOptionsBool("-clamp_outer", "Also clamp Gamma_C (xi = 0 on the whole boundary, Theorem 1)", NULL, ctx->disc.clamp_outer, &ctx->disc.clamp_outer, NULL));
@@ -20,8 +20,8 @@ PetscErrorCode RollerDiscretizationSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsBool("-static", "Solve the static contact (Signorini) problem K xi = E N lambda at the obstacle of t = -ts_max_time in one step, the state a damped run with -omega 0 comes to rest in (docs/validation.md section 5)", NULL,
                              ctx->disc.static_solve, &ctx->disc.static_solve, NULL));
   PetscOptionsEnd();
-  PetscCheck(ctx->disc.degree == 1 || ctx->disc.degree == 2, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-degree %" PetscInt_FMT " must be 1 or 2", ctx->disc.degree);
-  PetscCheck(!ctx->mesh.curved || ctx->disc.degree == 2, ctx->comm, PETSC_ERR_ARG_INCOMP, "-mesh_curved needs -degree 2 (a P1 field cannot see a curved edge), got -degree %" PetscInt_FMT, ctx->disc.degree);
+  PetscCheck(ctx->disc.degree >= 1 && ctx->disc.degree <= 3, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-degree %" PetscInt_FMT " must be 1, 2 or 3", ctx->disc.degree);
+  PetscCheck(!ctx->mesh.curved || ctx->disc.degree >= 2, ctx->comm, PETSC_ERR_ARG_INCOMP, "-mesh_curved needs -degree 2 or 3 (a P1 field cannot see a curved edge), got -degree %" PetscInt_FMT, ctx->disc.degree);
   RollerCheckOption(ctx->comm, "-damping", ctx->disc.damping, ctx->disc.damping >= 0, ">= 0");
   PetscFunctionReturn(0);
 }
@@ -56,7 +56,7 @@ static PetscErrorCode SpaceSetUp(Roller ctx, DM dm, PetscFE fe)
   PetscFunctionReturn(0);
 }
 
-/* Lagrange P1 or P2 displacement on ctx->mesh.dm. Its DS holds no kernel and only the material constants,
+/* Lagrange P1, P2 or P3 displacement on ctx->mesh.dm. Its DS holds no kernel and only the material constants,
    set here once: the output's stress projection reads them (f_stress_norm). */
 PetscErrorCode RollerDiscretizationSetUp(Roller ctx)
 {
