@@ -1,7 +1,8 @@
 """The squeal report of an output folder (docs/squeal.md section 9.1).
 
 The folder holds what the steps of the one-command run write (any may be missing; the report says so):
-- `scene.json`: {"name", "units": "si" | "nd", "loss_factor", "friction", "creep", "pitch_si_hz" (nd scenes: the
+- `scene.json`: {"name", "units": "si" | "nd", "loss_factor" (or, SI scenes, "kelvin_voigt_tau" in s: the
+  loss factor at the mode's frequency f is then 2 pi f tau), "friction", "creep", "pitch_si_hz" (nd scenes: the
   SI pitch the predicted mode is heard at), "seconds_per_unit" (optional; else f_nd / pitch_si_hz)};
 - `modes.csv`: the CEA (`roller -modes`; columns re, im, frequency, growth_rate, order, wave);
 - `sweep.csv`: the map (`roller -modes -sweep`; the swept options as columns beside growth_rate, frequency);
@@ -51,6 +52,9 @@ def verdict(mode, scene):
     sigma, w = num(mode["growth_rate"]), num(mode["im"])
     f = w / (2 * math.pi)
     eta = num(scene.get("loss_factor"), 0.0)
+    if "kelvin_voigt_tau" in scene:  # Kelvin-Voigt: the loss factor at the mode's frequency, 2 pi f tau
+        eta = 2 * math.pi * abs(f) * num(scene["kelvin_voigt_tau"]) if "seconds_per_unit" not in scene and \
+            scene.get("units", "nd") == "si" else eta
     si = scene.get("units", "nd") == "si"
     pitch = f if si else num(scene.get("pitch_si_hz"))
     s = num(scene.get("seconds_per_unit")) if "seconds_per_unit" in scene else (1.0 if si else f / pitch)
