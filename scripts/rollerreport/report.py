@@ -141,7 +141,9 @@ def write(folder, signal="contact_force"):
         out["missing"].append("modes.csv")
     if os.path.exists(j("sweep.csv")):
         rows = read_rows(j("sweep.csv"))
-        xname, yname, onset = sweep_map(rows, j("map.png"), num(scene.get("creep"), None))
+        xname = next((k for k in rows[0] if k not in FIXED and k != "friction"), None)
+        scene_x = num(scene.get(xname, scene.get("creep")), None)  # e.g. "sheet_speed" when that is swept
+        xname, yname, onset = sweep_map(rows, j("map.png"), scene_x)
         out["files"].append("map.png")
         out["friction_onset"] = onset
         lines += ["## Map", "", f"![map](map.png)", "",
