@@ -5,3 +5,6 @@ roller_test(spectrum_synthetic spectrum_synthetic.py LABELS quick TIMEOUT 120)
 # scripts/plot_traction.py (pressure, traction and stick zone across the contact patch, docs/friction.md 5.1)
 # on a small friction run: its P and Q are the CSV's, every theory option draws.
 roller_test(plot_traction_smoke plot_traction_smoke.py LABELS quick TIMEOUT 180)
+# The report package scripts/rollerreport (docs/squeal.md section 9.1) on a synthetic folder: verdict, loss-factor
+# margin, friction at onset, transient fit, WAV (16 bit, 44.1 kHz, loudest line within 2 % of the pitch), files.
+roller_test(rollerreport_unit rollerreport_unit.py LABELS quick TIMEOUT 300)

@@ -1,0 +1,11 @@
+"""python3 -m rollerreport FOLDER [--signal contact_force]: the squeal report of FOLDER (docs/squeal.md 9.1)."""
+import argparse
+
+from . import report
+
+p = argparse.ArgumentParser(prog="rollerreport", description=__doc__)
+p.add_argument("folder")
+p.add_argument("--signal", default="contact_force", help="the transient CSV's column heard (default contact_force)")
+a = p.parse_args()
+r = report.write(a.folder, a.signal)
+print(f"rollerreport: wrote {', '.join(r['files'])} in {a.folder}" + (f"; missing {', '.join(r['missing'])}" if r["missing"] else ""))
