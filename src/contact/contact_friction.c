@@ -223,7 +223,9 @@ static PetscErrorCode CoulombNewton(Roller ctx, RollerContact c, PetscInt m, Pet
     PetscInt  its;
     PetscBool converged;
 
-    PetscCall(RollerContactCoulombNewton(&fr->box, m, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
+    const PetscReal law[4] = {fr->mu, fr->mu_s, fr->v_c, 2.0 * ctx->ts.dt};
+
+    PetscCall(RollerContactCoulombNewton(&fr->box, m, law, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
     fr->its += its;
     if (!converged) break;
     PetscCall(UpdateMu(fr, m, ctx->ts.dt, &change, &lmax, &dmu, PETSC_FALSE));
