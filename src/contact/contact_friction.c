@@ -20,7 +20,7 @@ struct _n_RollerContactFriction {
   PetscReal       *x;          /* 2 nc: the box QP's solution */
   PetscInt        *node_state; /* nc: 0 off the sheet, 1 stick, 2 slip, of the accepted step */
   PetscReal       *M, *q, *z;  /* Lemke's LCP of 4 m unknowns (allocated when first needed, for lemke_cap) */
-  PetscInt         lemke_cap, its, lemke_steps;
+  PetscInt         lemke_cap, its, lemke_steps, newton_fallbacks;
 };
 
 /* mu(|v|) = mu + (mu_s - mu) exp(-|v| / v_c), constant mu without -friction_decay (v_c = 0); *dmu its derivative
@@ -67,7 +67,8 @@ PetscErrorCode RollerContactFrictionDestroy(RollerContactFriction *friction)
 
   PetscFunctionBeginUser;
   if (!fr) PetscFunctionReturn(0);
-  if (fr->lemke_steps) PetscCall(PetscInfo(NULL, "Friction: Lemke's method took over in %" PetscInt_FMT " steps\n", fr->lemke_steps));
+  if (fr->newton_fallbacks || fr->lemke_steps)
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "roller: friction fallbacks: the semismooth Newton method failed in %" PetscInt_FMT " steps (fixed point of Tresca steps), Lemke's method took over in %" PetscInt_FMT "\n", fr->newton_fallbacks, fr->lemke_steps));
   PetscCall(RollerContactBoxQPDestroy(&fr->box));
   PetscCall(PetscFree5(fr->state, fr->lam_n, fr->mu_n, fr->x, fr->node_state));
   PetscCall(PetscFree3(fr->M, fr->q, fr->z));
@@ -186,7 +187,7 @@ static PetscErrorCode FrictionData(Roller ctx, RollerContact c, const PetscReal 
 
 /* The slips of the iterate fr->x (into fr->box.w), mu(v) at them; the largest change of lambda_N (of lam_n) and of
    mu, and the largest lambda_N; with accept the iterate becomes lam_n and mu_n. */
-static PetscErrorCode UpdateMu(RollerContactFriction fr, PetscInt m, PetscReal dt, PetscReal *change, PetscReal *lmax, PetscReal *dmu, PetscBool accept)
+static PetscErrorCode UpdateMuRelaxed(RollerContactFriction fr, PetscInt m, PetscReal dt, PetscReal *change, PetscReal *lmax, PetscReal *dmu, PetscBool accept, PetscReal omega)
 {
   PetscFunctionBeginUser;
   RollerContactLCPSlack(&fr->box, 2 * m, fr->x, fr->box.w);
@@ -199,9 +200,16 @@ static PetscErrorCode UpdateMu(RollerContactFriction fr, PetscInt m, PetscReal d
     *dmu    = PetscMax(*dmu, PetscAbsReal(mu - fr->mu_n[a]));
     if (accept) {
       fr->lam_n[a] = fr->x[a];
-      fr->mu_n[a]  = mu;
+      fr->mu_n[a]  = fr->mu_n[a] + omega * (mu - fr->mu_n[a]);
     }
   }
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode UpdateMu(RollerContactFriction fr, PetscInt m, PetscReal dt, PetscReal *change, PetscReal *lmax, PetscReal *dmu, PetscBool accept)
+{
+  PetscFunctionBeginUser;
+  PetscCall(UpdateMuRelaxed(fr, m, dt, change, lmax, dmu, accept, 1.0));
   PetscFunctionReturn(0);
 }
 
@@ -235,6 +243,7 @@ static PetscErrorCode CoulombNewton(Roller ctx, RollerContact c, PetscInt m, Pet
     }
     PetscCall(UpdateMu(fr, m, ctx->ts.dt, &change, &lmax, &dmu, PETSC_TRUE));
   }
+  fr->newton_fallbacks++;
   PetscCall(PetscInfo(NULL, "Friction at t = %g: the semismooth Newton method failed after %" PetscInt_FMT " iterations; fixed point of Tresca steps\n", (double)c->step.t, fr->its));
   for (PetscInt a = 0; a < m; ++a) fr->mu_n[a] = FrictionCoefficient(fr, 0.0);
   PetscFunctionReturn(0);
@@ -287,7 +296,7 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
     }
     fr->its++;
     res->its += its;
-    PetscCall(UpdateMu(fr, m, dt, &change, &lmax, &dmu, PETSC_TRUE));
+    PetscCall(UpdateMuRelaxed(fr, m, dt, &change, &lmax, &dmu, PETSC_TRUE, it > 5 ? 0.5 : 1.0)); /* damped once the passes stall */
     PetscCall(PetscInfo(NULL, "Friction at t = %g: iterate %" PetscInt_FMT " (%" PetscInt_FMT " QP its): change of lambda_N %g of %g, of mu %g\n", (double)t, it, its, (double)change, (double)lmax, (double)dmu));
     if (change <= c->opt.friction_rtol * lmax && dmu <= c->opt.friction_rtol * fr->mu_s) break;
     if (it >= c->opt.friction_max_it) {
