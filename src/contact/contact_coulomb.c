@@ -40,7 +40,7 @@ static PetscInt States(PetscInt m, const PetscReal G[], const PetscReal mu[], co
 
 /* The linear system of the states: gap = 0 at every node in contact, slip = 0 at every sticking one, with
    lambda_T = s mu lambda_N substituted at the slipping ones; x from its solution. */
-static PetscErrorCode SolveStates(PetscInt m, const PetscReal G[], const PetscReal d[], const PetscReal mu[], CoulombWork *cw, PetscReal x[])
+static PetscErrorCode SolveStates(PetscInt m, const PetscReal G[], const PetscReal d[], const PetscReal mu[], const PetscReal kv[], CoulombWork *cw, PetscReal x[])
 {
   const PetscInt m2 = 2 * m;
   PetscInt       k  = 0;
@@ -49,7 +49,7 @@ static PetscErrorCode SolveStates(PetscInt m, const PetscReal G[], const PetscRe
 
   PetscFunctionBeginUser;
   for (PetscInt a = 0; a < m; ++a) cw->idx_n[a] = cw->state[a] ? k++ : -1;
-  for (PetscInt a = 0; a < m; ++a) cw->idx_t[a] = cw->state[a] == 1 ? k++ : -1;
+  for (PetscInt a = 0; a < m; ++a) cw->idx_t[a] = cw->state[a] == 1 || (cw->state[a] == 2 && kv && kv[a] != 0.0) ? k++ : -1;
   PetscCall(PetscArrayzero(x, m2));
   if (!k) PetscFunctionReturn(0);
   PetscCall(PetscArrayzero(cw->R, (size_t)k * k));
@@ -58,11 +58,23 @@ static PetscErrorCode SolveStates(PetscInt m, const PetscReal G[], const PetscRe
       const PetscInt row = part ? cw->idx_t[a] : cw->idx_n[a], ga = part ? m + a : a;
 
       if (row < 0) continue;
+      if (part && cw->state[a] == 2) { /* velocity weakening, linearized: lambda_T = s (mu lambda_N + kv w_T + kv0) */
+        cw->R[row + (size_t)row * k] += 1.0;
+        cw->R[row + (size_t)cw->idx_n[a] * k] -= cw->sign[a] * mu[a];
+        cw->rhs[row] = cw->sign[a] * (kv[a] * d[ga] + kv[m + a]);
+        for (PetscInt b = 0; b < m; ++b) {
+          const PetscReal gn = -cw->sign[a] * kv[a] * G[ga + (size_t)b * m2], gt = -cw->sign[a] * kv[a] * G[ga + (size_t)(m + b) * m2];
+
+          if (cw->idx_n[b] >= 0) cw->R[row + (size_t)cw->idx_n[b] * k] += gn + (cw->state[b] == 2 && cw->idx_t[b] < 0 ? gt * cw->sign[b] * mu[b] : 0.0);
+          if (cw->idx_t[b] >= 0) cw->R[row + (size_t)cw->idx_t[b] * k] += gt;
+        }
+        continue;
+      }
       cw->rhs[row] = -d[ga];
       for (PetscInt b = 0; b < m; ++b) {
         const PetscReal gn = G[ga + (size_t)b * m2], gt = G[ga + (size_t)(m + b) * m2];
 
-        if (cw->idx_n[b] >= 0) cw->R[row + (size_t)cw->idx_n[b] * k] += gn + (cw->state[b] == 2 ? gt * cw->sign[b] * mu[b] : 0.0);
+        if (cw->idx_n[b] >= 0) cw->R[row + (size_t)cw->idx_n[b] * k] += gn + (cw->state[b] == 2 && cw->idx_t[b] < 0 ? gt * cw->sign[b] * mu[b] : 0.0);
         if (cw->idx_t[b] >= 0) cw->R[row + (size_t)cw->idx_t[b] * k] += gt;
       }
     }
@@ -100,10 +112,30 @@ static PetscBool LawsHold(PetscInt m, const PetscReal mu[], const PetscReal x[],
 /* On the friction's box QP data box (G, d of size 2m; its residual w = G x + d is RollerContactLCPSlack's):
    x (2m: lambda_N, lambda_T) in: the initial guess (the frictionless multipliers), out: the solution if
    *converged. Up to maxit iterations (*its). */
-PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *box, PetscInt m, const PetscReal mu[], PetscReal x[], PetscInt maxit, PetscInt *its, PetscBool *converged)
+/* mu(|v|) at the slips w (law = mu, mu_s, v_c, 2 dt): mu into mu[], the linearization of the slip law at the
+   nodes in contact into kv (kv[a] = lambda_N mu'(v) sign(w_T)/(2 dt), kv[m + a] = -lambda_N mu'(v) |v|); the largest
+   change of mu. */
+static PetscReal WeakeningMu(PetscInt m, const PetscReal law[], const PetscReal x[], const PetscReal w[], const CoulombWork *cw, PetscReal mu[], PetscReal kv[])
+{
+  PetscReal change = 0.0;
+
+  for (PetscInt a = 0; a < m; ++a) {
+    const PetscReal v = PetscAbsReal(w[m + a]) / law[3], sw = w[m + a] != 0.0 ? PetscSign(w[m + a]) : -cw->sign[a];
+    PetscReal       dmu, mun                                = RollerFrictionLaw(law[0], law[1], law[2], v, &dmu);
+
+    change    = PetscMax(change, PetscAbsReal(mun - mu[a]));
+    mu[a]     = mun;
+    kv[a]     = PetscMax(x[a], 0.0) * dmu * sw / law[3];
+    kv[m + a] = -PetscMax(x[a], 0.0) * dmu * v;
+  }
+  return change;
+}
+
+PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *box, PetscInt m, const PetscReal law[], PetscReal mu[], PetscReal x[], PetscInt maxit, PetscInt *its, PetscBool *converged)
 {
   const PetscReal *G = box->G, *d = box->d;
   CoulombWork      cw;
+  PetscReal       *kv = NULL, dmu = 0.0;
 
   PetscFunctionBeginUser;
   *converged = PETSC_FALSE;
@@ -114,15 +146,21 @@ PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *box, PetscInt m, con
     cw.state[a] = -1; /* no state yet: the first pass counts as a change */
     cw.sign[a]  = 0.0;
   }
+  if (law && law[2] > 0.0) PetscCall(PetscMalloc1(2 * m, &kv));
   RollerContactLCPSlack(box, 2 * m, x, cw.w);
   for (*its = 1; *its <= maxit; ++*its) {
-    if (!States(m, G, mu, x, cw.w, &cw)) {
+    if (kv) dmu = WeakeningMu(m, law, x, cw.w, &cw, mu, kv);
+    if (!States(m, G, mu, x, cw.w, &cw) && (!kv || dmu <= 1e-10 * law[1])) {
+      for (PetscInt a = 0; a < m; ++a)
+        if (cw.state[a] == 2) x[m + a] = cw.sign[a] * mu[a] * x[a];
+      RollerContactLCPSlack(box, 2 * m, x, cw.w);
       *converged = LawsHold(m, mu, x, cw.w, d, &cw);
       break;
     }
-    PetscCall(SolveStates(m, G, d, mu, &cw, x));
+    PetscCall(SolveStates(m, G, d, mu, kv, &cw, x));
     RollerContactLCPSlack(box, 2 * m, x, cw.w);
   }
+  PetscCall(PetscFree(kv));
   PetscCall(PetscFree3(cw.idx_n, cw.idx_t, cw.state));
   PetscCall(PetscFree5(cw.sign, cw.R, cw.rhs, cw.sol, cw.w));
   PetscFunctionReturn(0);

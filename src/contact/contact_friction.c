@@ -188,8 +188,8 @@ static PetscErrorCode FrictionData(Roller ctx, RollerContact c, const PetscReal 
 }
 
 /* The slips of the iterate fr->x (into fr->box.w), mu(v) at them; the largest change of lambda_N (of lam_n) and of
-   mu, and the largest lambda_N; with accept the iterate becomes lam_n and mu_n. */
-static PetscErrorCode UpdateMu(RollerContactFriction fr, PetscInt m, PetscReal dt, PetscReal *change, PetscReal *lmax, PetscReal *dmu, PetscBool accept)
+   mu, and the largest lambda_N; with accept the iterate becomes lam_n, and mu_n moves by omega towards mu(v). */
+static PetscErrorCode UpdateMu(RollerContactFriction fr, PetscInt m, PetscReal dt, PetscReal *change, PetscReal *lmax, PetscReal *dmu, PetscBool accept, PetscReal omega)
 {
   PetscFunctionBeginUser;
   RollerContactLCPSlack(&fr->box, 2 * m, fr->x, fr->box.w);
@@ -202,7 +202,7 @@ static PetscErrorCode UpdateMu(RollerContactFriction fr, PetscInt m, PetscReal d
     *dmu    = PetscMax(*dmu, PetscAbsReal(mu - fr->mu_n[a]));
     if (accept) {
       fr->lam_n[a] = fr->x[a];
-      fr->mu_n[a]  = mu;
+      fr->mu_n[a]  = fr->mu_n[a] + omega * (mu - fr->mu_n[a]);
     }
   }
   PetscFunctionReturn(0);
@@ -226,15 +226,17 @@ static PetscErrorCode CoulombNewton(Roller ctx, RollerContact c, PetscInt m, Pet
     PetscInt  its;
     PetscBool converged;
 
-    PetscCall(RollerContactCoulombNewton(&fr->box, m, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
+    const PetscReal law[4] = {fr->mu, fr->mu_s, fr->v_c, 2.0 * ctx->ts.dt};
+
+    PetscCall(RollerContactCoulombNewton(&fr->box, m, law, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
     fr->its += its;
     if (!converged) break;
-    PetscCall(UpdateMu(fr, m, ctx->ts.dt, &change, &lmax, &dmu, PETSC_FALSE));
+    PetscCall(UpdateMu(fr, m, ctx->ts.dt, &change, &lmax, &dmu, PETSC_FALSE, 1.0));
     if (dmu <= c->opt.friction_rtol * fr->mu_s) {
       *done = PETSC_TRUE;
       PetscFunctionReturn(0);
     }
-    PetscCall(UpdateMu(fr, m, ctx->ts.dt, &change, &lmax, &dmu, PETSC_TRUE));
+    PetscCall(UpdateMu(fr, m, ctx->ts.dt, &change, &lmax, &dmu, PETSC_TRUE, 1.0));
   }
   PetscCall(PetscInfo(NULL, "Friction at t = %g: the semismooth Newton method failed after %" PetscInt_FMT " iterations; fixed point of Tresca steps\n", (double)c->step.t, fr->its));
   fr->newton_failures++;
@@ -292,7 +294,7 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
     }
     fr->its++;
     res->its += its;
-    PetscCall(UpdateMu(fr, m, dt, &change, &lmax, &dmu, PETSC_TRUE));
+    PetscCall(UpdateMu(fr, m, dt, &change, &lmax, &dmu, PETSC_TRUE, it > 5 ? 0.5 : 1.0)); /* damped once the passes stall */
     PetscCall(PetscInfo(NULL, "Friction at t = %g: iterate %" PetscInt_FMT " (%" PetscInt_FMT " QP its): change of lambda_N %g of %g, of mu %g\n", (double)t, it, its, (double)change, (double)lmax, (double)dmu));
     if (change <= c->opt.friction_rtol * lmax && dmu <= c->opt.friction_rtol * fr->mu_s) break;
     if (it >= c->opt.friction_max_it) {

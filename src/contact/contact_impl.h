@@ -233,7 +233,7 @@ PETSC_INTERN PetscErrorCode RollerContactBoxQPSolve(RollerContactLCP *, RollerBo
 PETSC_INTERN PetscErrorCode RollerContactBoxQPDestroy(RollerContactLCP *);
 
 /* contact_coulomb.c: Coulomb of one step by the primal-dual active-set (semismooth Newton) method */
-PETSC_INTERN PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *, PetscInt, const PetscReal[], PetscReal[], PetscInt, PetscInt *, PetscBool *);
+PETSC_INTERN PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *, PetscInt, const PetscReal[], PetscReal[], PetscReal[], PetscInt, PetscInt *, PetscBool *);
 
 /* contact_friction.c */
 PETSC_INTERN PetscErrorCode RollerContactFrictionCreate(Roller, RollerContact);
