@@ -11,7 +11,8 @@ PetscErrorCode RollerTimeStepSetFromOptions(Roller ctx)
   PetscOptionsBegin(ctx->comm, NULL, "Roller: time stepping", NULL);
   PetscCall(PetscOptionsReal("-ts_dt", "Time step dt (0: chosen from -ts_phase_error)", NULL, ctx->ts.dt, &ctx->ts.dt, &ctx->ts.dt_set));
   PetscCall(PetscOptionsReal("-ts_max_time", "End time", NULL, ctx->ts.max_time, &ctx->ts.max_time, NULL));
-  PetscCall(PetscOptionsReal("-ts_phase_error", "Accuracy target that sets the default -ts_scheme, -ts_dt and -mesh_h: the relative error of R at the end time, its time half from the radial modes' phase errors weighted by their amplitudes (docs/model.md 6.2)", NULL, ctx->ts.phase_error, &ctx->ts.phase_error, NULL));
+  PetscCall(PetscOptionsReal("-ts_phase_error", "Accuracy target that sets the default -ts_scheme, -ts_dt and -mesh_h: the relative error of R at the end time, its time half from the radial modes' phase errors weighted by their amplitudes (docs/model.md 6.2)", NULL,
+                             ctx->ts.phase_error, &ctx->ts.phase_error, NULL));
   PetscCall(PetscOptionsBool("-ts_view", "Print the discretization (degree, h, scheme, dt) and the rule that chose it (also with -ts_monitor)", NULL, ctx->ts.view, &ctx->ts.view, NULL));
   PetscCall(PetscOptionsInt("-ts_max_steps", "Cap on the number of steps (-1: none)", NULL, ctx->ts.max_steps, &ctx->ts.max_steps, NULL));
   PetscCall(PetscOptionsBool("-quiet", "Silence the progress line", NULL, ctx->ts.quiet, &ctx->ts.quiet, NULL));
