@@ -61,7 +61,7 @@ PETSC_INTERN PetscErrorCode RollerSchemeAddOperator(RollerScheme, Roller, PetscR
    at the step's end), scratch, the loads at t0 and t1 (L0 at time tL0 is reused when the next stage starts there),
    and the energy terms it adds up over a step's stages (the contact's in contact). */
 typedef struct {
-  Vec            V, MV, dv, L0, L1;
+  Vec            V, MV, dv, Delta, L0, L1;
   PetscReal      tL0;
   PetscReal      load_work, damping_dissipation, viscous_dissipation;
   RollerStepInfo contact;

@@ -54,6 +54,23 @@ static PetscErrorCode Kick(Roller ctx, RollerStageWork *cp, PetscReal t, PetscRe
   PetscFunctionReturn(0);
 }
 
+/* y += a x/h entry by entry: each entry's rounding is its own, not a rounded a/h shared by all. */
+static PetscErrorCode AddDivided(Vec y, PetscReal a, Vec x, PetscReal h)
+{
+  PetscScalar       *ya;
+  const PetscScalar *xa;
+  PetscInt           n;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(y, &n));
+  PetscCall(VecGetArray(y, &ya));
+  PetscCall(VecGetArrayRead(x, &xa));
+  for (PetscInt i = 0; i < n; ++i) ya[i] += a * xa[i] / h;
+  PetscCall(VecRestoreArrayRead(x, &xa));
+  PetscCall(VecRestoreArray(y, &ya));
+  PetscFunctionReturn(0);
+}
+
 /* One stage of length h (exactly the h of its matrix: t1 - t0 has the round-off of t, which would break the energy
    identity) from (x0, v) at t0 to x1 at t1 (step 3 with the kicks and Coriolis flows around it). */
 PetscErrorCode RollerSchemeStage(Roller ctx, RollerStageWork *cp, RollerStepOperator *op, PetscReal h, PetscReal t0, PetscReal t1, PetscReal delta, PetscBool refresh, Vec x0, Vec Mx0, Vec Kx0, Vec x1, Vec Mx1, Vec Kx1)
@@ -88,24 +105,30 @@ PetscErrorCode RollerSchemeStage(Roller ctx, RollerStageWork *cp, RollerStepOper
     PetscCall(RollerContactEnergyAdd(ctx, ctx->contact, x0, t0, 1.0, &cp->contact));
     PetscCall(VecWAXPY(D, -1.0, x0, x1));
   } else {
-    /* the increment D = x1 - x0 itself, A D = b - A x0 = 2 rho/h M v0 - K x0 + (L0 + L1)/2: without the large
-       2 rho/h^2 M x0 that cancels, the velocity 2 D/h - v0 keeps its round-off */
-    PetscBool guess;
+    /* Delta = x1 - x0 - h v0, the velocity's increment times h/2 (b - A (x0 + h v0)):
+         A Delta = -K (x0 + (h/2 + tau) v0) - eta M v0 + (L0 + L1)/2,
+       the same stage; but without a scalar of h in front of M: b's 2 rho/h M v0 and the update v1 = 2 D/h - v0, rounded
+       once for the run, do not cancel A's rounded entries, and the mismatch, the same every stage, drifted the energy
+       linearly (5.5e-16 E a step; 2e-15 over 2000 steps in this form, docs/model.md section 2.1) */
+    Vec       y = x1, Ky = cp->dv, MDelta = cp->dv; /* scratch: x1 and dv are free until set */
+    PetscReal s = h / (0.5 * h + tau);
 
-    PetscCall(VecAXPBYPCZ(b, 2.0 * rho / h, -1.0, 0.0, cp->MV, Kx0));
-    PetscCall(VecAXPBYPCZ(b, 0.5, 0.5, 1.0, cp->L0, cp->L1));
-    PetscCall(KSPGetInitialGuessNonzero(op->ksp, &guess));
-    if (guess) {
-      PetscCall(VecCopy(v, D));
-      PetscCall(VecScale(D, h));
-    }
-    PetscCall(RollerStepOperatorSolve(ctx, op, b, D, t1));
+    PetscCall(VecWAXPY(y, 0.5 * h + tau, v, x0));
+    PetscCall(MatMult(ctx->ops.K, y, Ky));
+    PetscCall(VecAXPBYPCZ(b, 0.5, 0.5, 0.0, cp->L0, cp->L1));
+    PetscCall(VecAXPY(b, -1.0, Ky));
+    if (eta != 0) PetscCall(VecAXPY(b, -eta, cp->MV));
+    PetscCall(VecZeroEntries(cp->Delta));
+    PetscCall(RollerStepOperatorSolve(ctx, op, b, cp->Delta, t1));
+    PetscCall(VecWAXPY(D, h, v, cp->Delta));
     PetscCall(VecWAXPY(x1, 1.0, x0, D));
-    /* M x1 = M x0 + M D from the stage's equation c_M M D + c_K K D = b (no product with M: M x only feeds the kicks'
-       M v, made anew at every stage, and the diagnostics) */
     PetscCall(MatMult(ctx->ops.K, x1, Kx1));
-    PetscCall(VecAXPBYPCZ(b, -op->c_K, op->c_K, 1.0, Kx1, Kx0));
-    PetscCall(VecWAXPY(Mx1, 1.0 / op->c_M, b, Mx0));
+    /* M x1 = M x0 + h M v0 + M Delta, M Delta from the equation, c_M M Delta = b - c_K K Delta, K Delta = K x1 - K x0 -
+       h K v0, h K v0 = s (K y - K x0) (no product with M: M x feeds the kicks, the damping and the diagnostics) */
+    PetscCall(VecAXPBYPCZ(Ky, 1.0, s - 1.0, -s, Kx1, Kx0)); /* K Delta */
+    PetscCall(VecAXPBY(MDelta, 1.0 / op->c_M, -op->c_K / op->c_M, b));
+    PetscCall(VecWAXPY(Mx1, h, cp->MV, Mx0));
+    PetscCall(VecAXPY(Mx1, 1.0, MDelta));
   }
   if (ctx->contact) { /* c_M M x1 = b + f - c_K K x1, f the contact force */
     PetscCall(MatMult(ctx->ops.K, x1, Kx1));
@@ -127,10 +150,16 @@ PetscErrorCode RollerSchemeStage(Roller ctx, RollerStageWork *cp, RollerStepOper
     PetscCall(VecDot(D, b, &dot));
     cp->viscous_dissipation += tau / h * PetscRealPart(dot);
   }
-  /* v1 = 2 (x1 - x0)/h - v0, M v alike (for the kick and the energy; made anew at the next stage) */
-  PetscCall(VecAXPBY(v, 2.0 / h, -1.0, D));
-  PetscCall(VecWAXPY(b, -1.0, Mx0, Mx1));
-  PetscCall(VecAXPBY(cp->MV, 2.0 / h, -1.0, b));
+  /* v1 = 2 (x1 - x0)/h - v0, M v alike (for the kick and the energy; made anew at the next stage); without contact
+     v1 = v0 + 2 Delta/h, divided entry by entry (a rounded 2/h, the same every stage, would drift the energy) */
+  if (ctx->contact) {
+    PetscCall(VecAXPBY(v, 2.0 / h, -1.0, D));
+    PetscCall(VecWAXPY(b, -1.0, Mx0, Mx1));
+    PetscCall(VecAXPBY(cp->MV, 2.0 / h, -1.0, b));
+  } else {
+    PetscCall(AddDivided(v, 2.0, cp->Delta, h));
+    PetscCall(VecAXPY(cp->MV, 2.0 / h, cp->dv)); /* dv = M Delta, above */
+  }
   tmp     = cp->L0; /* L(t1) is the next stage's L(t0) */
   cp->L0  = cp->L1;
   cp->L1  = tmp;
@@ -147,6 +176,7 @@ PetscErrorCode RollerStageWorkCreate(Roller ctx, RollerStageWork *w)
   PetscCall(VecDuplicate(ctx->state.cur, &w->V));
   PetscCall(VecDuplicate(ctx->state.cur, &w->MV));
   PetscCall(VecDuplicate(ctx->state.cur, &w->dv));
+  PetscCall(VecDuplicate(ctx->state.cur, &w->Delta));
   PetscCall(VecDuplicate(ctx->state.cur, &w->L0));
   PetscCall(VecDuplicate(ctx->state.cur, &w->L1));
   w->tL0 = PETSC_MAX_REAL;
@@ -159,6 +189,7 @@ PetscErrorCode RollerStageWorkDestroy(RollerStageWork *w)
   PetscCall(VecDestroy(&w->V));
   PetscCall(VecDestroy(&w->MV));
   PetscCall(VecDestroy(&w->dv));
+  PetscCall(VecDestroy(&w->Delta));
   PetscCall(VecDestroy(&w->L0));
   PetscCall(VecDestroy(&w->L1));
   PetscFunctionReturn(0);
