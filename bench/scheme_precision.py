@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Work-precision of the time schemes and elements on the obstacle-free scene (figure 4, E = 0.1, 0 <= t <= 20):
-each scheme (-ts_scheme dmf, trapezoidal, composed) at a ladder of dt on the default P2 mesh (h = 0.0348), the
-composed scheme on finer P2 meshes, and the paper's configuration (jobs/paper/fig4.yaml). Each run's error is the
+each scheme (-ts_scheme dmf, trapezoidal, composed) at a ladder of dt on the former default P2 mesh (h = 0.0348), the
+composed scheme on finer P2 meshes and on P3 meshes, the default (P3), and the paper's configuration (jobs/paper/fig4.yaml). Each run's error is the
 larger of max|R - R_exact| / max|R_exact| and the same for alpha, against the exact axisymmetric reference
 (scripts/axisym_reference.py, n = 256); its cost the CPU time (user + system) of the whole process. With --rounds R
 the runs are interleaved R times and the median CPU is kept. Writes bench/results/scheme_precision.{md,png} and
@@ -35,7 +35,9 @@ def runs():
     for h in (0.025, 0.0174):
         out += [("composed finer", f"composed P2 h {h:g} dt {dt:g}", ["-ts_scheme", "composed", "-mesh_h", h, "-ts_dt", dt])
                 for dt in (0.0289, 0.0145)]
-    out.append(("default", "default (no option)", []))
+    out += [("composed P3", f"composed P3 h {h:g} dt {dt:g}", ["-ts_scheme", "composed", "-degree", 3, "-mesh_h", h, "-ts_dt", dt])
+            for h, dt in ((0.075, 0.0289), (0.06, 0.0145), (0.047, 0.013))]
+    out.append(("default", "default (no option: P3 h 0.0902, composed dt 0.0289)", []))
     return out
 
 
@@ -76,7 +78,7 @@ def main():
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
     style = {"paper": ("r*", 12), "dmf": ("o-", 6), "trapezoidal": ("s-", 6), "composed": ("^-", 7),
-             "composed finer": ("v--", 7), "default": ("kX", 11), "extra": ("D", 7)}
+             "composed finer": ("v--", 7), "composed P3": ("P-", 8), "default": ("kX", 11), "extra": ("D", 7)}
     for group in dict.fromkeys(g for g, _, _ in rs):
         xs = [med[label] / paper for g, label, _ in rs if g == group]
         ys = [err[label] for g, label, _ in rs if g == group]
