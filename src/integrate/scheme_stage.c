@@ -104,19 +104,28 @@ PetscErrorCode RollerSchemeStage(Roller ctx, RollerStageWork *cp, RollerStepOper
     PetscCall(ierr);
     PetscCall(RollerContactEnergyAdd(ctx, ctx->contact, x0, t0, 1.0, &cp->contact));
     PetscCall(VecWAXPY(D, -1.0, x0, x1));
+    /* c_M M x1 = b + f - c_K K x1, f the contact force */
+    PetscCall(MatMult(ctx->ops.K, x1, Kx1));
+    PetscCall(RollerContactForceVector(ctx->contact, Mx1));
+    PetscCall(VecAXPY(Mx1, 1.0, b));
+    PetscCall(VecAXPBY(Mx1, -op->c_K / op->c_M, 1.0 / op->c_M, Kx1));
+    /* v1 = 2 (x1 - x0)/h - v0, M v alike (for the kick and the energy; made anew at the next stage) */
+    PetscCall(VecAXPBY(v, 2.0 / h, -1.0, D));
+    PetscCall(VecWAXPY(b, -1.0, Mx0, Mx1));
+    PetscCall(VecAXPBY(cp->MV, 2.0 / h, -1.0, b));
   } else {
     /* Delta = x1 - x0 - h v0, the velocity's increment times h/2 (b - A (x0 + h v0)):
          A Delta = -K (x0 + (h/2 + tau) v0) - eta M v0 + (L0 + L1)/2,
        the same stage; but without a scalar of h in front of M: b's 2 rho/h M v0 and the update v1 = 2 D/h - v0, rounded
        once for the run, do not cancel A's rounded entries, and the mismatch, the same every stage, drifted the energy
        linearly (5.5e-16 E a step; 2e-15 over 2000 steps in this form, docs/model.md section 2.1) */
-    Vec       y = x1, Ky = cp->dv, MDelta = cp->dv; /* scratch: x1 and dv are free until set */
+    Vec       y = x1, KDM = cp->dv; /* scratch: x1 until set; dv (free until the kick) holds K y, then K Delta, then M Delta */
     PetscReal s = h / (0.5 * h + tau);
 
     PetscCall(VecWAXPY(y, 0.5 * h + tau, v, x0));
-    PetscCall(MatMult(ctx->ops.K, y, Ky));
+    PetscCall(MatMult(ctx->ops.K, y, KDM));
     PetscCall(VecAXPBYPCZ(b, 0.5, 0.5, 0.0, cp->L0, cp->L1));
-    PetscCall(VecAXPY(b, -1.0, Ky));
+    PetscCall(VecAXPY(b, -1.0, KDM));
     if (eta != 0) PetscCall(VecAXPY(b, -eta, cp->MV));
     PetscCall(VecZeroEntries(cp->Delta));
     PetscCall(RollerStepOperatorSolve(ctx, op, b, cp->Delta, t1));
@@ -125,16 +134,14 @@ PetscErrorCode RollerSchemeStage(Roller ctx, RollerStageWork *cp, RollerStepOper
     PetscCall(MatMult(ctx->ops.K, x1, Kx1));
     /* M x1 = M x0 + h M v0 + M Delta, M Delta from the equation, c_M M Delta = b - c_K K Delta, K Delta = K x1 - K x0 -
        h K v0, h K v0 = s (K y - K x0) (no product with M: M x feeds the kicks, the damping and the diagnostics) */
-    PetscCall(VecAXPBYPCZ(Ky, 1.0, s - 1.0, -s, Kx1, Kx0)); /* K Delta */
-    PetscCall(VecAXPBY(MDelta, 1.0 / op->c_M, -op->c_K / op->c_M, b));
+    PetscCall(VecAXPBYPCZ(KDM, 1.0, s - 1.0, -s, Kx1, Kx0));        /* K Delta */
+    PetscCall(VecAXPBY(KDM, 1.0 / op->c_M, -op->c_K / op->c_M, b)); /* M Delta */
     PetscCall(VecWAXPY(Mx1, h, cp->MV, Mx0));
-    PetscCall(VecAXPY(Mx1, 1.0, MDelta));
-  }
-  if (ctx->contact) { /* c_M M x1 = b + f - c_K K x1, f the contact force */
-    PetscCall(MatMult(ctx->ops.K, x1, Kx1));
-    PetscCall(RollerContactForceVector(ctx->contact, Mx1));
-    PetscCall(VecAXPY(Mx1, 1.0, b));
-    PetscCall(VecAXPBY(Mx1, -op->c_K / op->c_M, 1.0 / op->c_M, Kx1));
+    PetscCall(VecAXPY(Mx1, 1.0, KDM));
+    /* v1 = v0 + 2 Delta/h, divided entry by entry (a rounded 2/h, the same every stage, would drift the energy), M v
+       alike (for the kick and the energy; made anew at the next step) */
+    PetscCall(AddDivided(v, 2.0, cp->Delta, h));
+    PetscCall(VecAXPY(cp->MV, 2.0 / h, KDM));
   }
   /* the stage's energy terms: the loads' work (x1 - x0) . (L0 + L1)/2 and the dampings' dissipation */
   PetscCall(VecWAXPY(b, 1.0, cp->L0, cp->L1));
@@ -149,16 +156,6 @@ PetscErrorCode RollerSchemeStage(Roller ctx, RollerStageWork *cp, RollerStepOper
     PetscCall(VecWAXPY(b, -1.0, Kx0, Kx1));
     PetscCall(VecDot(D, b, &dot));
     cp->viscous_dissipation += tau / h * PetscRealPart(dot);
-  }
-  /* v1 = 2 (x1 - x0)/h - v0, M v alike (for the kick and the energy; made anew at the next stage); without contact
-     v1 = v0 + 2 Delta/h, divided entry by entry (a rounded 2/h, the same every stage, would drift the energy) */
-  if (ctx->contact) {
-    PetscCall(VecAXPBY(v, 2.0 / h, -1.0, D));
-    PetscCall(VecWAXPY(b, -1.0, Mx0, Mx1));
-    PetscCall(VecAXPBY(cp->MV, 2.0 / h, -1.0, b));
-  } else {
-    PetscCall(AddDivided(v, 2.0, cp->Delta, h));
-    PetscCall(VecAXPY(cp->MV, 2.0 / h, cp->dv)); /* dv = M Delta, above */
   }
   tmp     = cp->L0; /* L(t1) is the next stage's L(t0) */
   cp->L0  = cp->L1;
