@@ -6,7 +6,12 @@
    states follow from the last iterate with c = 1/G_aa:
      in contact   iff  lambda_N - c_N gap > 0,
      sticking     iff  |lambda_T - c_T slip| < mu (lambda_N - c_N gap),  else slipping with s = sign(lambda_T - c_T slip),
-   and each iterate solves the linear (non-symmetric) system of its states. It ends when the states repeat and the
+   and each iterate solves the linear (non-symmetric) system of its states. The step to that solution is globalized
+   by backtracking on the merit ||F||^2 of the complementarity functions F (the rule above as a projection,
+   Hintermueller, Ito & Kunisch, SIAM J. Optim. 13, 2002): without it the iteration can cycle between two iterates
+   of the same states (velocity weakening: Newton on the convex exponential mu(v) overshoots the slip) or of two
+   sets of states (a node at the stick/slip boundary); ten iterations without a decrease of the least merit so far
+   end it as failed. It ends when the states repeat after a full step and the
    solution satisfies the laws (lambda_N >= 0, gap >= 0, |lambda_T| <= mu lambda_N, a slipping node moving against
    its force); otherwise *converged is false and the caller falls back on the fixed point of Tresca steps. A few
    dense LU solves instead of the fixed point's tens of QPs. */
@@ -14,7 +19,7 @@
 
 typedef struct {
   PetscInt  *idx_n, *idx_t, *state; /* unknown numbers in the reduced system (-1: none); state 0 off, 1 stick, 2 slip */
-  PetscReal *sign, *R, *rhs, *sol, *w;
+  PetscReal *sign, *R, *rhs, *sol, *w, *x0;
 } CoulombWork;
 
 /* The states of the last iterate (x, w = G x + d); returns how many changed. */
@@ -109,6 +114,24 @@ static PetscBool LawsHold(PetscInt m, const PetscReal mu[], const PetscReal x[],
   return PETSC_TRUE;
 }
 
+/* ||F(x)||^2, F the complementarity functions of the states' rule at x (w = G x + d), with c = 1/G_aa:
+     F_N = lambda_N - max(0, lambda_N - c_N gap),  F_T = lambda_T - P(lambda_T - c_T slip),
+   P the projection onto [-mu l, mu l], l = max(0, lambda_N - c_N gap); mu = mu(|slip|/(2 dt)) with velocity weakening
+   (law[2] > 0), else mu[] as given. */
+static PetscReal Merit(PetscInt m, const PetscReal G[], const PetscReal law[], const PetscReal mu[], const PetscReal x[], const PetscReal w[])
+{
+  PetscReal phi = 0.0;
+
+  for (PetscInt a = 0; a < m; ++a) {
+    const PetscReal l = PetscMax(0.0, x[a] - w[a] / G[a + (size_t)a * 2 * m]), z = x[m + a] - w[m + a] / G[m + a + (size_t)(m + a) * 2 * m];
+    const PetscReal mv = law && law[2] > 0.0 ? RollerFrictionLaw(law[0], law[1], law[2], PetscAbsReal(w[m + a]) / law[3], NULL) : mu[a];
+    const PetscReal fn = x[a] - l, ft = x[m + a] - PetscMin(PetscMax(z, -mv * l), mv * l);
+
+    phi += fn * fn + ft * ft;
+  }
+  return phi;
+}
+
 /* On the friction's box QP data box (G, d of size 2m; its residual w = G x + d is RollerContactLCPSlack's):
    x (2m: lambda_N, lambda_T) in: the initial guess (the frictionless multipliers), out: the solution if
    *converged. Up to maxit iterations (*its). */
@@ -136,12 +159,15 @@ PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *box, PetscInt m, con
   const PetscReal *G = box->G, *d = box->d;
   CoulombWork      cw;
   PetscReal       *kv = NULL, dmu = 0.0;
+  PetscBool        full    = PETSC_TRUE;              /* the last step was the whole Newton step */
+  PetscReal        best    = PETSC_MAX_REAL, hist[4]; /* hist: the merits of the last four iterates */
+  PetscInt         stalled = 0;                       /* the least merit so far, iterations since it decreased */
 
   PetscFunctionBeginUser;
   *converged = PETSC_FALSE;
   *its       = 0;
   PetscCall(PetscMalloc3(m, &cw.idx_n, m, &cw.idx_t, m, &cw.state));
-  PetscCall(PetscMalloc5(m, &cw.sign, (size_t)4 * m * m, &cw.R, 2 * m, &cw.rhs, 2 * m, &cw.sol, 2 * m, &cw.w));
+  PetscCall(PetscMalloc6(m, &cw.sign, (size_t)4 * m * m, &cw.R, 2 * m, &cw.rhs, 2 * m, &cw.sol, 2 * m, &cw.w, 2 * m, &cw.x0));
   for (PetscInt a = 0; a < m; ++a) {
     cw.state[a] = -1; /* no state yet: the first pass counts as a change */
     cw.sign[a]  = 0.0;
@@ -149,19 +175,41 @@ PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *box, PetscInt m, con
   if (law && law[2] > 0.0) PetscCall(PetscMalloc1(2 * m, &kv));
   RollerContactLCPSlack(box, 2 * m, x, cw.w);
   for (*its = 1; *its <= maxit; ++*its) {
-    if (kv) dmu = WeakeningMu(m, law, x, cw.w, &cw, mu, kv);
-    if (!States(m, G, mu, x, cw.w, &cw) && (!kv || dmu <= 1e-10 * law[1])) {
+    PetscReal phi0, ref = 0.0, alpha = 1.0;
+
+    if (kv && *its > 1) dmu = WeakeningMu(m, law, x, cw.w, &cw, mu, kv); /* the first iterate takes mu as given */
+    if (!States(m, G, mu, x, cw.w, &cw) && full && (!kv || (*its > 1 && dmu <= 1e-10 * law[1]))) {
       for (PetscInt a = 0; a < m; ++a)
         if (cw.state[a] == 2) x[m + a] = cw.sign[a] * mu[a] * x[a];
       RollerContactLCPSlack(box, 2 * m, x, cw.w);
       *converged = LawsHold(m, mu, x, cw.w, d, &cw);
       break;
     }
-    PetscCall(SolveStates(m, G, d, mu, kv, &cw, x));
+    phi0                 = Merit(m, G, law, mu, x, cw.w);
+    hist[(*its - 1) % 4] = phi0;
+    for (PetscInt h = 0; h < PetscMin(*its, 4); ++h) ref = h ? PetscMax(ref, hist[h]) : hist[h];
+    if (phi0 < (1.0 - 1e-4) * best) best = phi0, stalled = 0;
+    else if (++stalled >= 10) break; /* ten iterations without progress: a cycle (or no solution of these laws) */
+    PetscCall(PetscArraycpy(cw.x0, x, 2 * m));
+    PetscCall(SolveStates(m, G, d, mu, *its > 1 ? kv : NULL, &cw, x));
     RollerContactLCPSlack(box, 2 * m, x, cw.w);
+    /* non-monotone Armijo backtracking against the largest of the last four merits (Grippo, Lampariello & Lucidi,
+       SIAM J. Numer. Anal. 23, 1986: the active-set iteration's own full steps are kept while it makes progress
+       over a few iterations); without a decrease in 10 halvings the full step */
+    while (Merit(m, G, law, mu, x, cw.w) > ref - 1e-4 * alpha * phi0 && alpha > 1e-3) {
+      alpha *= 0.5;
+      for (PetscInt a = 0; a < 2 * m; ++a) x[a] = cw.x0[a] + 0.5 * (x[a] - cw.x0[a]);
+      RollerContactLCPSlack(box, 2 * m, x, cw.w);
+    }
+    if (alpha <= 1e-3) {
+      PetscCall(SolveStates(m, G, d, mu, *its > 1 ? kv : NULL, &cw, x));
+      RollerContactLCPSlack(box, 2 * m, x, cw.w);
+      alpha = 1.0;
+    }
+    full = (PetscBool)(alpha == 1.0);
   }
   PetscCall(PetscFree(kv));
   PetscCall(PetscFree3(cw.idx_n, cw.idx_t, cw.state));
-  PetscCall(PetscFree5(cw.sign, cw.R, cw.rhs, cw.sol, cw.w));
+  PetscCall(PetscFree6(cw.sign, cw.R, cw.rhs, cw.sol, cw.w, cw.x0));
   PetscFunctionReturn(0);
 }

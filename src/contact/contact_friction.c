@@ -5,23 +5,29 @@
    With the normal forces fixed (Tresca) the step is min J^k(xi) + sum_n g_n |Delta s_n(xi)| under the obstacle
    bound; condensed on the candidates (contact_condensed.c) its dual is the box QP of contact_boxqp.c in
    x = (lambda_N, lambda_T): G = B^T S B, d = (gaps, slips of the free solution), lambda_N >= 0,
-   |lambda_T| <= g. Coulomb is solved first directly by the semismooth Newton method (contact_coulomb.c); if that
-   fails, as the fixed point g = mu(v) lambda_N of Tresca steps, v = |Delta s|/(2 dt) the slip speed, from the
-   frictionless multipliers; if that has not converged in -contact_friction_max_it steps, Coulomb as one LCP by
-   Lemke's method (contact_lemke.c) takes over, and if that ends on a ray the step fails with an error. Each
-   fallback is counted: the CSV's coulomb_fallback, one line at the end of the run. */
+   |lambda_T| <= g. Coulomb is solved first directly by the semismooth Newton method (contact_coulomb.c), with
+   the velocity weakening mu(v) (v = |Delta s|/(2 dt) the slip speed) inside it, its first iterate at mu of the last
+   step's slip speeds; where that fails, with mu frozen per Newton solve and iterated about them (Anderson's
+   acceleration, contact_anderson.c). Without weakening, if Newton fails: the fixed point g = mu lambda_N of Tresca
+   steps from the frictionless multipliers, then, after -contact_friction_max_it steps, Coulomb as one LCP by
+   Lemke's method (contact_lemke.c), and if that ends on a ray the step fails with an error. With weakening the
+   step's mu(v) can have no attracting solution (the fixed point's gain above 1, docs/friction.md section 3): if
+   Newton fails both ways, mu at the last step's slip speeds is used for the step. Each fallback is counted: the
+   CSV's coulomb_fallback (1 Tresca passes, 2 Lemke, 3 mu of the last step), one line at the end of the run. */
 #include "contact_impl.h"
 
 struct _n_RollerContactFriction {
-  PetscReal        mu, mu_s, v_c;
-  RollerContactLCP box;                                                           /* the Tresca dual, sized 2 nc */
-  PetscInt        *state;                                                         /* 2 nc: its active bounds, warm start of the next Tresca step */
-  PetscReal       *lam_n;                                                         /* nc: lambda_N of the last iterate */
-  PetscReal       *mu_n;                                                          /* nc: mu(v) of the candidates at the last iterate */
-  PetscReal       *x;                                                             /* 2 nc: the box QP's solution */
-  PetscInt        *node_state;                                                    /* nc: 0 off the sheet, 1 stick, 2 slip, of the accepted step */
-  PetscReal       *M, *q, *z;                                                     /* Lemke's LCP of 4 m unknowns (allocated when first needed, for lemke_cap) */
-  PetscInt         lemke_cap, its, lemke_steps, fallback, steps, newton_failures; /* the last solve's fallback; the run's solves, Newton failures */
+  PetscReal             mu, mu_s, v_c;
+  RollerContactLCP      box;                                                                         /* the Tresca dual, sized 2 nc */
+  PetscInt             *state;                                                                       /* 2 nc: its active bounds, warm start of the next Tresca step */
+  PetscReal            *lam_n;                                                                       /* nc: lambda_N of the last iterate */
+  PetscReal            *mu_n;                                                                        /* nc: mu(v) of the candidates at the last iterate */
+  PetscReal            *x;                                                                           /* 2 nc: the box QP's solution */
+  PetscInt             *node_state;                                                                  /* nc: 0 off the sheet, 1 stick, 2 slip, of the accepted step */
+  PetscReal            *g, *y;                                                                       /* 2 nc: a fixed point's image (lambda_N, mu(v)) and its iterate */
+  RollerContactAnderson aa;                                                                          /* the acceleration of the fixed points on mu(v) and (lambda_N, mu) */
+  PetscReal            *M, *q, *z;                                                                   /* Lemke's LCP of 4 m unknowns (allocated when first needed, for lemke_cap) */
+  PetscInt              lemke_cap, its, lemke_steps, lagged_steps, fallback, steps, newton_failures; /* the last solve's fallback; the run's solves, Newton failures, Lemke's, lagged mu */
 };
 
 /* mu(|v|) = mu + (mu_s - mu) exp(-|v| / v_c), constant mu without -friction_decay (v_c = 0); *dmu its derivative
@@ -54,7 +60,8 @@ PetscErrorCode RollerContactFrictionCreate(Roller ctx, RollerContact c)
   fr->mu_s = ctx->obstacle.friction_static;
   fr->v_c  = ctx->obstacle.friction_decay;
   PetscCall(RollerContactBoxQPCreate(2 * nc, &fr->box));
-  PetscCall(PetscMalloc5(2 * nc, &fr->state, nc, &fr->lam_n, nc, &fr->mu_n, 2 * nc, &fr->x, nc, &fr->node_state));
+  PetscCall(PetscMalloc7(2 * nc, &fr->state, nc, &fr->lam_n, nc, &fr->mu_n, 2 * nc, &fr->x, nc, &fr->node_state, 2 * nc, &fr->g, 2 * nc, &fr->y));
+  PetscCall(RollerContactAndersonCreate(2 * nc, 5, &fr->aa));
   PetscCall(PetscArrayzero(fr->node_state, nc));
   PetscCall(PetscMalloc1(nc, &c->acc.result.lambda_t));
   PetscCall(PetscArrayzero(c->acc.result.lambda_t, nc));
@@ -69,10 +76,11 @@ PetscErrorCode RollerContactFrictionDestroy(MPI_Comm comm, RollerContactFriction
 
   PetscFunctionBeginUser;
   if (!fr) PetscFunctionReturn(0);
-  if (fr->newton_failures || fr->lemke_steps)
-    PetscCall(PetscPrintf(comm, "friction: of %" PetscInt_FMT " Coulomb solves, the semismooth Newton method failed in %" PetscInt_FMT " (Tresca passes took over) and Lemke's method was needed in %" PetscInt_FMT "\n", fr->steps, fr->newton_failures, fr->lemke_steps));
+  if (fr->newton_failures || fr->lemke_steps || fr->lagged_steps)
+    PetscCall(PetscPrintf(comm, "friction: of %" PetscInt_FMT " Coulomb solves, the semismooth Newton method failed in %" PetscInt_FMT "; Lemke's method was needed in %" PetscInt_FMT "; mu of the last step's slip speeds was used in %" PetscInt_FMT " (mu(v) did not settle); the others of those by Tresca passes (the CSV's coulomb_fallback)\n", fr->steps, fr->newton_failures, fr->lemke_steps, fr->lagged_steps));
   PetscCall(RollerContactBoxQPDestroy(&fr->box));
-  PetscCall(PetscFree5(fr->state, fr->lam_n, fr->mu_n, fr->x, fr->node_state));
+  PetscCall(PetscFree7(fr->state, fr->lam_n, fr->mu_n, fr->x, fr->node_state, fr->g, fr->y));
+  PetscCall(RollerContactAndersonDestroy(&fr->aa));
   PetscCall(PetscFree3(fr->M, fr->q, fr->z));
   PetscCall(PetscFree(fr));
   *friction = NULL;
@@ -187,34 +195,81 @@ static PetscErrorCode FrictionData(Roller ctx, RollerContact c, const PetscReal 
   PetscFunctionReturn(0);
 }
 
-/* The slips of the iterate fr->x (into fr->box.w), mu(v) at them; the largest change of lambda_N (of lam_n) and of
-   mu, and the largest lambda_N; with accept the iterate becomes lam_n, and mu_n moves by omega towards mu(v). */
-static PetscErrorCode UpdateMu(RollerContactFriction fr, PetscInt m, PetscReal dt, PetscReal *change, PetscReal *lmax, PetscReal *dmu, PetscBool accept, PetscReal omega)
+/* The slips of the iterate fr->x (into fr->box.w) and the fixed point's image g = (lambda_N, mu(v)) (into fr->g); the
+   largest change of lambda_N (against lam_n) and of mu (against mu_n), and the largest lambda_N. */
+static void UpdateMu(RollerContactFriction fr, PetscInt m, PetscReal dt, PetscReal *change, PetscReal *lmax, PetscReal *dmu)
 {
-  PetscFunctionBeginUser;
   RollerContactLCPSlack(&fr->box, 2 * m, fr->x, fr->box.w);
   *change = *lmax = *dmu = 0.0;
   for (PetscInt a = 0; a < m; ++a) {
-    const PetscReal mu = FrictionCoefficient(fr, PetscAbsReal(fr->box.w[m + a]) / (2.0 * dt));
+    fr->g[a]     = fr->x[a];
+    fr->g[m + a] = FrictionCoefficient(fr, PetscAbsReal(fr->box.w[m + a]) / (2.0 * dt));
+    *change      = PetscMax(*change, PetscAbsReal(fr->x[a] - fr->lam_n[a]));
+    *lmax        = PetscMax(*lmax, fr->x[a]);
+    *dmu         = PetscMax(*dmu, PetscAbsReal(fr->g[m + a] - fr->mu_n[a]));
+  }
+}
 
-    *change = PetscMax(*change, PetscAbsReal(fr->x[a] - fr->lam_n[a]));
-    *lmax   = PetscMax(*lmax, fr->x[a]);
-    *dmu    = PetscMax(*dmu, PetscAbsReal(mu - fr->mu_n[a]));
-    if (accept) {
-      fr->lam_n[a] = fr->x[a];
-      fr->mu_n[a]  = fr->mu_n[a] + omega * (mu - fr->mu_n[a]);
-    }
+/* The next iterate of a fixed point from its image fr->g (UpdateMu), by Anderson's step: of (lambda_N, mu) (the
+   Tresca steps: with_lambda) or of mu alone (about Coulomb solves); lambda_N >= 0 and mu within the law's range. */
+static PetscErrorCode NextIterate(RollerContactFriction fr, PetscInt m, PetscBool with_lambda)
+{
+  const PetscReal lo = PetscMin(fr->mu, fr->mu_s), hi = PetscMax(fr->mu, fr->mu_s);
+  const PetscInt  o = with_lambda ? m : 0;
+
+  PetscFunctionBeginUser;
+  if (with_lambda) PetscCall(PetscArraycpy(fr->y, fr->lam_n, m));
+  PetscCall(PetscArraycpy(fr->y + o, fr->mu_n, m));
+  PetscCall(RollerContactAndersonStep(&fr->aa, fr->y, fr->g + m - o));
+  for (PetscInt a = 0; a < m; ++a) {
+    if (with_lambda) fr->lam_n[a] = PetscMax(0.0, fr->y[a]);
+    fr->mu_n[a] = PetscMin(PetscMax(fr->y[o + a], lo), hi);
   }
   PetscFunctionReturn(0);
 }
 
-/* Coulomb by the semismooth Newton method (contact_coulomb.c) from the frictionless multipliers, repeated while
-   mu(v) changes (velocity weakening); *done false if it fails (fr->x, lam_n, mu_n are then reset for the fixed
-   point). */
-static PetscErrorCode CoulombNewton(Roller ctx, RollerContact c, PetscInt m, PetscBool *done)
+/* The last fallback with -friction_decay: mu at the slip speeds of the last step, v = |Delta_1 s|/dt over
+   [t_{k-2}, t_{k-1}] (xi^{k-1} = state.cur, xi^{k-2} = state.prev, gathered in c->nodes.red2 by FrictionData), into
+   mu_n: the weakening lagged by one step. Where the step's own mu(v) has no attracting solution (the fixed point's
+   gain above 1: the steep weakening makes the step's problem non-unique, docs/friction.md section 3), this picks
+   the one continuous with the last step; it is a function of the state, so a restart repeats it. */
+static PetscErrorCode LaggedMu(Roller ctx, RollerContact c, PetscInt m)
 {
   RollerContactFriction fr = c->friction;
+  const PetscReal       t = c->step.t, dt = ctx->ts.dt, *xc = c->nodes.xc;
+  const PetscScalar    *u1, *u2;
+  PetscReal             n1[2], n2[2], g1, g2, dX;
+
+  PetscFunctionBeginUser;
+  RollerContactObstacleAt(ctx, t - dt, n1, &g1);
+  RollerContactObstacleAt(ctx, t - 2.0 * dt, n2, &g2);
+  dX = RollerSheetPosition(ctx, t - dt) - RollerSheetPosition(ctx, t - 2.0 * dt);
+  PetscCall(RollerContactGather(c, ctx->state.cur, c->nodes.red1));
+  PetscCall(VecGetArrayRead(c->nodes.red1, &u1));
+  PetscCall(VecGetArrayRead(c->nodes.red2, &u2));
+  for (PetscInt a = 0; a < m; ++a) {
+    const PetscInt  i  = c->step.cand[a];
+    const PetscReal s1 = (xc[2 * i] + PetscRealPart(u1[2 * i])) * n1[1] - (xc[2 * i + 1] + PetscRealPart(u1[2 * i + 1])) * n1[0] - ((xc[2 * i] + PetscRealPart(u2[2 * i])) * n2[1] - (xc[2 * i + 1] + PetscRealPart(u2[2 * i + 1])) * n2[0]) - dX;
+
+    fr->mu_n[a] = FrictionCoefficient(fr, PetscAbsReal(s1) / dt);
+  }
+  PetscCall(VecRestoreArrayRead(c->nodes.red1, &u1));
+  PetscCall(VecRestoreArrayRead(c->nodes.red2, &u2));
+  PetscFunctionReturn(0);
+}
+
+/* Coulomb by the semismooth Newton method (contact_coulomb.c) from the frictionless multipliers, with mu(v) of the
+   velocity weakening linearized inside it. Where that fails (the weakening's slope makes the iteration stall at
+   a small slip: docs/friction.md section 3), mu is frozen in each Newton solve and iterated about them, accelerated
+   (NextIterate). *done false if both fail (fr->x, lam_n, mu_n are then reset for the fixed point). */
+static PetscErrorCode CoulombNewton(Roller ctx, RollerContact c, PetscInt m, PetscBool *done)
+{
+  RollerContactFriction fr     = c->friction;
+  const PetscReal       law[4] = {fr->mu, fr->mu_s, fr->v_c, 2.0 * ctx->ts.dt}, frozen[4] = {fr->mu, fr->mu_s, 0.0, 2.0 * ctx->ts.dt};
+  const PetscReal       tol = c->opt.friction_rtol * fr->mu_s;
   PetscReal             change, lmax, dmu;
+  PetscInt              its;
+  PetscBool             converged;
 
   PetscFunctionBeginUser;
   *done = PETSC_FALSE;
@@ -222,26 +277,65 @@ static PetscErrorCode CoulombNewton(Roller ctx, RollerContact c, PetscInt m, Pet
     fr->x[a]     = fr->lam_n[a];
     fr->x[m + a] = 0.0;
   }
-  for (PetscInt pass = 0; pass < c->opt.friction_max_it; ++pass) {
-    PetscInt  its;
-    PetscBool converged;
-
-    const PetscReal law[4] = {fr->mu, fr->mu_s, fr->v_c, 2.0 * ctx->ts.dt};
-
-    PetscCall(RollerContactCoulombNewton(&fr->box, m, law, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
-    fr->its += its;
-    if (!converged) break;
-    PetscCall(UpdateMu(fr, m, ctx->ts.dt, &change, &lmax, &dmu, PETSC_FALSE, 1.0));
-    if (dmu <= c->opt.friction_rtol * fr->mu_s) {
+  if (fr->v_c > 0.0) PetscCall(LaggedMu(ctx, c, m)); /* the first iterate's mu: of the last step's slip speeds */
+  PetscCall(RollerContactCoulombNewton(&fr->box, m, law, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
+  fr->its += its;
+  if (converged) {
+    UpdateMu(fr, m, ctx->ts.dt, &change, &lmax, &dmu);
+    if (dmu <= tol) {
       *done = PETSC_TRUE;
       PetscFunctionReturn(0);
     }
-    PetscCall(UpdateMu(fr, m, ctx->ts.dt, &change, &lmax, &dmu, PETSC_TRUE, 1.0));
+  }
+  if (fr->v_c > 0.0) {
+    PetscCall(PetscInfo(NULL, "Friction at t = %g: the semismooth Newton method with mu(v) inside failed after %" PetscInt_FMT " iterations; mu frozen per solve, accelerated\n", (double)c->step.t, its));
+    RollerContactAndersonReset(&fr->aa, m);
+    PetscCall(LaggedMu(ctx, c, m));
+    for (PetscInt a = 0; a < m; ++a) {
+      fr->x[a]     = fr->lam_n[a];
+      fr->x[m + a] = 0.0;
+    }
+    for (PetscInt pass = 0; pass < c->opt.friction_max_it; ++pass) {
+      PetscCall(RollerContactCoulombNewton(&fr->box, m, frozen, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
+      fr->its += its;
+      if (!converged) break;
+      UpdateMu(fr, m, ctx->ts.dt, &change, &lmax, &dmu);
+      PetscCall(PetscInfo(NULL, "Friction at t = %g: pass %" PetscInt_FMT " (%" PetscInt_FMT " Newton its): change of mu %g\n", (double)c->step.t, pass, its, (double)dmu));
+      if (dmu <= tol) {
+        *done = PETSC_TRUE;
+        PetscFunctionReturn(0);
+      }
+      PetscCall(NextIterate(fr, m, PETSC_FALSE));
+    }
   }
   PetscCall(PetscInfo(NULL, "Friction at t = %g: the semismooth Newton method failed after %" PetscInt_FMT " iterations; fixed point of Tresca steps\n", (double)c->step.t, fr->its));
   fr->newton_failures++;
   fr->fallback = 1;
   for (PetscInt a = 0; a < m; ++a) fr->mu_n[a] = FrictionCoefficient(fr, 0.0);
+  PetscFunctionReturn(0);
+}
+
+/* Coulomb with mu of the last step's slip speeds (LaggedMu), from the frictionless multipliers lam: by the semismooth
+   Newton method, else by one Lemke solve (fallback 3). */
+static PetscErrorCode LaggedSolve(Roller ctx, RollerContact c, PetscInt m, const PetscReal lam[])
+{
+  RollerContactFriction fr        = c->friction;
+  const PetscReal       frozen[4] = {fr->mu, fr->mu_s, 0.0, 2.0 * ctx->ts.dt};
+  PetscInt              its;
+  PetscBool             converged;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscInfo(NULL, "Friction at t = %g: mu of the last step's slip speeds\n", (double)c->step.t));
+  fr->lagged_steps++;
+  fr->fallback = 3;
+  PetscCall(LaggedMu(ctx, c, m));
+  for (PetscInt a = 0; a < m; ++a) {
+    fr->x[a]     = lam[a];
+    fr->x[m + a] = 0.0;
+  }
+  PetscCall(RollerContactCoulombNewton(&fr->box, m, frozen, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
+  fr->its += its;
+  if (!converged) PetscCall(CoulombLemke(fr, m, c->step.t, fr->x));
   PetscFunctionReturn(0);
 }
 
@@ -277,8 +371,13 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
 
     PetscCall(CoulombNewton(ctx, c, m, &done));
     if (done) goto accept;
+    if (fr->v_c > 0.0) { /* the fixed point on mu(v) failed inside Newton: the passes would meet the same map */
+      PetscCall(LaggedSolve(ctx, c, m, lcp->lam));
+      goto accept;
+    }
     for (PetscInt a = 0; a < m; ++a) fr->lam_n[a] = lcp->lam[a]; /* the fixed point starts afresh */
   }
+  RollerContactAndersonReset(&fr->aa, m2);
   for (PetscInt it = 1;; ++it) {
     PetscInt its = 0;
 
@@ -294,16 +393,26 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
     }
     fr->its++;
     res->its += its;
-    PetscCall(UpdateMu(fr, m, dt, &change, &lmax, &dmu, PETSC_TRUE, it > 5 ? 0.5 : 1.0)); /* damped once the passes stall */
+    UpdateMu(fr, m, dt, &change, &lmax, &dmu);
     PetscCall(PetscInfo(NULL, "Friction at t = %g: iterate %" PetscInt_FMT " (%" PetscInt_FMT " QP its): change of lambda_N %g of %g, of mu %g\n", (double)t, it, its, (double)change, (double)lmax, (double)dmu));
-    if (change <= c->opt.friction_rtol * lmax && dmu <= c->opt.friction_rtol * fr->mu_s) break;
+    if (change <= c->opt.friction_rtol * lmax && dmu <= c->opt.friction_rtol * fr->mu_s) {
+      PetscCall(PetscArraycpy(fr->lam_n, fr->x, m));
+      PetscCall(PetscArraycpy(fr->mu_n, fr->g + m, m));
+      break;
+    }
+    PetscCall(NextIterate(fr, m, PETSC_TRUE));
     if (it >= c->opt.friction_max_it) {
-      PetscCheck(!lemke, PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED, "Coulomb friction at t = %g: mu(v) did not settle in %" PetscInt_FMT " Lemke solves (change of mu %g); try a smaller -ts_dt or a larger -friction_decay", (double)t, it, (double)dmu);
+      if (lemke) { /* mu(v) did not settle: Coulomb with mu of the last step's slip speeds */
+        PetscCall(PetscInfo(NULL, "Friction at t = %g: mu(v) did not settle in %" PetscInt_FMT " Lemke solves (change of mu %g)\n", (double)t, it, (double)dmu));
+        PetscCall(LaggedSolve(ctx, c, m, lcp->lam));
+        goto accept;
+      }
       PetscCall(PetscInfo(NULL, "Friction at t = %g: no fixed point in %" PetscInt_FMT " Tresca steps (change %g of %g), Lemke's method\n", (double)t, it, (double)change, (double)lmax));
       lemke = PETSC_TRUE;
       fr->lemke_steps++;
       fr->fallback = 2;
       it           = 0;
+      RollerContactAndersonReset(&fr->aa, m2);
     }
   }
   if (!lemke) { /* the last Tresca step bounded lambda_T by mu lambda_N of the iterate before (equal to rtol): a node

@@ -13,6 +13,7 @@
    contact_boxqp.c       the Tresca step's dual: a small dense box-constrained QP (active set, TAO, SNES VI)
    contact_coulomb.c     Coulomb directly: the primal-dual active-set (semismooth Newton) method, the default
    contact_lemke.c       Coulomb as one LCP, Lemke's method (the last fallback)
+   contact_anderson.c    Anderson acceleration of the friction's fixed points (mu(v), the Tresca steps)
    The registry and the solvers (each file one solver, using the core):
    contact_registry.c    RollerContactSolverRegister, RegisterAll, the solver object's create/setup/destroy
    contact_condensed.c   the default: the QP condensed onto the multipliers of the candidates with
@@ -231,6 +232,20 @@ PETSC_INTERN void           RollerContactLCPSlack(RollerContactLCP *, PetscInt, 
 PETSC_INTERN PetscErrorCode RollerContactBoxQPCreate(PetscInt, RollerContactLCP *);
 PETSC_INTERN PetscErrorCode RollerContactBoxQPSolve(RollerContactLCP *, RollerBoxQPType, PetscInt, PetscReal, PetscReal, PetscInt[], PetscReal[], PetscInt *);
 PETSC_INTERN PetscErrorCode RollerContactBoxQPDestroy(RollerContactLCP *);
+
+/* contact_anderson.c: Anderson acceleration of a fixed point x = g(x) of up to cap unknowns */
+#define ROLLER_ANDERSON_MAX 8
+typedef struct {
+  PetscInt   cap, depth, n, k, next; /* capacity, history length, unknowns, stored differences, the next slot */
+  PetscBool  have;                   /* a previous (f, g) is stored */
+  PetscReal  fnorm;                  /* ||f||^2 of the last iterate */
+  PetscReal *dF, *dG, *f, *g;        /* depth x n differences of f = g - x and of g; the last f and g */
+} RollerContactAnderson;
+
+PETSC_INTERN PetscErrorCode RollerContactAndersonCreate(PetscInt, PetscInt, RollerContactAnderson *);
+PETSC_INTERN void           RollerContactAndersonReset(RollerContactAnderson *, PetscInt);
+PETSC_INTERN PetscErrorCode RollerContactAndersonStep(RollerContactAnderson *, PetscReal[], const PetscReal[]);
+PETSC_INTERN PetscErrorCode RollerContactAndersonDestroy(RollerContactAnderson *);
 
 /* contact_coulomb.c: Coulomb of one step by the primal-dual active-set (semismooth Newton) method */
 PETSC_INTERN PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *, PetscInt, const PetscReal[], PetscReal[], PetscReal[], PetscInt, PetscInt *, PetscBool *);
