@@ -15,3 +15,6 @@ roller_test(friction_carter_long friction_carter.py LABELS long ARGS long TIMEOU
 # stick-slip of the roller turned slowly on the resting sheet with velocity-weakening friction, and steady
 # sliding with constant mu (jobs/stickslip.yaml, docs/friction.md section 5.3; two runs of about 4 minutes)
 roller_test(friction_stickslip friction_stickslip.py LABELS long TIMEOUT 1200)
+# the printer roller's 10 ms transient with its steep velocity weakening (jobs/printer_roller.yaml, SI): feeding and
+# the jam, Newton on >= 98 % of the steps, the rest with mu of the last step (docs/friction.md section 3; about 1 min)
+roller_test(friction_printer friction_printer.py LABELS long TIMEOUT 1200)
