@@ -131,9 +131,10 @@ typedef struct {
   PetscBool              degree_set;  /* -degree given (else P3 without -obstacle, P2 with: RollerChooseMeshSize) */
   PetscBool              clamp_outer; /* xi = 0 on Gamma_C too (Theorem 1 setting) */
   RollerCoriolisVelocity coriolis;
-  PetscReal              damping;      /* eta of the DMF functional */
-  PetscBool              static_solve; /* -static: the rest state at the obstacle of t = max_time in one step, A = K */
-  RollerContactMass      contact_mass; /* -contact_mass (model/mass.c) */
+  PetscReal              damping;       /* eta of the DMF functional */
+  PetscBool              static_solve;  /* -static: the rest state at the obstacle of t = max_time in one step, A = K */
+  RollerContactMass      contact_mass;  /* -contact_mass (model/mass.c) */
+  PetscInt               redundant_max; /* on several ranks, step matrices of at most this many unknowns are factored whole on every rank (model/solver.c) */
 } RollerDiscretization;
 
 /* Operators fixed at set-up (model/operators.c): mass M, stiffness K (the step matrices are the time scheme's,

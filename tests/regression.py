@@ -4,7 +4,11 @@
 for the round-off columns kkt_residual and gap_min, and R and alpha on their common displacement scale). The goldens were written
 by this same script with --regenerate before the code's redesign (the compression and rolling ones again when
 those scenes changed their damping from eta = 1 to the rubber's Kelvin-Voigt damping, issue 13, after the
-code itself had reproduced the old ones at tau = 0); a refactoring that changes a result fails here. Usage: regression.py [--regenerate] [--nproc N] (N = 1 or 2; default: the cases of both)."""
+code itself had reproduced the old ones at tau = 0; the np2 ones again when the parallel step solver of these
+small meshes became a factorization held whole on every rank instead of MUMPS (-solver_redundant_max,
+docs/performance.md): the new np2 runs differ from the np1 goldens by at most 8.1e-12 (alpha of compression_P2),
+the MUMPS goldens by 1.7e-12, both round-off of a different elimination order amplified by the contact set); a
+refactoring that changes a result fails here. Usage: regression.py [--regenerate] [--nproc N] (N = 1 or 2; default: the cases of both)."""
 import argparse
 import os
 import shutil
@@ -26,8 +30,9 @@ CONTACT = ["-obstacle_speed", 0.05]
 # order of the parallel reductions), the gap of the nodes in contact is ~1e-18 against the radius 0.5.
 FLOOR = {"kkt_residual": 1.0, "gap_min": 0.5}
 # R and alpha are the mean radial and tangential displacements of the same boundary: one physical scale,
-# the larger of the two. On 2 ranks MUMPS's dynamic scheduling changes the last bits from run to run (the same
-# code gave alpha of compression_P2_np2 within 0 to 3.2e-12 of its own max in 9 runs, where alpha ~ R/10).
+# the larger of the two. On 2 ranks MUMPS's dynamic scheduling changed the last bits from run to run (the same
+# code gave alpha of compression_P2_np2 within 0 to 3.2e-12 of its own max in 9 runs, where alpha ~ R/10); the
+# redundant factorization that these meshes now take on 2 ranks repeats itself bit for bit.
 SHARED_SCALE = {"R": ("R", "alpha"), "alpha": ("R", "alpha")}
 
 

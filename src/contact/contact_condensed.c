@@ -54,22 +54,79 @@ static PetscErrorCode CondensedSetUp(RollerContactSolver s, Roller ctx, RollerCo
   PetscFunctionReturn(0);
 }
 
+/* With a factorization held whole on every rank (PCREDUNDANT, model/solver.c): the columns j = 0..2m of the nodes
+   need[] split over the ranks (j mod size), each solved by the rank's own serial factor (KSPMatSolve on its copy,
+   which has the global numbering), their Gamma_C rows summed onto every rank (the others' columns are zero). */
+static PetscErrorCode CondensedColumnsSplit(Roller ctx, RollerContact c, PC pc, CondensedS *cs, const PetscInt need[], PetscInt m)
+{
+  const PetscInt n = 2 * c->nodes.nc, nb = 64;
+  PetscMPIInt    rank, size;
+  PetscInt       N, mine = 0;
+  KSP            inner;
+  Mat            B, X;
+  PetscReal     *buf;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
+  PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
+  PetscCall(PCRedundantGetKSP(pc, &inner));
+  PetscCall(VecGetSize(ctx->state.cur, &N));
+  for (PetscInt j = rank; j < 2 * m; j += size) ++mine;
+  PetscCall(PetscCalloc1((size_t)n * 2 * m, &buf));
+  for (PetscInt k0 = 0; k0 < mine; k0 += nb) { /* this rank's columns j = rank + size k, in blocks of nb */
+    const PetscInt     mb = PetscMin(nb, mine - k0);
+    const PetscScalar *x;
+    PetscInt           lda;
+
+    PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, N, mb, NULL, &B));
+    PetscCall(MatZeroEntries(B));
+    for (PetscInt kk = 0; kk < mb; ++kk) {
+      const PetscInt j = rank + size * (k0 + kk);
+
+      PetscCall(MatSetValue(B, c->nodes.gidx[need[j / 2]] + j % 2, kk, 1.0, INSERT_VALUES));
+    }
+    PetscCall(MatAssemblyBegin(B, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(B, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatDuplicate(B, MAT_DO_NOT_COPY_VALUES, &X));
+    PetscCall(KSPMatSolve(inner, B, X));
+    PetscCall(MatDenseGetLDA(X, &lda));
+    PetscCall(MatDenseGetArrayRead(X, &x));
+    for (PetscInt kk = 0; kk < mb; ++kk) {
+      const PetscInt j = rank + size * (k0 + kk);
+
+      for (PetscInt i = 0; i < n; ++i) buf[i + (size_t)j * n] = PetscRealPart(x[c->nodes.gidx[i / 2] + i % 2 + (size_t)kk * lda]);
+    }
+    PetscCall(MatDenseRestoreArrayRead(X, &x));
+    PetscCall(MatDestroy(&B));
+    PetscCall(MatDestroy(&X));
+  }
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, buf, (PetscMPIInt)(n * 2 * m), MPIU_REAL, MPIU_SUM, ctx->comm));
+  for (PetscInt j = 0; j < 2 * m; ++j) PetscCall(PetscArraycpy(cs->S + (size_t)(2 * need[j / 2] + j % 2) * n, buf + (size_t)j * n, n));
+  PetscCall(PetscFree(buf));
+  PetscFunctionReturn(0);
+}
+
 /* The columns of the nodes need[0..m) of S = E^T A^{-1} E: A^{-1} applied to the unit vectors of their Gamma_C
    dofs, in blocks of columns with KSPMatSolve on the operator's factorization, each column's Gamma_C entries
-   gathered on every rank; then S symmetrized between the new columns and all computed ones (A is symmetric: the
+   gathered on every rank (or split over the ranks with a factorization held whole on each); then S symmetrized between the new columns and all computed ones (A is symmetric: the
    solver's round-off asymmetry is removed, so that G is symmetric to the last bit). */
 static PetscErrorCode CondensedColumns(Roller ctx, RollerContact c, const RollerStepOperator *op, CondensedS *cs, const PetscInt need[], PetscInt m)
 {
   const PetscInt n = 2 * c->nodes.nc, nb = 64;
   PetscInt       nlocal, rstart, rend;
   PetscLogDouble t0, t1;
+  PC             pc;
+  PetscBool      redundant;
 
   PetscFunctionBeginUser;
   if (m == 0) PetscFunctionReturn(0);
   PetscCall(PetscTime(&t0));
   PetscCall(VecGetLocalSize(ctx->state.cur, &nlocal));
   PetscCall(VecGetOwnershipRange(ctx->state.cur, &rstart, &rend));
-  for (PetscInt j0 = 0; j0 < 2 * m; j0 += nb) {
+  PetscCall(KSPGetPC(op->ksp, &pc));
+  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCREDUNDANT, &redundant));
+  if (redundant) PetscCall(CondensedColumnsSplit(ctx, c, pc, cs, need, m));
+  for (PetscInt j0 = 0; !redundant && j0 < 2 * m; j0 += nb) {
     const PetscInt mb = PetscMin(nb, 2 * m - j0);
     Mat            B, X;
 

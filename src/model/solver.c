@@ -20,6 +20,37 @@ PetscErrorCode RollerDirectSolverDefaults(KSP ksp, PCType type)
   PetscFunctionReturn(0);
 }
 
+/* The parallel layout of a step matrix's direct solve: up to -solver_redundant_max unknowns every rank factors the
+   whole matrix (PCREDUNDANT, one copy per rank, the serial factorization with nested dissection). A step's solve then
+   costs one serial solve and two scatters, and the contact condensation's columns are split over the ranks
+   (contact_condensed.c); MUMPS's distributed triangular solves cost more than they save on such sizes (measured on
+   the rolling scene, 20k unknowns: its 25 blocks of S columns took 2-5 times longer on 2 ranks than on one,
+   docs/performance.md). Larger matrices keep MUMPS, whose factorization scales. */
+static PetscErrorCode StepSolverLayout(Roller ctx, RollerStepOperator *op, PCType type)
+{
+  PetscMPIInt size;
+  PetscInt    N;
+  PC          pc, ipc;
+  KSP         inner;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
+  PetscCall(MatGetSize(op->A, &N, NULL));
+  if (ctx->ts.view && op->id == 0 && size > 1)
+    PetscCall(PetscPrintf(ctx->comm, "roller: step solver on %d ranks: %s (%" PetscInt_FMT " unknowns %s -solver_redundant_max %" PetscInt_FMT ")\n", size, N > ctx->disc.redundant_max ? "MUMPS, the factorization distributed" : "the whole matrix factored on every rank (PCREDUNDANT, serial nested dissection), the contact condensation's columns split over the ranks", N,
+                          N > ctx->disc.redundant_max ? ">" : "<=", ctx->disc.redundant_max));
+  if (size == 1 || N > ctx->disc.redundant_max) PetscFunctionReturn(0);
+  PetscCall(KSPGetPC(op->ksp, &pc));
+  PetscCall(PCSetType(pc, PCREDUNDANT));
+  PetscCall(PCRedundantSetNumber(pc, size));
+  PetscCall(PCRedundantGetKSP(pc, &inner));
+  PetscCall(KSPSetType(inner, KSPPREONLY));
+  PetscCall(KSPGetPC(inner, &ipc));
+  PetscCall(PCSetType(ipc, type));
+  PetscCall(PCFactorSetMatOrderingType(ipc, MATORDERINGND));
+  PetscFunctionReturn(0);
+}
+
 /* Cholesky of A (LU with the centred Coriolis term: A is then non-symmetric), made once; -ksp_type cg
    -pc_type gamg (the rigid-body near-null space is attached) or hypre for large meshes. Every operator reads the
    same options (its KSP has no prefix), so that -ksp_type and -pc_factor_* act on all of a scheme's matrices. */
@@ -35,6 +66,7 @@ static PetscErrorCode StepSolverSetUp(Roller ctx, RollerStepOperator *op)
   PetscCall(KSPCreate(ctx->comm, &op->ksp));
   PetscCall(KSPSetOperators(op->ksp, op->A, op->A));
   PetscCall(RollerDirectSolverDefaults(op->ksp, op->G ? PCLU : PCCHOLESKY));
+  PetscCall(StepSolverLayout(ctx, op, op->G ? PCLU : PCCHOLESKY));
   PetscCall(KSPSetTolerances(op->ksp, 1e-12, 1e-50, PETSC_DEFAULT, PETSC_DEFAULT));
   PetscCall(KSPSetFromOptions(op->ksp));
   /* an iterative solver starts from the scheme's prediction of the new level */
