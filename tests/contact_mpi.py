@@ -1,6 +1,8 @@
 """1 rank and 2 ranks give the same contact time series (issue 4): rolling contact (the contact set moves
 across the partition boundary) on a coarse mesh; every CSV column agrees to 1e-9 relative to its range and
-the number of contact nodes is identical at every step. Both the condensed default and SNES VI.
+the number of contact nodes is identical at every step. Both the condensed default and SNES VI, and the condensed
+solver with each parallel layout of the step factorization: the whole matrix on every rank (the default for this
+size, the condensation's columns split over the ranks) and MUMPS (-solver_redundant_max 0).
 
 Discretization: rank independence must hold for whatever users run, so this is Roller's default (P2 curved,
 extrapolated Coriolis velocity, dt from -ts_phase_error: 0.0054 for t <= 2, 0.0109 for t <= 0.5) on the
@@ -12,10 +14,10 @@ from rollertest import Checker, read_csv, run
 c = Checker("contact_mpi")
 base = ["-mesh_h", 0.05, "-obstacle", "-obstacle_speed", 0.05, "-obstacle_depth", 0.01, "-omega", 0.3141592653589793,
         "-damping", 1, "-quiet"]
-for solver, t_end in (("condensed", 2.0), ("vi", 0.5)):
+for solver, t_end, extra in (("condensed", 2.0, []), ("vi", 0.5, []), ("condensed_mumps", 2.0, ["-solver_redundant_max", 0])):
     d = []
     for n in (1, 2):
-        run(base + ["-contact_solver", solver, "-ts_max_time", t_end, "-monitor_csv", f"{solver}_np{n}.csv"], nproc=n)
+        run(base + ["-contact_solver", solver.split("_")[0], "-ts_max_time", t_end, "-monitor_csv", f"{solver}_np{n}.csv"] + extra, nproc=n)
         d.append(read_csv(f"{solver}_np{n}.csv"))
     c.check(max(d[0]["contact_nodes"]) > 0, f"{solver}: contact happens (up to {int(max(d[0]['contact_nodes']))} nodes)")
     c.check(np.array_equal(d[0]["contact_nodes"], d[1]["contact_nodes"]), f"{solver}: the same number of contact nodes at every step on 1 and 2 ranks")
