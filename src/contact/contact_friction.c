@@ -16,20 +16,6 @@
    CSV's coulomb_fallback (1 Tresca passes, 2 Lemke, 3 mu of the last step), one line at the end of the run. */
 #include "contact_impl.h"
 
-struct _n_RollerContactFriction {
-  PetscReal             mu, mu_s, v_c;
-  RollerContactLCP      box;                                                                         /* the Tresca dual, sized 2 nc */
-  PetscInt             *state;                                                                       /* 2 nc: its active bounds, warm start of the next Tresca step */
-  PetscReal            *lam_n;                                                                       /* nc: lambda_N of the last iterate */
-  PetscReal            *mu_n;                                                                        /* nc: mu(v) of the candidates at the last iterate */
-  PetscReal            *x;                                                                           /* 2 nc: the box QP's solution */
-  PetscInt             *node_state;                                                                  /* nc: 0 off the sheet, 1 stick, 2 slip, of the accepted step */
-  PetscReal            *g, *y;                                                                       /* 2 nc: a fixed point's image (lambda_N, mu(v)) and its iterate */
-  RollerContactAnderson aa;                                                                          /* the acceleration of the fixed points on mu(v) and (lambda_N, mu) */
-  PetscReal            *M, *q, *z;                                                                   /* Lemke's LCP of 4 m unknowns (allocated when first needed, for lemke_cap) */
-  PetscInt              lemke_cap, its, lemke_steps, lagged_steps, fallback, steps, newton_failures; /* the last solve's fallback; the run's solves, Newton failures, Lemke's, lagged mu */
-};
-
 /* mu(|v|) = mu + (mu_s - mu) exp(-|v| / v_c), constant mu without -friction_decay (v_c = 0); *dmu its derivative
    in |v| (if dmu) */
 PetscReal RollerFrictionLaw(PetscReal mu, PetscReal mu_s, PetscReal v_c, PetscReal v, PetscReal *dmu)
@@ -76,8 +62,9 @@ PetscErrorCode RollerContactFrictionDestroy(MPI_Comm comm, RollerContactFriction
 
   PetscFunctionBeginUser;
   if (!fr) PetscFunctionReturn(0);
-  if (fr->newton_failures || fr->lemke_steps || fr->lagged_steps)
-    PetscCall(PetscPrintf(comm, "friction: of %" PetscInt_FMT " Coulomb solves, the semismooth Newton method failed in %" PetscInt_FMT "; Lemke's method was needed in %" PetscInt_FMT "; mu of the last step's slip speeds was used in %" PetscInt_FMT " (mu(v) did not settle); the others of those by Tresca passes (the CSV's coulomb_fallback)\n", fr->steps, fr->newton_failures, fr->lemke_steps, fr->lagged_steps));
+  if (fr->count.newton_failures || fr->count.lemke_steps || fr->count.lagged_steps)
+    PetscCall(PetscPrintf(comm, "friction: of %" PetscInt_FMT " Coulomb solves, the semismooth Newton method failed in %" PetscInt_FMT "; Lemke's method was needed in %" PetscInt_FMT "; mu of the last step's slip speeds was used in %" PetscInt_FMT " (mu(v) did not settle); the others of those by Tresca passes (the CSV's coulomb_fallback)\n",
+                          fr->count.steps, fr->count.newton_failures, fr->count.lemke_steps, fr->count.lagged_steps));
   PetscCall(RollerContactBoxQPDestroy(&fr->box));
   PetscCall(PetscFree7(fr->state, fr->lam_n, fr->mu_n, fr->x, fr->node_state, fr->g, fr->y));
   PetscCall(RollerContactAndersonDestroy(&fr->aa));
@@ -195,127 +182,7 @@ static PetscErrorCode FrictionData(Roller ctx, RollerContact c, const PetscReal 
   PetscFunctionReturn(0);
 }
 
-/* The slips of the iterate fr->x (into fr->box.w) and the fixed point's image g = (lambda_N, mu(v)) (into fr->g); the
-   largest change of lambda_N (against lam_n) and of mu (against mu_n), and the largest lambda_N. */
-static void UpdateMu(RollerContactFriction fr, PetscInt m, PetscReal dt, PetscReal *change, PetscReal *lmax, PetscReal *dmu)
-{
-  RollerContactLCPSlack(&fr->box, 2 * m, fr->x, fr->box.w);
-  *change = *lmax = *dmu = 0.0;
-  for (PetscInt a = 0; a < m; ++a) {
-    fr->g[a]     = fr->x[a];
-    fr->g[m + a] = FrictionCoefficient(fr, PetscAbsReal(fr->box.w[m + a]) / (2.0 * dt));
-    *change      = PetscMax(*change, PetscAbsReal(fr->x[a] - fr->lam_n[a]));
-    *lmax        = PetscMax(*lmax, fr->x[a]);
-    *dmu         = PetscMax(*dmu, PetscAbsReal(fr->g[m + a] - fr->mu_n[a]));
-  }
-}
-
-/* The next iterate of a fixed point from its image fr->g (UpdateMu), by Anderson's step: of (lambda_N, mu) (the
-   Tresca steps: with_lambda) or of mu alone (about Coulomb solves); lambda_N >= 0 and mu within the law's range. */
-static PetscErrorCode NextIterate(RollerContactFriction fr, PetscInt m, PetscBool with_lambda)
-{
-  const PetscReal lo = PetscMin(fr->mu, fr->mu_s), hi = PetscMax(fr->mu, fr->mu_s);
-  const PetscInt  o = with_lambda ? m : 0;
-
-  PetscFunctionBeginUser;
-  if (with_lambda) PetscCall(PetscArraycpy(fr->y, fr->lam_n, m));
-  PetscCall(PetscArraycpy(fr->y + o, fr->mu_n, m));
-  PetscCall(RollerContactAndersonStep(&fr->aa, fr->y, fr->g + m - o));
-  for (PetscInt a = 0; a < m; ++a) {
-    if (with_lambda) fr->lam_n[a] = PetscMax(0.0, fr->y[a]);
-    fr->mu_n[a] = PetscMin(PetscMax(fr->y[o + a], lo), hi);
-  }
-  PetscFunctionReturn(0);
-}
-
-/* The last fallback with -friction_decay: mu at the slip speeds of the last step, v = |Delta_1 s|/dt over
-   [t_{k-2}, t_{k-1}] (xi^{k-1} = state.cur, xi^{k-2} = state.prev, gathered in c->nodes.red2 by FrictionData), into
-   mu_n: the weakening lagged by one step. Where the step's own mu(v) has no attracting solution (the fixed point's
-   gain above 1: the steep weakening makes the step's problem non-unique, docs/friction.md section 3), this picks
-   the one continuous with the last step; it is a function of the state, so a restart repeats it. */
-static PetscErrorCode LaggedMu(Roller ctx, RollerContact c, PetscInt m)
-{
-  RollerContactFriction fr = c->friction;
-  const PetscReal       t = c->step.t, dt = ctx->ts.dt, *xc = c->nodes.xc;
-  const PetscScalar    *u1, *u2;
-  PetscReal             n1[2], n2[2], g1, g2, dX;
-
-  PetscFunctionBeginUser;
-  RollerContactObstacleAt(ctx, t - dt, n1, &g1);
-  RollerContactObstacleAt(ctx, t - 2.0 * dt, n2, &g2);
-  dX = RollerSheetPosition(ctx, t - dt) - RollerSheetPosition(ctx, t - 2.0 * dt);
-  PetscCall(RollerContactGather(c, ctx->state.cur, c->nodes.red1));
-  PetscCall(VecGetArrayRead(c->nodes.red1, &u1));
-  PetscCall(VecGetArrayRead(c->nodes.red2, &u2));
-  for (PetscInt a = 0; a < m; ++a) {
-    const PetscInt  i  = c->step.cand[a];
-    const PetscReal s1 = (xc[2 * i] + PetscRealPart(u1[2 * i])) * n1[1] - (xc[2 * i + 1] + PetscRealPart(u1[2 * i + 1])) * n1[0] - ((xc[2 * i] + PetscRealPart(u2[2 * i])) * n2[1] - (xc[2 * i + 1] + PetscRealPart(u2[2 * i + 1])) * n2[0]) - dX;
-
-    fr->mu_n[a] = FrictionCoefficient(fr, PetscAbsReal(s1) / dt);
-  }
-  PetscCall(VecRestoreArrayRead(c->nodes.red1, &u1));
-  PetscCall(VecRestoreArrayRead(c->nodes.red2, &u2));
-  PetscFunctionReturn(0);
-}
-
-/* Coulomb by the semismooth Newton method (contact_coulomb.c) from the frictionless multipliers, with mu(v) of the
-   velocity weakening linearized inside it. Where that fails (the weakening's slope makes the iteration stall at
-   a small slip: docs/friction.md section 3), mu is frozen in each Newton solve and iterated about them, accelerated
-   (NextIterate). *done false if both fail (fr->x, lam_n, mu_n are then reset for the fixed point). */
-static PetscErrorCode CoulombNewton(Roller ctx, RollerContact c, PetscInt m, PetscBool *done)
-{
-  RollerContactFriction fr     = c->friction;
-  const PetscReal       law[4] = {fr->mu, fr->mu_s, fr->v_c, 2.0 * ctx->ts.dt}, frozen[4] = {fr->mu, fr->mu_s, 0.0, 2.0 * ctx->ts.dt};
-  const PetscReal       tol = c->opt.friction_rtol * fr->mu_s;
-  PetscReal             change, lmax, dmu;
-  PetscInt              its;
-  PetscBool             converged;
-
-  PetscFunctionBeginUser;
-  *done = PETSC_FALSE;
-  for (PetscInt a = 0; a < m; ++a) {
-    fr->x[a]     = fr->lam_n[a];
-    fr->x[m + a] = 0.0;
-  }
-  if (fr->v_c > 0.0) PetscCall(LaggedMu(ctx, c, m)); /* the first iterate's mu: of the last step's slip speeds */
-  PetscCall(RollerContactCoulombNewton(&fr->box, m, law, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
-  fr->its += its;
-  if (converged) {
-    UpdateMu(fr, m, ctx->ts.dt, &change, &lmax, &dmu);
-    if (dmu <= tol) {
-      *done = PETSC_TRUE;
-      PetscFunctionReturn(0);
-    }
-  }
-  if (fr->v_c > 0.0) {
-    PetscCall(PetscInfo(NULL, "Friction at t = %g: the semismooth Newton method with mu(v) inside failed after %" PetscInt_FMT " iterations; mu frozen per solve, accelerated\n", (double)c->step.t, its));
-    RollerContactAndersonReset(&fr->aa, m);
-    PetscCall(LaggedMu(ctx, c, m));
-    for (PetscInt a = 0; a < m; ++a) {
-      fr->x[a]     = fr->lam_n[a];
-      fr->x[m + a] = 0.0;
-    }
-    for (PetscInt pass = 0; pass < c->opt.friction_max_it; ++pass) {
-      PetscCall(RollerContactCoulombNewton(&fr->box, m, frozen, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
-      fr->its += its;
-      if (!converged) break;
-      UpdateMu(fr, m, ctx->ts.dt, &change, &lmax, &dmu);
-      PetscCall(PetscInfo(NULL, "Friction at t = %g: pass %" PetscInt_FMT " (%" PetscInt_FMT " Newton its): change of mu %g\n", (double)c->step.t, pass, its, (double)dmu));
-      if (dmu <= tol) {
-        *done = PETSC_TRUE;
-        PetscFunctionReturn(0);
-      }
-      PetscCall(NextIterate(fr, m, PETSC_FALSE));
-    }
-  }
-  PetscCall(PetscInfo(NULL, "Friction at t = %g: the semismooth Newton method failed after %" PetscInt_FMT " iterations; fixed point of Tresca steps\n", (double)c->step.t, fr->its));
-  fr->newton_failures++;
-  fr->fallback = 1;
-  for (PetscInt a = 0; a < m; ++a) fr->mu_n[a] = FrictionCoefficient(fr, 0.0);
-  PetscFunctionReturn(0);
-}
-
-/* Coulomb with mu of the last step's slip speeds (LaggedMu), from the frictionless multipliers lam: by the semismooth
+/* Coulomb with mu of the last step's slip speeds (RollerContactFrictionLaggedMu), from the frictionless multipliers lam: by the semismooth
    Newton method, else by one Lemke solve (fallback 3). */
 static PetscErrorCode LaggedSolve(Roller ctx, RollerContact c, PetscInt m, const PetscReal lam[])
 {
@@ -326,9 +193,9 @@ static PetscErrorCode LaggedSolve(Roller ctx, RollerContact c, PetscInt m, const
 
   PetscFunctionBeginUser;
   PetscCall(PetscInfo(NULL, "Friction at t = %g: mu of the last step's slip speeds\n", (double)c->step.t));
-  fr->lagged_steps++;
+  fr->count.lagged_steps++;
   fr->fallback = 3;
-  PetscCall(LaggedMu(ctx, c, m));
+  PetscCall(RollerContactFrictionLaggedMu(ctx, c, m));
   for (PetscInt a = 0; a < m; ++a) {
     fr->x[a]     = lam[a];
     fr->x[m + a] = 0.0;
@@ -357,7 +224,7 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
   fr->fallback = 0;
   for (PetscInt a = 0; a < m; ++a) lmax = PetscMax(lmax, lcp->lam[a]);
   if (lmax <= 0.0) PetscFunctionReturn(0); /* nothing touches: no friction either */
-  fr->steps++;
+  fr->count.steps++;
   PetscCall(FrictionData(ctx, c, S, lcp->d));
   for (PetscInt a = 0; a < m2; ++a) dmax = PetscMax(dmax, PetscAbsReal(fr->box.d[a]));
   for (PetscInt a = 0; a < m; ++a) {
@@ -369,7 +236,7 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
   if (c->opt.friction_newton && !lemke) {
     PetscBool done = PETSC_FALSE;
 
-    PetscCall(CoulombNewton(ctx, c, m, &done));
+    PetscCall(RollerContactFrictionNewton(ctx, c, m, &done));
     if (done) goto accept;
     if (fr->v_c > 0.0) { /* the fixed point on mu(v) failed inside Newton: the passes would meet the same map */
       PetscCall(LaggedSolve(ctx, c, m, lcp->lam));
@@ -393,14 +260,14 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
     }
     fr->its++;
     res->its += its;
-    UpdateMu(fr, m, dt, &change, &lmax, &dmu);
+    RollerContactFrictionUpdate(fr, m, dt, &change, &lmax, &dmu);
     PetscCall(PetscInfo(NULL, "Friction at t = %g: iterate %" PetscInt_FMT " (%" PetscInt_FMT " QP its): change of lambda_N %g of %g, of mu %g\n", (double)t, it, its, (double)change, (double)lmax, (double)dmu));
     if (change <= c->opt.friction_rtol * lmax && dmu <= c->opt.friction_rtol * fr->mu_s) {
       PetscCall(PetscArraycpy(fr->lam_n, fr->x, m));
       PetscCall(PetscArraycpy(fr->mu_n, fr->g + m, m));
       break;
     }
-    PetscCall(NextIterate(fr, m, PETSC_TRUE));
+    PetscCall(RollerContactFrictionNext(fr, m, PETSC_TRUE));
     if (it >= c->opt.friction_max_it) {
       if (lemke) { /* mu(v) did not settle: Coulomb with mu of the last step's slip speeds */
         PetscCall(PetscInfo(NULL, "Friction at t = %g: mu(v) did not settle in %" PetscInt_FMT " Lemke solves (change of mu %g)\n", (double)t, it, (double)dmu));
@@ -409,7 +276,7 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
       }
       PetscCall(PetscInfo(NULL, "Friction at t = %g: no fixed point in %" PetscInt_FMT " Tresca steps (change %g of %g), Lemke's method\n", (double)t, it, (double)change, (double)lmax));
       lemke = PETSC_TRUE;
-      fr->lemke_steps++;
+      fr->count.lemke_steps++;
       fr->fallback = 2;
       it           = 0;
       RollerContactAndersonReset(&fr->aa, m2);

@@ -10,6 +10,7 @@
    contact_pressure.c    the contact pressure and friction traction output fields
    Friction (only with -friction > 0; docs/friction.md), a part of the condensed solver:
    contact_friction.c    the Coulomb law, the slip, the fixed point of Tresca steps, the law's residual
+   contact_friction_newton.c  Coulomb by the semismooth Newton method with velocity weakening, the fixed points' steps
    contact_boxqp.c       the Tresca step's dual: a small dense box-constrained QP (active set, TAO, SNES VI)
    contact_coulomb.c     Coulomb directly: the primal-dual active-set (semismooth Newton) method, the default
    contact_lemke.c       Coulomb as one LCP, Lemke's method (the last fallback)
@@ -249,6 +250,30 @@ PETSC_INTERN PetscErrorCode RollerContactAndersonDestroy(RollerContactAnderson *
 
 /* contact_coulomb.c: Coulomb of one step by the primal-dual active-set (semismooth Newton) method */
 PETSC_INTERN PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *, PetscInt, const PetscReal[], PetscReal[], PetscReal[], PetscInt, PetscInt *, PetscBool *);
+
+/* contact_friction.c: the friction part of the condensed solver (created only with -friction > 0) */
+struct _n_RollerContactFriction {
+  PetscReal             mu, mu_s, v_c;
+  RollerContactLCP      box;                      /* the Tresca dual, sized 2 nc */
+  PetscInt             *state;                    /* 2 nc: its active bounds, warm start of the next Tresca step */
+  PetscReal            *lam_n;                    /* nc: lambda_N of the last iterate */
+  PetscReal            *mu_n;                     /* nc: mu(v) of the candidates at the last iterate */
+  PetscReal            *x;                        /* 2 nc: the box QP's solution */
+  PetscInt             *node_state;               /* nc: 0 off the sheet, 1 stick, 2 slip, of the accepted step */
+  PetscReal            *g, *y;                    /* 2 nc: a fixed point's image (lambda_N, mu(v)) and its iterate */
+  RollerContactAnderson aa;                       /* the acceleration of the fixed points on mu(v) and (lambda_N, mu) */
+  PetscReal            *M, *q, *z;                /* Lemke's LCP of 4 m unknowns (allocated when first needed, for lemke_cap) */
+  PetscInt              lemke_cap, its, fallback; /* Lemke's allocation; the last solve's iterations and fallback */
+  struct {
+    PetscInt steps, newton_failures, lemke_steps, lagged_steps;
+  } count; /* the run's Coulomb solves and their fallbacks */
+};
+
+/* contact_friction_newton.c */
+PETSC_INTERN void           RollerContactFrictionUpdate(RollerContactFriction, PetscInt, PetscReal, PetscReal *, PetscReal *, PetscReal *);
+PETSC_INTERN PetscErrorCode RollerContactFrictionNext(RollerContactFriction, PetscInt, PetscBool);
+PETSC_INTERN PetscErrorCode RollerContactFrictionLaggedMu(Roller, RollerContact, PetscInt);
+PETSC_INTERN PetscErrorCode RollerContactFrictionNewton(Roller, RollerContact, PetscInt, PetscBool *);
 
 /* contact_friction.c */
 PETSC_INTERN PetscErrorCode RollerContactFrictionCreate(Roller, RollerContact);
