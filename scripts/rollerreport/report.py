@@ -1,9 +1,11 @@
 """The squeal report of an output folder (docs/squeal.md section 9.1).
 
 The folder holds what the steps of the one-command run write (any may be missing; the report says so):
-- `scene.json`: {"name", "units": "si" | "nd", "loss_factor" (or, SI scenes, "kelvin_voigt_tau" in s: the
-  loss factor at the mode's frequency f is then 2 pi f tau), "friction", "creep", "pitch_si_hz" (nd scenes: the
-  SI pitch the predicted mode is heard at), "seconds_per_unit" (optional; else f_nd / pitch_si_hz)};
+- `scene.json`: {"name", "units": "si" | "nd", "loss_factor" (or "kelvin_voigt_tau" in the scene's unit of time:
+  the loss factor at the mode's frequency f is then 2 pi f tau), "friction", "creep", "pitch_si_hz" (nd scenes: the
+  SI pitch the predicted mode is heard at), "seconds_per_unit" (optional; else f_nd / pitch_si_hz), "sheet_speed"
+  and "surface_speed" (omega r_outer: the map's sheet speeds as creeps)} (rollerreport.run writes it);
+- `commands.json`: the steps as rollerreport.run ran them (listed in the report);
 - `modes.csv`: the CEA (`roller -modes`; columns re, im, frequency, growth_rate, order, wave);
 - `sweep.csv`: the map (`roller -modes -sweep`; the swept options as columns beside growth_rate, frequency);
 - `transient.csv` and `transient.h5`: the seeded transient (monitor CSV with t and contact_force; fields).
@@ -85,10 +87,10 @@ def sweep_map(rows, png, scene_x=None, scene_y=None):
     grid = np.full((len(ys), len(xs)), np.nan)
     for x, y, g in pts:
         grid[np.searchsorted(ys, y), np.searchsorted(xs, x)] = g
-    fig, ax = plt.subplots(figsize=(1.6 + 1.1 * len(xs), 1.4 + 0.7 * len(ys)))
+    fig, ax = plt.subplots(figsize=(max(5.0, 1.8 + 1.1 * len(xs)), max(3.2, 1.4 + 0.7 * len(ys))))
     lim = max(float(np.nanmax(np.abs(grid))), 1e-300)
     im = ax.imshow(grid, origin="lower", cmap="coolwarm", vmin=-lim, vmax=lim, aspect="auto")
-    fig.colorbar(im, label="largest growth rate Re(lambda)")
+    fig.colorbar(im, label="largest growth rate")
     for iy in range(len(ys)):
         for ix in range(len(xs)):
             if np.isfinite(grid[iy, ix]):

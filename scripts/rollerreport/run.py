@@ -90,16 +90,17 @@ def scene_json(name, opts, units):
 def map_grid(scene, creeps=None, frictions=None):
     """(creeps, sheet speeds, frictions) of the map: by default the creeps c/2, c, 2c and 1 (the sheet held: full
     sliding, a jam) around the scene's c, and the frictions mu/2, mu and the largest allowed (the static coefficient
-    of a weakening law, which -friction may not exceed, else 1.5 mu)."""
+    of a weakening law, which -friction may not exceed, else 1.5 mu). The scene's own creep and friction are always
+    in the map (its cell is the CEA's case: the scene's -sheet_speed as given)."""
     c, mu = scene["creep"], scene["friction"]
     if creeps is None:
-        creeps = [c / 2, c, 2 * c, 1.0] if c > 0 else [c, 0.01, 0.1, 1.0]
+        creeps = [c / 2, 2 * c, 1.0] if c > 0 else [0.01, 0.1, 1.0]
     if frictions is None:
         top = scene.get("friction_static", mu)
-        frictions = [mu / 2, mu, top if top > mu else 1.5 * mu]
-    creeps = sorted(set(round(x, 12) for x in creeps))
-    speeds = [scene["surface_speed"] * (1 - x) for x in creeps]
-    return creeps, speeds, sorted(set(round(x, 12) for x in frictions))
+        frictions = [mu / 2, top if top > mu else 1.5 * mu]
+    creeps = sorted(set([c] + [x for x in creeps if abs(x - c) > 1e-9]))
+    speeds = [scene["sheet_speed"] if x == c else scene["surface_speed"] * (1 - x) for x in creeps]
+    return creeps, speeds, sorted(set([mu] + [x for x in frictions if abs(x - mu) > 1e-12]))
 
 
 def leading_row(path):
@@ -173,8 +174,10 @@ def main(argv=None):
                    help="si (Pa, m, s: the pitch is the mode's frequency) or nd (non-dimensional: heard at the printer "
                         "roller's size and rubber); auto: si when -young >= 1e3")
     p.add_argument("--nev", type=int, default=40, help="-modes_nev of the CEA and the map (default 40)")
-    p.add_argument("--creeps", default=None, help="the map's creeps, comma-separated (default c/2, c, 2c, 1)")
-    p.add_argument("--frictions", default=None, help="the map's frictions (default mu/2, mu, mu_s or 1.5 mu)")
+    p.add_argument("--creeps", default=None, help="the map's creeps besides the scene's c, comma-separated (default c/2, "
+                   "2c, 1: 1 is the sheet held, full sliding)")
+    p.add_argument("--frictions", default=None, help="the map's frictions besides the scene's mu (default mu/2 and mu_s, "
+                   "else 1.5 mu)")
     p.add_argument("--no-map", action="store_true", help="skip the map")
     p.add_argument("--steps-per-period", type=float, default=100, help="transient: dt = period / this (default 100)")
     p.add_argument("--periods", type=float, default=8, help="transient: its length in periods of the mode (default 8)")
@@ -239,7 +242,10 @@ def main(argv=None):
     steps.done.append({"step": "report", "what": "the report (docs/squeal.md 9.1)", "command": shlex.join(cmd),
                        "cwd": out, "seconds": None, "returncode": 0, "error": "", "log": ""})
     steps.save()
+    t0 = time.time()
     r = report.write(out, a.signal)
+    steps.done[-1]["seconds"] = round(time.time() - t0, 1)
+    steps.save()
     failed = [s["step"] for s in steps.done if s["returncode"]]
     print(f"rollerreport.run: wrote {', '.join(r['files'])} in {out}" + (f"; failed: {', '.join(failed)}" if failed else ""))
     return 1 if failed else 0
