@@ -64,9 +64,9 @@ def verdict(mode, scene):
             "loss_factor": eta, "loss_factor_margin": 2 * sigma / w, "loss_factor_onset": eta + 2 * sigma / w}
 
 
-def sweep_map(rows, png, scene_x=None, scene_y=None):
-    """The largest growth rate per swept point, drawn over the two swept options; returns (xname, yname,
-    friction at onset at the scene's x or None)."""
+def sweep_map(rows, png, scene_x=None, scene_y=None, title="", si=False):
+    """The largest growth rate per swept point (with its mode's frequency, in Hz when si), drawn over the two swept
+    options; returns (xname, yname, friction at onset at the scene's x or None)."""
     swept = [k for k in rows[0] if k not in FIXED]
     xname = next((k for k in swept if k != "friction"), swept[0])
     yname = "friction" if "friction" in swept else (swept[1] if len(swept) > 1 else swept[0])
@@ -74,9 +74,10 @@ def sweep_map(rows, png, scene_x=None, scene_y=None):
     for r in rows:
         key = (num(r[xname]), num(r[yname]))
         g = num(r["growth_rate"])
-        if num(r.get("im")) > 0 and math.isfinite(g):
-            best[key] = max(best.get(key, -math.inf), g)
-    pts = np.array([(x, y, g) for (x, y), g in best.items()])
+        if num(r.get("im")) > 0 and math.isfinite(g) and g > best.get(key, (-math.inf,))[0]:
+            best[key] = (g, num(r["im"]) / (2 * math.pi))
+    pts = np.array([(x, y, g) for (x, y), (g, _) in best.items()])
+    freq = {key: f for key, (_, f) in best.items()}
     import matplotlib
 
     matplotlib.use("Agg")
@@ -94,15 +95,17 @@ def sweep_map(rows, png, scene_x=None, scene_y=None):
     for iy in range(len(ys)):
         for ix in range(len(xs)):
             if np.isfinite(grid[iy, ix]):
-                ax.text(ix, iy, f"{grid[iy, ix]:.3g}", ha="center", va="center", fontsize=8,
-                        fontweight="bold" if grid[iy, ix] > 0 else "normal")
+                f = freq[(xs[ix], ys[iy])]
+                ax.text(ix, iy, f"{grid[iy, ix]:.3g}\n" + (f"{f:.0f} Hz" if si else f"f {f:.3g}"), ha="center",
+                        va="center", fontsize=8, fontweight="bold" if grid[iy, ix] > 0 else "normal")
     if scene_x is not None and scene_y is not None and len(xs) and len(ys):
         ax.plot(np.argmin(np.abs(xs - scene_x)), np.argmin(np.abs(ys - scene_y)), "s", ms=28, mfc="none", mec="k", mew=2)
     ax.set_xticks(range(len(xs)), [f"{x:.3g}" for x in xs])
     ax.set_yticks(range(len(ys)), [f"{y:.3g}" for y in ys])
     ax.set_xlabel(xname)
     ax.set_ylabel(yname)
-    ax.set_title("squeal map: growth > 0 (bold) squeals; framed: the scene", fontsize=9)
+    ax.set_title((title + ": " if title else "") + "the least stable mode's growth rate" + (" (1/s)" if si else "")
+                 + " and frequency;\nbold: > 0, squeals; framed: the scene", fontsize=9)
     fig.tight_layout()
     fig.savefig(png, dpi=100)
     plt.close(fig)
@@ -172,7 +175,8 @@ def write(folder, signal="auto"):
                 r["creep"] = repr(1.0 - num(r.pop("sheet_speed")) / num(scene["surface_speed"]))
             xname = "creep"
         scene_x = num(scene.get(xname, scene.get("creep")), None)  # e.g. "sheet_speed" when that is swept
-        xname, yname, onset = sweep_map(rows, j("map.png"), scene_x, num(scene.get("friction"), None))
+        xname, yname, onset = sweep_map(rows, j("map.png"), scene_x, num(scene.get("friction"), None),
+                                        scene.get("name", ""), scene.get("units") == "si")
         out["files"].append("map.png")
         out["friction_onset"] = onset
         lines += ["## Map", "", f"![map](map.png)", "",
