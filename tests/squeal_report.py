@@ -105,6 +105,11 @@ for name, scene, creeps, mus, extra, gtol in SCENES:
             f"{name}: transient growth {fit.get('growth_rate', 0):.5g} vs CEA {sigma:.5g}: {100 * eg:+.1f} %"
             + (f" ({100 * gtol:.0f} %)" if gtol else " (the sign: a stick zone, docs/squeal.md 4.4)"))
 
+    missing = [x for x in ("sweep.csv", "map.png", "squeal.wav", "spectrogram.png") if not os.path.exists(os.path.join(out, x))]
+    if missing:
+        c.check(False, f"{name}: written: {', '.join(missing)} missing (report.json: missing {rep.get('missing')})")
+        continue
+
     # the map
     with open(os.path.join(out, "sweep.csv")) as f:
         rows = list(csv.DictReader(f))
