@@ -162,9 +162,49 @@ class Steps:
             json.dump(self.done, f, indent=1)
 
 
-def main(argv=None):
+def map_command(base, scene, a, extra, out):
+    """The map's sweep command and its description."""
+    creeps, speeds, mus = map_grid(scene, [float(x) for x in a.creeps.split(",")] if a.creeps else None,
+                                   [float(x) for x in a.frictions.split(",")] if a.frictions else None)
+    mpi = [a.mpiexec, "-n", str(a.ranks)] if a.ranks > 1 else []
+    cmd = mpi + base + ["-modes", "-modes_nev", str(a.nev), "-sweep", os.path.join(out, "sweep.csv"), "-sweep_sheet_speed",
+                        ",".join(repr(v) for v in speeds), "-sweep_friction", ",".join(repr(v) for v in mus), "-quiet"]
+    return cmd + extra, f"the map over creep {[round(x, 6) for x in creeps]} (sheet_speed) and friction {mus} (docs/squeal.md 6)"
+
+
+def transient_command(base, opts, a, extra, out, scene):
+    """The seeded transient's command and its description; records the seeded mode in scene."""
+    j = lambda f: os.path.join(out, f)  # noqa: E731
+    rows = report.read_rows(j("modes.csv"))
+    k, mode = leading_row(j("modes.csv")) if a.mode is None else (a.mode, rows[a.mode])
+    if not float(mode["im"]) > 0:
+        raise SystemExit(f"rollerreport.run: --mode {k}: row {k} of modes.csv has Im lambda = {mode['im']}; allowed: a "
+                         "row with Im lambda > 0 (an oscillating mode)")
+    f = float(mode["im"]) / (2 * math.pi)
+    dt = 1.0 / (f * a.steps_per_period)
+    n = int(math.ceil(a.periods * a.steps_per_period))
+    amp = a.amplitude if a.amplitude is not None else 0.02 * value(opts, "obstacle_depth")
+    scene["seeded_mode"] = {"row": k, "re": float(mode["re"]), "im": float(mode["im"]), "dt": dt, "steps": n}
+    cmd = base + mesh_options(j("modes.h5"), extra) + [
+        "-ts_scheme", "dmf", "-ts_dt", repr(dt), "-ts_max_time", repr(n * dt), "-ts_max_steps", str(n),
+        "-obstacle_speed", "1e6", "-initial_condition", "mode", "-initial_mode_file", j("modes.h5"), "-initial_mode",
+        str(k), "-ic_amplitude", repr(amp), "-monitor_csv", j("transient.csv"), "-output", j("transient.h5"),
+        "-output_every", str(max(1, n // 36)), "-checkpoint", j("checkpoint.h5"), "-quiet"]
+    what = (f"the transient seeded on mode {k} ({'the least stable' if a.mode is None else 'chosen'}) about the CEA's "
+            f"steady state, {a.steps_per_period:g} steps per period, {a.periods:g} periods (docs/squeal.md 4.2)")
+    return cmd + extra, what
+
+
+# what a run writes into OUTDIR: removed first, so that nothing of an earlier run is reported as this one's
+OUTPUTS = ("modes.csv", "modes.h5", "modes.xmf", "steady.csv", "sweep.csv", "transient.csv", "transient.h5", "transient.xmf",
+           "scene.json", "commands.json", "report.md", "report.json", "map.png", "squeal.wav", "spectrogram.png",
+           "zones.gif", "zones.mp4", "zones_strip.png")
+
+
+def parse(argv):
     p = argparse.ArgumentParser(prog="python3 -m rollerreport.run", description=__doc__,
-                                formatter_class=argparse.RawDescriptionHelpFormatter)
+                                formatter_class=argparse.RawDescriptionHelpFormatter,
+                                epilog="-- OPTIONS: roller options for every run (after the driver's own)")
     p.add_argument("scene", help="the scene's YAML options file (jobs/*.yaml)")
     p.add_argument("out", help="the output folder (created)")
     p.add_argument("--roller", default=None, help="the executable (default: build/roller of this source tree)")
@@ -186,56 +226,33 @@ def main(argv=None):
     p.add_argument("--mode", type=int, default=None, help="the seeded mode's row in modes.csv (default the least stable)")
     p.add_argument("--signal", default="auto", help="the transient's CSV column heard (default auto: of contact_force "
                    "and friction_force the one that fluctuates most)")
-    argv = sys.argv[1:] if argv is None else list(argv)
     cut = argv.index("--") if "--" in argv else len(argv)
-    p.epilog = "-- OPTIONS: roller options for every run (after the driver's own)"
-    a = p.parse_args(argv[:cut])
-    extra = argv[cut + 1 :]
+    return p.parse_args(argv[:cut]), argv[cut + 1 :]
+
+
+def main(argv=None):
+    a, extra = parse(sys.argv[1:] if argv is None else list(argv))
     src = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     roller = os.path.abspath(a.roller or os.path.join(src, "build", "roller"))
-    scene_path = os.path.abspath(a.scene)
-    out = os.path.abspath(a.out)
+    scene_path, out = os.path.abspath(a.scene), os.path.abspath(a.out)
     os.makedirs(out, exist_ok=True)
+    for name in OUTPUTS:
+        for stale in (name, name + ".part"):
+            if os.path.exists(os.path.join(out, stale)):
+                os.remove(os.path.join(out, stale))
     opts = scene_options(scene_path, extra)
-    units = detect_units(opts) if a.units == "auto" else a.units
-    name = os.path.splitext(os.path.basename(scene_path))[0]
-    scene = scene_json(name, opts, units)
+    scene = scene_json(os.path.splitext(os.path.basename(scene_path))[0], opts, detect_units(opts) if a.units == "auto" else a.units)
     steps = Steps(out)
     base = [roller, "-options_file", scene_path]
     j = lambda f: os.path.join(out, f)  # noqa: E731
-    for stale in ("modes.csv", "sweep.csv", "transient.csv", "transient.h5", "report.md", "report.json"):
-        if os.path.exists(j(stale)):
-            os.remove(j(stale))
 
-    # 1. the CEA
     cea_ok = steps.run("cea", base + ["-modes", "-modes_nev", str(a.nev), "-modes_csv", j("modes.csv"), "-modes_output",
                                       j("modes.h5"), "-modes_steady_csv", j("steady.csv")] + extra,
                        "the steady state and its complex eigenvalues (docs/squeal.md 3)")
-    # 2. the map
     if not a.no_map:
-        creeps, speeds, mus = map_grid(scene, [float(x) for x in a.creeps.split(",")] if a.creeps else None,
-                                       [float(x) for x in a.frictions.split(",")] if a.frictions else None)
-        mpi = [a.mpiexec, "-n", str(a.ranks)] if a.ranks > 1 else []
-        steps.run("map", mpi + base + ["-modes", "-modes_nev", str(a.nev), "-sweep", j("sweep.csv"), "-sweep_sheet_speed",
-                                       ",".join(repr(v) for v in speeds), "-sweep_friction", ",".join(repr(v) for v in mus),
-                                       "-quiet"] + extra,
-                  f"the map over creep {creeps} (sheet_speed) and friction {mus} (docs/squeal.md 6)")
-    # 3. the seeded transient
+        steps.run("map", *map_command(base, scene, a, extra, out))
     if cea_ok:
-        k, mode = leading_row(j("modes.csv")) if a.mode is None else (a.mode, report.read_rows(j("modes.csv"))[a.mode])
-        f = float(mode["im"]) / (2 * math.pi)
-        dt = 1.0 / (f * a.steps_per_period)
-        n = int(math.ceil(a.periods * a.steps_per_period))
-        amp = a.amplitude if a.amplitude is not None else 0.02 * value(opts, "obstacle_depth")
-        scene["seeded_mode"] = {"row": k, "re": float(mode["re"]), "im": float(mode["im"]), "dt": dt, "steps": n}
-        steps.run("transient", base + mesh_options(j("modes.h5"), extra) + [
-            "-ts_scheme", "dmf", "-ts_dt", repr(dt), "-ts_max_time", repr(n * dt), "-ts_max_steps", str(n),
-            "-obstacle_speed", "1e6", "-initial_condition", "mode", "-initial_mode_file", j("modes.h5"),
-            "-initial_mode", str(k), "-ic_amplitude", repr(amp), "-monitor_csv", j("transient.csv"), "-output",
-            j("transient.h5"), "-output_every", str(max(1, n // 36)), "-checkpoint", j("checkpoint.h5"), "-quiet"] + extra,
-                  f"the transient seeded on mode {k} (the least stable) from the CEA's steady state, "
-                  f"{a.steps_per_period:g} steps per period, {a.periods:g} periods (docs/squeal.md 4.2)")
-    # 4. scene.json, 5. the report
+        steps.run("transient", *transient_command(base, opts, a, extra, out, scene))
     with open(j("scene.json"), "w") as fh:
         json.dump(scene, fh, indent=1)
     cmd = ["env", f"PYTHONPATH={os.path.join(src, 'scripts')}", sys.executable, "-m", "rollerreport", out, "--signal", a.signal]
