@@ -88,4 +88,31 @@ for name in ("report.md", "map.png", "spectrogram.png", "squeal.wav"):
 anim = [name for name in out["files"] if name.startswith("zones")]
 c.check(len(anim) == 1 and os.path.getsize(os.path.join(d, anim[0])) > 0, f"animation written: {anim}")
 c.check(out["missing"] == [], f"nothing missing: {out['missing']}")
+
+# the loop of a short transient keeps its own line: 16 ms of a tone at 489 Hz (8 periods, decaying as the printer
+# roller's order-0 mode) heard at 489 Hz, not at the nearest multiple of 1 / (loop length) (about 120 Hz apart)
+tt = np.arange(801) * 2.046e-5
+samples, rate = sound.audio_signal(tt, 104.5 + 0.3 * np.exp(-36 * tt) * np.cos(2 * math.pi * 489.0 * tt + 0.4))
+heard = sound.loudest_line(samples, rate)
+c.check(len(samples) >= rate and abs(heard / 489.0 - 1) < 0.005, f"a 16 ms tone at 489 Hz looped to {len(samples) / rate:.2f} s: loudest line {heard:.2f} Hz (0.5 %)")
+
+# the driver's scene: units, creep, the map's grid, the audio time scale of a non-dimensional scene
+from rollerreport import run  # noqa: E402
+
+yml = os.path.join(d, "scene.yaml")
+with open(yml, "w") as f:
+    f.write("young: 2.0e6\nr_outer: 0.0125\nr_inner: 0.005\nomega: 19.04\nsheet_speed: 0.2356\nfriction: 0.8\n"
+            "friction_static: 1.0\nfriction_decay: 0.01\nviscosity: 8.0e-6\n")
+opts = run.scene_options(yml, ["-friction", "0.7", "-obstacle"])
+sc = run.scene_json("s", opts, run.detect_units(opts))
+c.check(sc["units"] == "si" and sc["friction"] == 0.7 and opts["obstacle"] == "true" and abs(sc["creep"] - (1 - 0.2356 / (19.04 * 0.0125))) < 1e-15
+        and sc["kelvin_voigt_tau"] == 8e-6, f"scene.json of an SI scene with -friction 0.7 given: units {sc['units']}, creep {sc['creep']:.6f}, friction {sc['friction']}")
+creeps, speeds, mus = run.map_grid(sc)
+c.check(sc["creep"] in creeps and 1.0 in creeps and speeds[creeps.index(sc["creep"])] == 0.2356 and speeds[-1] == 0.0
+        and mus == [0.35, 0.7, 1.0], f"the default map: creeps {[round(x, 5) for x in creeps]}, frictions {mus} (the static coefficient the largest)")
+opts = run.scene_options(os.path.join(SOURCE, "jobs", "feed.yaml"), [])
+sc = run.scene_json("feed", opts, run.detect_units(opts))
+c_nd = math.sqrt(0.1 / (2 * 1.49) / 1.0)
+c.check(sc["units"] == "nd" and abs(sc["seconds_per_unit"] - 0.0125 / 0.5 * c_nd / 23.6) < 1e-15 and abs(sc["creep"] - 0.01) < 1e-12,
+        f"feed.yaml: units {sc['units']}, creep {sc['creep']:.6f}, {sc['seconds_per_unit']:.4g} s per unit (the printer roller's size and rubber)")
 c.close()

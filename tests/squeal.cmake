@@ -11,3 +11,8 @@ roller_test(squeal_transient squeal_transient.py LABELS long TIMEOUT 1800)
 # frame) against Carter: Coulomb's law at every node, |Q|/(mu P) within 0.02, the stick zone at the leading edge
 # with Carter's width, driving and braking, 1 and 2 ranks (docs/squeal.md section 3.2; about 15 s)
 roller_test(steady_rolling steady_rolling.py LABELS quick PROCESSORS 2 TIMEOUT 300)
+# The one-command squeal report (python3 -m rollerreport.run, docs/squeal.md section 9.2) on the printer roller (SI,
+# its own friction law) and the feeder (coarse mesh): the CEA, a 2 x 2 map on 2 ranks, the seeded transient, the
+# report; checks the verdict against modes.csv, the transient's frequency (2 %), the WAV's loudest line at the pitch
+# (2 %), the map, spectrogram and GIF; about 6-8 min on 2 cores
+roller_test(squeal_report squeal_report.py LABELS long PROCESSORS 2 TIMEOUT 2400)

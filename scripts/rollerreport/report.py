@@ -1,9 +1,11 @@
 """The squeal report of an output folder (docs/squeal.md section 9.1).
 
 The folder holds what the steps of the one-command run write (any may be missing; the report says so):
-- `scene.json`: {"name", "units": "si" | "nd", "loss_factor" (or, SI scenes, "kelvin_voigt_tau" in s: the
-  loss factor at the mode's frequency f is then 2 pi f tau), "friction", "creep", "pitch_si_hz" (nd scenes: the
-  SI pitch the predicted mode is heard at), "seconds_per_unit" (optional; else f_nd / pitch_si_hz)};
+- `scene.json`: {"name", "units": "si" | "nd", "loss_factor" (or "kelvin_voigt_tau" in the scene's unit of time:
+  the loss factor at the mode's frequency f is then 2 pi f tau), "friction", "creep", "pitch_si_hz" (nd scenes: the
+  SI pitch the predicted mode is heard at), "seconds_per_unit" (optional; else f_nd / pitch_si_hz), "sheet_speed"
+  and "surface_speed" (omega r_outer: the map's sheet speeds as creeps)} (rollerreport.run writes it);
+- `commands.json`: the steps as rollerreport.run ran them (listed in the report);
 - `modes.csv`: the CEA (`roller -modes`; columns re, im, frequency, growth_rate, order, wave);
 - `sweep.csv`: the map (`roller -modes -sweep`; the swept options as columns beside growth_rate, frequency);
 - `transient.csv` and `transient.h5`: the seeded transient (monitor CSV with t and contact_force; fields).
@@ -52,20 +54,19 @@ def verdict(mode, scene):
     sigma, w = num(mode["growth_rate"]), num(mode["im"])
     f = w / (2 * math.pi)
     eta = num(scene.get("loss_factor"), 0.0)
-    if "kelvin_voigt_tau" in scene:  # Kelvin-Voigt: the loss factor at the mode's frequency, 2 pi f tau
-        eta = 2 * math.pi * abs(f) * num(scene["kelvin_voigt_tau"]) if "seconds_per_unit" not in scene and \
-            scene.get("units", "nd") == "si" else eta
+    if "kelvin_voigt_tau" in scene:  # Kelvin-Voigt: the loss factor at the mode's frequency, 2 pi f tau (tau and f
+        eta = 2 * math.pi * abs(f) * num(scene["kelvin_voigt_tau"])  # in the scene's units of time, SI or not)
     si = scene.get("units", "nd") == "si"
-    pitch = f if si else num(scene.get("pitch_si_hz"))
-    s = num(scene.get("seconds_per_unit")) if "seconds_per_unit" in scene else (1.0 if si else f / pitch)
+    s = num(scene.get("seconds_per_unit")) if "seconds_per_unit" in scene else (1.0 if si else f / num(scene.get("pitch_si_hz")))
+    pitch = f if si else (num(scene.get("pitch_si_hz")) if "pitch_si_hz" in scene else f / s)
     return {"squeals": sigma > 0, "growth_rate": sigma, "frequency": f, "pitch_hz": pitch,
             "seconds_per_unit": s, "order": mode.get("order", ""), "wave": mode.get("wave", ""),
             "loss_factor": eta, "loss_factor_margin": 2 * sigma / w, "loss_factor_onset": eta + 2 * sigma / w}
 
 
-def sweep_map(rows, png, scene_x=None):
-    """The largest growth rate per swept point, drawn over the two swept options; returns (xname, yname,
-    friction at onset at the scene's x or None)."""
+def sweep_map(rows, png, scene_x=None, scene_y=None, title="", si=False):
+    """The largest growth rate per swept point (with its mode's frequency, in Hz when si), drawn over the two swept
+    options; returns (xname, yname, friction at onset at the scene's x or None)."""
     swept = [k for k in rows[0] if k not in FIXED]
     xname = next((k for k in swept if k != "friction"), swept[0])
     yname = "friction" if "friction" in swept else (swept[1] if len(swept) > 1 else swept[0])
@@ -73,26 +74,42 @@ def sweep_map(rows, png, scene_x=None):
     for r in rows:
         key = (num(r[xname]), num(r[yname]))
         g = num(r["growth_rate"])
-        if num(r.get("im")) > 0 and math.isfinite(g):
-            best[key] = max(best.get(key, -math.inf), g)
-    pts = np.array([(x, y, g) for (x, y), g in best.items()])
+        if num(r.get("im")) > 0 and math.isfinite(g) and g > best.get(key, (-math.inf,))[0]:
+            best[key] = (g, num(r["im"]) / (2 * math.pi))
+    pts = np.array([(x, y, g) for (x, y), (g, _) in best.items()])
+    freq = {key: f for key, (_, f) in best.items()}
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, ax = plt.subplots(figsize=(5.5, 4))
-    lim = max(float(np.max(np.abs(pts[:, 2]))), 1e-300)
-    sc = ax.scatter(pts[:, 0], pts[:, 1], c=pts[:, 2], cmap="coolwarm", vmin=-lim, vmax=lim, s=120, marker="s")
-    fig.colorbar(sc, label="largest growth rate Re(lambda)")
-    unstable = pts[:, 2] > 0
-    ax.scatter(pts[unstable, 0], pts[unstable, 1], facecolors="none", edgecolors="k", s=160, marker="s")
+    # a grid of cells, one per swept (x, y), evenly spaced whatever the values (creeps of 0.005 and 1 side by side)
+    xs, ys = np.unique(pts[:, 0]), np.unique(pts[:, 1])
+    grid = np.full((len(ys), len(xs)), np.nan)
+    for x, y, g in pts:
+        grid[np.searchsorted(ys, y), np.searchsorted(xs, x)] = g
+    fig, ax = plt.subplots(figsize=(max(5.0, 1.8 + 1.1 * len(xs)), max(3.2, 1.4 + 0.7 * len(ys))))
+    lim = max(float(np.nanmax(np.abs(grid))), 1e-300)
+    im = ax.imshow(grid, origin="lower", cmap="coolwarm", vmin=-lim, vmax=lim, aspect="auto")
+    fig.colorbar(im, label="largest growth rate")
+    for iy in range(len(ys)):
+        for ix in range(len(xs)):
+            if np.isfinite(grid[iy, ix]):
+                f = freq[(xs[ix], ys[iy])]
+                ax.text(ix, iy, f"{grid[iy, ix]:.3g}\n" + (f"{f:.0f} Hz" if si else f"f {f:.3g}"), ha="center",
+                        va="center", fontsize=8, fontweight="bold" if grid[iy, ix] > 0 else "normal")
+    if scene_x is not None and scene_y is not None and len(xs) and len(ys):
+        ax.plot(np.argmin(np.abs(xs - scene_x)), np.argmin(np.abs(ys - scene_y)), "s", ms=28, mfc="none", mec="k", mew=2)
+    ax.set_xticks(range(len(xs)), [f"{x:.3g}" for x in xs])
+    ax.set_yticks(range(len(ys)), [f"{y:.3g}" for y in ys])
     ax.set_xlabel(xname)
     ax.set_ylabel(yname)
-    ax.set_title("squeal map (outlined: unstable)")
+    ax.set_title((title + ": " if title else "") + "the least stable mode's growth rate" + (" (1/s)" if si else "")
+                 + " and frequency;\nbold: > 0, squeals; framed: the scene", fontsize=9)
     fig.tight_layout()
     fig.savefig(png, dpi=100)
     plt.close(fig)
+    unstable = pts[:, 2] > 0
     onset = None
     if yname == "friction":
         xs = np.unique(pts[:, 0])
@@ -117,12 +134,21 @@ def transient_fit(t, y, f_guess):
     return {"growth_rate": float(s[k].real), "frequency": float(abs(s[k].imag) / (2 * math.pi))}
 
 
-def write(folder, signal="contact_force"):
+def heard_column(rows, columns=("contact_force", "friction_force")):
+    """The component of the force on the sheet that the transient moves most: of the normal (contact_force) and the
+    tangential (friction_force) force, the one of larger standard deviation (in force units: what excites the sheet
+    and the air). A torsional mode (order 0) moves the friction force, a radial one the normal force."""
+    have = [c for c in columns if c in rows[0]]
+    return max(have, key=lambda c: float(np.nanstd([num(r[c]) for r in rows]))) if have else columns[0]
+
+
+def write(folder, signal="auto"):
     """Write report.md, map.png, squeal.wav, spectrogram.png and the animation into folder; returns the
-    dict of what was found and written."""
+    dict of what was found and written. signal: the transient CSV's column heard (auto: heard_column)."""
     j = lambda name: os.path.join(folder, name)  # noqa: E731
     scene = json.load(open(j("scene.json"))) if os.path.exists(j("scene.json")) else {}
     out = {"scene": scene, "files": [], "missing": []}
+    commands = json.load(open(j("commands.json"))) if os.path.exists(j("commands.json")) else []
     lines = [f"# Squeal report: {scene.get('name', os.path.basename(os.path.abspath(folder)))}", ""]
     v = None
     if os.path.exists(j("modes.csv")):
@@ -135,15 +161,22 @@ def write(folder, signal="contact_force"):
                   f"**{v['pitch_hz']:.0f} Hz**.", "",
                   f"- margin against the rubber's damping: the loss factor {v['loss_factor']:.3g} "
                   f"{'lacks' if v['squeals'] else 'has to spare'} {abs(v['loss_factor_margin']):.3g} "
-                  f"(2 sigma / omega); the mode {'stabilizes' if v['squeals'] else 'destabilizes'} at a loss factor "
-                  f"of about {v['loss_factor_onset']:.3g}", ""]
+                  f"(2 sigma / omega); " + (f"the mode {'stabilizes' if v['squeals'] else 'destabilizes'} at a loss "
+                  f"factor of about {v['loss_factor_onset']:.3g}" if v["loss_factor_onset"] > 0 else
+                  "the mode is stable without the rubber's damping too (the contact alone damps it: the loss factor "
+                  f"at onset {v['loss_factor_onset']:.3g} would be negative)"), ""]
     else:
         out["missing"].append("modes.csv")
     if os.path.exists(j("sweep.csv")):
         rows = read_rows(j("sweep.csv"))
         xname = next((k for k in rows[0] if k not in FIXED and k != "friction"), None)
+        if xname == "sheet_speed" and num(scene.get("surface_speed"), 0.0):  # the creep 1 - V / (omega r_outer)
+            for r in rows:
+                r["creep"] = repr(1.0 - num(r.pop("sheet_speed")) / num(scene["surface_speed"]))
+            xname = "creep"
         scene_x = num(scene.get(xname, scene.get("creep")), None)  # e.g. "sheet_speed" when that is swept
-        xname, yname, onset = sweep_map(rows, j("map.png"), scene_x)
+        xname, yname, onset = sweep_map(rows, j("map.png"), scene_x, num(scene.get("friction"), None),
+                                        scene.get("name", ""), scene.get("units") == "si")
         out["files"].append("map.png")
         out["friction_onset"] = onset
         lines += ["## Map", "", f"![map](map.png)", "",
@@ -151,7 +184,11 @@ def write(folder, signal="contact_force"):
     else:
         out["missing"].append("sweep.csv")
     if os.path.exists(j("transient.csv")) and v is not None:
-        data = {k: np.array([num(r[k]) for r in read_rows(j("transient.csv"))]) for k in ("t", signal)}
+        # without the monitor's row 0: the initial state, before the first contact solve (its contact force is 0)
+        rows = read_rows(j("transient.csv"))[1:]
+        signal = heard_column(rows) if signal == "auto" else signal
+        out["signal"] = signal
+        data = {k: np.array([num(r[k]) for r in rows]) for k in ("t", signal)}
         fit = out["fit"] = transient_fit(data["t"], data[signal], v["frequency"])
         samples, rate = sound.audio_signal(data["t"], data[signal], v["seconds_per_unit"])
         sound.write_wav(j("squeal.wav"), samples, rate)
@@ -166,6 +203,10 @@ def write(folder, signal="contact_force"):
                   "![spectrogram](spectrogram.png)", ""]
     else:
         out["missing"].append("transient.csv")
+        failed = [c for c in commands if c.get("step") == "transient" and c.get("returncode")]
+        if failed:
+            lines += ["## Transient", "", f"The seeded transient **stopped with an error**: {failed[0]['error']} "
+                      f"(its log: {failed[0]['log']}).", ""]
     if os.path.exists(j("transient.h5")):
         path, kind = zones.animate(zones.frames_from_h5(j("transient.h5")), j("zones"))
         out["files"].append(os.path.basename(path))
@@ -174,6 +215,14 @@ def write(folder, signal="contact_force"):
         out["missing"].append("transient.h5")
     if out["missing"]:
         lines += ["Missing: " + ", ".join(out["missing"]), ""]
+    if commands:
+        out["commands"] = commands
+        lines += ["## Commands", "", "Each step as run (in the output folder; rollerreport.run wrote them to "
+                  "commands.json):", ""]
+        for c in commands:
+            took = f", {c['seconds']:.0f} s" if c.get("seconds") is not None else ""
+            state = f" **failed**: {c['error']}" if c.get("returncode") else ""
+            lines += [f"- {c['step']}: {c['what']}{took}{state}", "", "      " + c["command"], ""]
     with open(j("report.md"), "w") as f:
         f.write("\n".join(lines))
     out["files"].append("report.md")

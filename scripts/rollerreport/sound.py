@@ -3,8 +3,9 @@
 Time scaling of non-dimensional scenes: a mode predicted at the non-dimensional frequency f_nd (cycles per unit
 time) is heard at the SI pitch f_si of the printer roller (its CEA in SI units, docs/squeal.md section 7) when the
 scene's time is stretched by s = f_nd / f_si seconds per unit time: t_audio = s t. SI scenes use s = 1. A
-transient shorter than `min_seconds` of audio is repeated (each copy under a Hann window, overlapped by half) so
-it can be heard; this keeps its lines, only the envelope becomes periodic.
+transient shorter than `min_seconds` of audio is looped (`loop`: Hann windows overlapped by half, the loop a whole
+number of periods of its own loudest line) so that it can be heard; this keeps that line, the envelope becomes
+periodic.
 """
 import wave
 
@@ -15,7 +16,7 @@ RATE = 44100
 
 def audio_signal(t, y, seconds_per_unit=1.0, rate=RATE, min_seconds=1.0):
     """(samples in [-1, 1], rate): y(t) with the mean removed, on t_audio = seconds_per_unit * t, linearly
-    resampled at `rate`, repeated with overlapping Hann windows to at least `min_seconds`."""
+    resampled at `rate`, looped to at least `min_seconds` (see loop)."""
     t = np.asarray(t, float)
     y = np.asarray(y, float)
     ok = np.isfinite(t) & np.isfinite(y)
@@ -24,15 +25,34 @@ def audio_signal(t, y, seconds_per_unit=1.0, rate=RATE, min_seconds=1.0):
     n = max(int(ta[-1] * rate), 16)
     s = np.interp(np.arange(n) / rate, ta, y - y.mean())
     if n < min_seconds * rate:
-        w = np.hanning(n)
-        hop = n // 2
-        copies = int(np.ceil((min_seconds * rate - n) / hop)) + 1
-        out = np.zeros(hop * (copies - 1) + n)
-        for k in range(copies):
-            out[k * hop : k * hop + n] += w * s
-        s = out
+        s = loop(s, rate, min_seconds)
     peak = np.max(np.abs(s))
     return (s / peak if peak > 0 else s), rate
+
+
+def loop(s, rate, min_seconds):
+    """A short signal repeated to `min_seconds`: its last 2 H samples under periodic Hann windows overlapped by
+    H (the windows sum to 1), H a whole number of periods of the signal's own loudest line (measured on s, zero
+    padded), so that the loop keeps that line: a repetition every H has lines only at multiples of rate / H, and
+    one of them is then the signal's line (to the rounding of H to a sample). A loop of any other length would move
+    the loudest line to the nearest multiple of rate / H (for a 10 ms transient, 200 Hz apart)."""
+    n = len(s)
+    f = loudest_line(s, rate, pad=16)
+    periods = max(1, int((n / 2) * f / rate))
+    hop = int(round(periods * rate / f))
+    while 2 * hop > n and periods > 1:
+        periods -= 1
+        hop = int(round(periods * rate / f))
+    if 2 * hop > n:  # shorter than two periods: the whole signal, not a whole number of periods
+        hop = n // 2
+    L = 2 * hop
+    w = 0.5 - 0.5 * np.cos(2 * np.pi * np.arange(L) / L)
+    seg = w * s[n - L :]
+    copies = int(np.ceil(min_seconds * rate / hop)) + 1
+    out = np.zeros(hop * (copies - 1) + L)
+    for k in range(copies):
+        out[k * hop : k * hop + L] += seg
+    return out[hop : hop * copies]  # without the fade-in and fade-out halves: every sample is two windows' sum
 
 
 def write_wav(path, samples, rate=RATE):
@@ -53,12 +73,13 @@ def read_wav(path):
     return data, rate
 
 
-def loudest_line(samples, rate, fmin=20.0):
-    """The frequency (Hz) of the largest line of the Hann-windowed spectrum above fmin, refined by parabolic
-    interpolation of the log amplitude between bins."""
+def loudest_line(samples, rate, fmin=20.0, pad=1):
+    """The frequency (Hz) of the largest line of the Hann-windowed spectrum above fmin (zero padded to `pad` times
+    the length), refined by parabolic interpolation of the log amplitude between bins."""
     x = np.asarray(samples, float) - np.mean(samples)
-    spec = np.abs(np.fft.rfft(x * np.hanning(len(x))))
-    f = np.fft.rfftfreq(len(x), 1.0 / rate)
+    m = int(pad * len(x))
+    spec = np.abs(np.fft.rfft(x * np.hanning(len(x)), m))
+    f = np.fft.rfftfreq(m, 1.0 / rate)
     spec[f < fmin] = 0.0
     k = int(np.argmax(spec))
     if 0 < k < len(spec) - 1 and spec[k - 1] > 0 and spec[k + 1] > 0:
@@ -77,7 +98,10 @@ def spectrogram_png(path, samples, rate, pitch=None, title="Spectrogram"):
 
     fig, ax = plt.subplots(figsize=(7, 3.5))
     nfft = 2048 if len(samples) >= 4096 else max(64, len(samples) // 4)
-    ax.specgram(samples, NFFT=nfft, Fs=rate, noverlap=nfft // 2, cmap="magma")
+    _, _, _, im = ax.specgram(samples, NFFT=nfft, Fs=rate, noverlap=nfft // 2, cmap="magma")
+    top = float(np.nanmax(im.get_array()))
+    im.set_clim(top - 60, top)  # 60 dB below the loudest: the faint sidebands of the loop's envelope drop out
+    fig.colorbar(im, ax=ax, label="dB")
     if pitch:
         ax.axhline(pitch, color="c", ls="--", lw=0.8, label=f"predicted {pitch:.0f} Hz")
         ax.set_ylim(0, min(rate / 2, 4 * pitch))

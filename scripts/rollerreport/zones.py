@@ -58,6 +58,40 @@ def _draw(ax, frame, lim):
     ax.set_title(f"t = {t:.4g}", fontsize=8)
 
 
+def patch_box(frames):
+    """(x0, x1, y0, y1): a window around every frame's contact vertices (state 1 or 2), or None without contact."""
+    pts = [fr[1][fr[3] > 0] for fr in frames if fr[3] is not None and np.any(fr[3] > 0)]
+    if not pts:
+        return None
+    p = np.concatenate(pts)
+    x0, x1, y0 = float(p[:, 0].min()), float(p[:, 0].max()), float(p[:, 1].min())
+    w = max(x1 - x0, 1e-12)
+    return x0 - 0.6 * w, x1 + 0.6 * w, y0 - 0.15 * w, y0 + 0.85 * w
+
+
+def _draw_zoom(ax, frame, box):
+    """The contact patch enlarged: the mesh near it and its stick (blue) and slip (red) vertices on the sheet."""
+    t, p, cells, state = frame
+    ax.clear()
+    x0, x1, y0, y1 = box
+    near = np.all((p[cells, 0] > x0 - (x1 - x0)) & (p[cells, 0] < x1 + (x1 - x0)) & (p[cells, 1] < y1 + (y1 - y0)), axis=1)
+    if near.any():
+        ax.triplot(p[:, 0], p[:, 1], cells[near], color="0.6", lw=0.4)
+    for v, col in STATE_COLOURS.items():
+        on = state == v
+        if v and on.any():
+            ax.plot(p[on, 0], p[on, 1], "o", ms=5, color=col, label=f"{STATE_NAMES[v]} ({int(on.sum())})")
+    sheet = float(p[state > 0, 1].min()) if np.any(state > 0) else y0
+    ax.axhline(sheet, color="k", lw=1.5)
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(y0, y1)
+    ax.set_aspect("equal")
+    ax.set_axis_off()
+    if np.any(state > 0):
+        ax.legend(loc="upper right", fontsize=7)
+    ax.set_title("the contact patch (vertices)", fontsize=8)
+
+
 def animate(frames, stem, fps=6):
     """The animation of frames at stem.gif (Pillow), stem.mp4 (ffmpeg) or stem_strip.png; returns (path, kind)."""
     import matplotlib
@@ -70,8 +104,14 @@ def animate(frames, stem, fps=6):
     if have_pil or shutil.which("ffmpeg"):
         from matplotlib import animation
 
-        fig, ax = plt.subplots(figsize=(4, 4))
-        anim = animation.FuncAnimation(fig, lambda i: _draw(ax, frames[i], lim), frames=len(frames))
+        box = patch_box(frames)
+        if box is None:
+            fig, ax = plt.subplots(figsize=(4, 4))
+            draw = lambda i: _draw(ax, frames[i], lim)  # noqa: E731
+        else:  # the whole roller and its contact patch enlarged (a printer roller's patch is 6 % of its diameter)
+            fig, (ax, az) = plt.subplots(1, 2, figsize=(8, 4))
+            draw = lambda i: (_draw(ax, frames[i], lim), _draw_zoom(az, frames[i], box))  # noqa: E731
+        anim = animation.FuncAnimation(fig, draw, frames=len(frames))
         if have_pil:
             path, writer, kind = f"{stem}.gif", animation.PillowWriter(fps=fps), "gif"
         else:

@@ -136,6 +136,11 @@ PetscErrorCode RollerWriteParameters(Roller ctx, PetscViewer h5)
   for (PetscInt i = 0; i < NUM_PARAMETERS; ++i) PetscCall(PetscViewerHDF5WriteAttribute(h5, "/parameters", p[i].name, PETSC_REAL, &p[i].value));
   PetscCall(PetscViewerHDF5WriteAttribute(h5, "/parameters", "obstacle", PETSC_INT, &obstacle));
   PetscCall(PetscViewerHDF5WriteAttribute(h5, "/parameters", "degree", PETSC_INT, &ctx->disc.degree));
+  /* the mesh as built (its accurate default follows -ts_max_time): what a later run on the same mesh, e.g. a
+     transient seeded from a -modes_output file (rollerreport.run), gives as -mesh_h, -mesh_h_contact, -mesh_contact_layer */
+  PetscCall(PetscViewerHDF5WriteAttribute(h5, "/parameters", "mesh_h", PETSC_REAL, &ctx->mesh.h));
+  PetscCall(PetscViewerHDF5WriteAttribute(h5, "/parameters", "mesh_h_contact", PETSC_REAL, &ctx->mesh.h_contact));
+  PetscCall(PetscViewerHDF5WriteAttribute(h5, "/parameters", "mesh_contact_layer", PETSC_REAL, &ctx->mesh.contact_layer));
   PetscFunctionReturn(0);
 }
 

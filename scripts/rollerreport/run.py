@@ -1,0 +1,272 @@
+"""python3 -m rollerreport.run SCENE.yaml OUTDIR: does the scene squeal? The one-command answer of issue 25
+(docs/squeal.md section 9.2): runs every step with build/roller and writes the report into OUTDIR.
+
+1. the CEA: `roller -options_file SCENE -modes` (the steady rolling state and its complex eigenvalues, section 3);
+2. the map over creep and friction around the scene: `roller ... -modes -sweep` (section 6; with --ranks N > 1
+   under `mpiexec -n N`, the cases on sub-communicators);
+3. the seeded transient of the least stable mode (the largest growth rate): `-initial_condition mode` on the CEA's
+   modes file (sections 4.2, 4.4), on the CEA's mesh (its /parameters mesh_h, mesh_h_contact, mesh_contact_layer and
+   degree are given again: the accurate default mesh follows -ts_max_time), dt and duration from the mode's
+   frequency (--steps-per-period, --periods);
+4. scene.json from the scene (units, Kelvin-Voigt tau, friction, creep, the audio time scale);
+5. the report (rollerreport.report: report.md, report.json, map.png, squeal.wav, spectrogram.png, zones.gif),
+   with every step's command (commands.json) so that each can be run again.
+
+Options after `--` go to every roller run (e.g. a coarser mesh: `-- -mesh_h 0.05 -mesh_h_contact 0.0112`). A step
+that fails is named in the report with its error line; the later steps still run where they can, and the driver
+exits 1.
+"""
+import argparse
+import json
+import math
+import os
+import shlex
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+from . import report
+
+# Non-dimensional scenes are heard as the same roller at a real size and rubber: the printer roller's (docs/squeal.md
+# 7.1: r_outer 12.5 mm, shear wave speed 23.6 m/s). Time then scales as length / wave speed.
+REF_R_OUTER, REF_SHEAR_SPEED = 0.0125, 23.6
+# roller's defaults (src/app/options.c) for what the scene may leave out
+DEFAULTS = {"r_inner": 0.25, "r_outer": 0.5, "young": 0.1, "poisson": 0.49, "density": 1.0, "omega": math.pi / 10,
+            "obstacle_depth": 0.025, "sheet_speed": 0.0, "friction": 0.0, "viscosity": 0.0, "damping": 0.0}
+
+
+def scene_options(path, extra):
+    """The scene's options as {name: string}: the YAML file's (flat `name: value`) overridden by the extra
+    command-line options (`-name value`, or `-flag` alone)."""
+    import yaml
+
+    with open(path) as f:
+        opts = {str(k): ("true" if v is True else "false" if v is False else str(v)) for k, v in (yaml.safe_load(f) or {}).items()}
+    k = 0
+    while k < len(extra):
+        name = extra[k].lstrip("-")
+        if k + 1 < len(extra) and not (extra[k + 1].startswith("-") and not _is_number(extra[k + 1])):
+            opts[name], k = extra[k + 1], k + 2
+        else:
+            opts[name], k = "true", k + 1
+    return opts
+
+
+def _is_number(s):
+    try:
+        float(s)
+        return True
+    except ValueError:
+        return False
+
+
+def value(opts, name):
+    return float(opts.get(name, DEFAULTS[name]))
+
+
+def detect_units(opts):
+    """'si' when the modulus is a real rubber's in Pa (>= 1e3: the non-dimensional scenes have young ~ 0.1 and
+    r_outer 0.5, an SI roller young ~ 1e6 and r_outer ~ 0.01), else 'nd'."""
+    return "si" if value(opts, "young") >= 1e3 else "nd"
+
+
+def scene_json(name, opts, units):
+    """scene.json (docs/squeal.md 9.1) from the scene's options."""
+    omega, r = value(opts, "omega"), value(opts, "r_outer")
+    surface = omega * r
+    scene = {"name": name, "units": units, "friction": value(opts, "friction"), "sheet_speed": value(opts, "sheet_speed"),
+             "surface_speed": surface, "creep": 1.0 - value(opts, "sheet_speed") / surface if surface else float("nan"),
+             "kelvin_voigt_tau": value(opts, "viscosity")}
+    if "friction_static" in opts:
+        scene["friction_static"] = float(opts["friction_static"])
+    if units == "nd":  # the roller at the reference size and rubber: t_si = s t_nd
+        c_nd = math.sqrt(value(opts, "young") / (2 * (1 + value(opts, "poisson"))) / value(opts, "density"))
+        scene["seconds_per_unit"] = (REF_R_OUTER / r) * (c_nd / REF_SHEAR_SPEED)
+    return scene
+
+
+def map_grid(scene, creeps=None, frictions=None):
+    """(creeps, sheet speeds, frictions) of the map: by default the creeps c/2, c, 2c and 1 (the sheet held: full
+    sliding, a jam) around the scene's c, and the frictions mu/2, mu and the largest allowed (the static coefficient
+    of a weakening law, which -friction may not exceed, else 1.5 mu). The scene's own creep and friction are always
+    in the map (its cell is the CEA's case: the scene's -sheet_speed as given)."""
+    c, mu = scene["creep"], scene["friction"]
+    if creeps is None:
+        creeps = [c / 2, 2 * c, 1.0] if c > 0 else [0.01, 0.1, 1.0]
+    if frictions is None:
+        top = scene.get("friction_static", mu)
+        frictions = [mu / 2, top if top > mu else 1.5 * mu]
+    creeps = sorted(set([c] + [x for x in creeps if abs(x - c) > 1e-9]))
+    speeds = [scene["sheet_speed"] if x == c else scene["surface_speed"] * (1 - x) for x in creeps]
+    return creeps, speeds, sorted(set([mu] + [x for x in frictions if abs(x - mu) > 1e-12]))
+
+
+def leading_row(path):
+    """(row index in the CSV, row) of the least stable mode (rollerreport.report.leading_mode)."""
+    rows = report.read_rows(path)
+    mode = report.leading_mode(rows)
+    return rows.index(mode), mode
+
+
+def mesh_options(modes_h5, extra):
+    """The CEA's mesh as options (its /parameters), except those the extra options give."""
+    import h5py
+
+    with h5py.File(modes_h5, "r") as f:
+        par = dict(f["parameters"].attrs)
+    out = []
+    for name in ("mesh_h", "mesh_h_contact", "mesh_contact_layer", "degree"):
+        if name in par and f"-{name}" not in extra:
+            v = np.asarray(par[name]).ravel()[0]
+            out += [f"-{name}", repr(float(v)) if name != "degree" else str(int(v))]
+    return out
+
+
+class Steps:
+    """Runs the commands of the report, each with its log in OUTDIR/logs, and records them (commands.json)."""
+
+    def __init__(self, out):
+        self.out, self.done = out, []
+        self.env = dict(os.environ)
+        if hasattr(os, "geteuid") and os.geteuid() == 0:  # Open MPI refuses root unless told (containers, CI)
+            self.env.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
+            self.env.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+        self.env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
+        os.makedirs(os.path.join(out, "logs"), exist_ok=True)
+
+    def run(self, name, cmd, what):
+        log = os.path.join(self.out, "logs", f"{name}.log")
+        print(f"rollerreport.run: {name}: {shlex.join(cmd)}", flush=True)
+        t0 = time.time()
+        with open(log, "w") as f:
+            rc = subprocess.run(cmd, stdout=f, stderr=subprocess.STDOUT, cwd=self.out, env=self.env).returncode
+        seconds = time.time() - t0
+        error = ""
+        if rc:
+            with open(log, errors="replace") as f:
+                lines = f.read().splitlines()
+            skip = ("#", "Option Table", "See https", "Petsc Release", "Configure options", " on a ", "---")
+            err = [ln.split("ERROR:")[-1].strip() for ln in lines if "PETSC ERROR" in ln]
+            err = [e for e in err if e and not e.startswith("-") and not any(w in e for w in skip)]
+            error = ": ".join(err[:2]) if err else (lines[-1] if lines else f"exit {rc}")
+        self.done.append({"step": name, "what": what, "command": shlex.join(cmd), "cwd": self.out,
+                          "seconds": round(seconds, 1), "returncode": rc, "error": error, "log": f"logs/{name}.log"})
+        print(f"rollerreport.run: {name}: {'ok' if not rc else 'FAILED (' + error + ')'} in {seconds:.1f} s", flush=True)
+        self.save()
+        return rc == 0
+
+    def save(self):
+        with open(os.path.join(self.out, "commands.json"), "w") as f:
+            json.dump(self.done, f, indent=1)
+
+
+def map_command(base, scene, a, extra, out):
+    """The map's sweep command and its description."""
+    creeps, speeds, mus = map_grid(scene, [float(x) for x in a.creeps.split(",")] if a.creeps else None,
+                                   [float(x) for x in a.frictions.split(",")] if a.frictions else None)
+    mpi = [a.mpiexec, "-n", str(a.ranks)] if a.ranks > 1 else []
+    cmd = mpi + base + ["-modes", "-modes_nev", str(a.nev), "-sweep", os.path.join(out, "sweep.csv"), "-sweep_sheet_speed",
+                        ",".join(repr(v) for v in speeds), "-sweep_friction", ",".join(repr(v) for v in mus), "-quiet"]
+    return cmd + extra, f"the map over creep {[round(x, 6) for x in creeps]} (sheet_speed) and friction {mus} (docs/squeal.md 6)"
+
+
+def transient_command(base, opts, a, extra, out, scene):
+    """The seeded transient's command and its description; records the seeded mode in scene."""
+    j = lambda f: os.path.join(out, f)  # noqa: E731
+    rows = report.read_rows(j("modes.csv"))
+    k, mode = leading_row(j("modes.csv")) if a.mode is None else (a.mode, rows[a.mode])
+    if not float(mode["im"]) > 0:
+        raise SystemExit(f"rollerreport.run: --mode {k}: row {k} of modes.csv has Im lambda = {mode['im']}; allowed: a "
+                         "row with Im lambda > 0 (an oscillating mode)")
+    f = float(mode["im"]) / (2 * math.pi)
+    dt = 1.0 / (f * a.steps_per_period)
+    n = int(math.ceil(a.periods * a.steps_per_period))
+    amp = a.amplitude if a.amplitude is not None else 0.02 * value(opts, "obstacle_depth")
+    scene["seeded_mode"] = {"row": k, "re": float(mode["re"]), "im": float(mode["im"]), "dt": dt, "steps": n}
+    cmd = base + mesh_options(j("modes.h5"), extra) + [
+        "-ts_scheme", "dmf", "-ts_dt", repr(dt), "-ts_max_time", repr(n * dt), "-ts_max_steps", str(n),
+        "-obstacle_speed", "1e6", "-initial_condition", "mode", "-initial_mode_file", j("modes.h5"), "-initial_mode",
+        str(k), "-ic_amplitude", repr(amp), "-monitor_csv", j("transient.csv"), "-output", j("transient.h5"),
+        "-output_every", str(max(1, n // 36)), "-checkpoint", j("checkpoint.h5"), "-quiet"]
+    what = (f"the transient seeded on mode {k} ({'the least stable' if a.mode is None else 'chosen'}) about the CEA's "
+            f"steady state, {a.steps_per_period:g} steps per period, {a.periods:g} periods (docs/squeal.md 4.2)")
+    return cmd + extra, what
+
+
+# what a run writes into OUTDIR: removed first, so that nothing of an earlier run is reported as this one's
+OUTPUTS = ("modes.csv", "modes.h5", "modes.xmf", "steady.csv", "sweep.csv", "transient.csv", "transient.h5", "transient.xmf",
+           "scene.json", "commands.json", "report.md", "report.json", "map.png", "squeal.wav", "spectrogram.png",
+           "zones.gif", "zones.mp4", "zones_strip.png")
+
+
+def parse(argv):
+    p = argparse.ArgumentParser(prog="python3 -m rollerreport.run", description=__doc__,
+                                formatter_class=argparse.RawDescriptionHelpFormatter,
+                                epilog="-- OPTIONS: roller options for every run (after the driver's own)")
+    p.add_argument("scene", help="the scene's YAML options file (jobs/*.yaml)")
+    p.add_argument("out", help="the output folder (created)")
+    p.add_argument("--roller", default=None, help="the executable (default: build/roller of this source tree)")
+    p.add_argument("--ranks", type=int, default=1, help="ranks of the map's sweep (mpiexec -n N; default 1)")
+    p.add_argument("--mpiexec", default="mpiexec")
+    p.add_argument("--units", choices=("auto", "si", "nd"), default="auto",
+                   help="si (Pa, m, s: the pitch is the mode's frequency) or nd (non-dimensional: heard at the printer "
+                        "roller's size and rubber); auto: si when -young >= 1e3")
+    p.add_argument("--nev", type=int, default=40, help="-modes_nev of the CEA and the map (default 40)")
+    p.add_argument("--creeps", default=None, help="the map's creeps besides the scene's c, comma-separated (default c/2, "
+                   "2c, 1: 1 is the sheet held, full sliding)")
+    p.add_argument("--frictions", default=None, help="the map's frictions besides the scene's mu (default mu/2 and mu_s, "
+                   "else 1.5 mu)")
+    p.add_argument("--no-map", action="store_true", help="skip the map")
+    p.add_argument("--steps-per-period", type=float, default=100, help="transient: dt = period / this (default 100)")
+    p.add_argument("--periods", type=float, default=8, help="transient: its length in periods of the mode (default 8)")
+    p.add_argument("--amplitude", type=float, default=None,
+                   help="-ic_amplitude of the seeded mode (default 2 %% of -obstacle_depth)")
+    p.add_argument("--mode", type=int, default=None, help="the seeded mode's row in modes.csv (default the least stable)")
+    p.add_argument("--signal", default="auto", help="the transient's CSV column heard (default auto: of contact_force "
+                   "and friction_force the one that fluctuates most)")
+    cut = argv.index("--") if "--" in argv else len(argv)
+    return p.parse_args(argv[:cut]), argv[cut + 1 :]
+
+
+def main(argv=None):
+    a, extra = parse(sys.argv[1:] if argv is None else list(argv))
+    src = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    roller = os.path.abspath(a.roller or os.path.join(src, "build", "roller"))
+    scene_path, out = os.path.abspath(a.scene), os.path.abspath(a.out)
+    os.makedirs(out, exist_ok=True)
+    for name in OUTPUTS:
+        for stale in (name, name + ".part"):
+            if os.path.exists(os.path.join(out, stale)):
+                os.remove(os.path.join(out, stale))
+    opts = scene_options(scene_path, extra)
+    scene = scene_json(os.path.splitext(os.path.basename(scene_path))[0], opts, detect_units(opts) if a.units == "auto" else a.units)
+    steps = Steps(out)
+    base = [roller, "-options_file", scene_path]
+    j = lambda f: os.path.join(out, f)  # noqa: E731
+
+    cea_ok = steps.run("cea", base + ["-modes", "-modes_nev", str(a.nev), "-modes_csv", j("modes.csv"), "-modes_output",
+                                      j("modes.h5"), "-modes_steady_csv", j("steady.csv")] + extra,
+                       "the steady state and its complex eigenvalues (docs/squeal.md 3)")
+    if not a.no_map:
+        steps.run("map", *map_command(base, scene, a, extra, out))
+    if cea_ok:
+        steps.run("transient", *transient_command(base, opts, a, extra, out, scene))
+    with open(j("scene.json"), "w") as fh:
+        json.dump(scene, fh, indent=1)
+    cmd = ["env", f"PYTHONPATH={os.path.join(src, 'scripts')}", sys.executable, "-m", "rollerreport", out, "--signal", a.signal]
+    steps.done.append({"step": "report", "what": "the report (docs/squeal.md 9.1)", "command": shlex.join(cmd),
+                       "cwd": out, "seconds": None, "returncode": 0, "error": "", "log": ""})
+    steps.save()
+    t0 = time.time()
+    r = report.write(out, a.signal)
+    steps.done[-1]["seconds"] = round(time.time() - t0, 1)
+    steps.save()
+    failed = [s["step"] for s in steps.done if s["returncode"]]
+    print(f"rollerreport.run: wrote {', '.join(r['files'])} in {out}" + (f"; failed: {', '.join(failed)}" if failed else ""))
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
