@@ -11,6 +11,8 @@ sheet pressed in by t = 0.5 (-obstacle_speed 0.05) and run to t = 4; the rows ar
     the killed run's) and ends with the uninterrupted map's CSV; a run with another scene refuses the journals and
     leaves them; no journal remains after a complete map;
   - the job array's way: slices 0,2 and 1,2 merged by scripts/merge_sweep.py are the map;
+  - a case whose run fails (the VI contact solver held to one Newton step, an error at the first step) is a row with
+    status failed and NaN results, and the map goes on;
   - the physics of Coulomb friction: where the whole contact slips (stick fraction < 0.05) the mean friction force
     is -mu times the mean contact force (to 2 %), where it sticks in part (1 % creep) |Q| < mu P."""
 import csv
@@ -97,6 +99,11 @@ run(MAP + ["-sweep", "part_0.csv", "-sweep_slice", "0,2"])
 run(MAP + ["-sweep", "part_1.csv", "-sweep_slice", "1,2"], nproc=2)
 merge = subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "merge_sweep.py"), "part_0.csv", "part_1.csv", "-o", "merged.csv", "--cases", str(len(expect))], capture_output=True, text=True)
 c.check(merge.returncode == 0 and without_wall("merged.csv") == without_wall("np1.csv"), f"slices 0,2 and 1,2 merged = the map ({merge.stdout.strip() or merge.stderr.strip()[-200:]})")
+
+# a run that fails is its case's status: the frictionless VI solver refused after one iteration
+run(SCENE + ["-friction", 0, "-ts_max_time", 0.1, "-sweep", "failing.csv", "-sweep_obstacle_depth", "0.02,0.025", "-contact_solver", "vi", "-contact_vi_snes_max_it", 1, "-contact_vi_snes_error_if_not_converged"])
+failing = rows("failing.csv")
+c.check(len(failing) == 2 and all(r["status"] == "failed" and r["contact_force"] == "nan" and r["growth_rate"] == "nan" for r in failing), f"two failing runs: both rows status failed with NaN results, the map complete ({[r['status'] for r in failing]})")
 
 # Coulomb friction: full slip gives Q = -mu P, partial stick |Q| < mu P
 for r in np1:
