@@ -61,6 +61,7 @@ cases = [
     (["-modes", "-sweep", "bad_sweep.csv", "-sweep_omega", "0,0.1x,0.2"], "-sweep_omega", "0.1x"),
     (["-modes", "-sweep", "bad_sweep.csv", "-sweep_young_range", "0.05,0.2"], "-sweep_young_range", "0.05,0.2"),
     (["-modes", "-sweep", "bad_sweep.csv", "-sweep_poisson", "0.3,0.4"], "-sweep_poisson", "omega, young"),
+    (["-obstacle", "-sweep", "bad_sweep.csv", "-sweep_friction", "0.3,0.8", "-sweep_window", "0"], "-sweep_window", "(0, 1]"),
     # issue 26: nothing passes silently
     (["-youngg", "0.2"], "-youngg", "did you mean -young?"),
     (["-frictoin", "0.8"], "-frictoin", "did you mean -friction?"),

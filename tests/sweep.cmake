@@ -3,3 +3,7 @@
 # splitting growing with omega, two -sweep_slice parts merged (scripts/merge_sweep.py) equal to the whole map, and
 # scripts/plot_sweep.py's picture.
 roller_test(modes_sweep modes_sweep.py LABELS mpi PROCESSORS 2 TIMEOUT 300)
+# -sweep without -modes (src/app/sweep_transient.c, docs/squeal.md section 6.5): a 2 x 3 transient map of the feeder
+# (creep x friction) by one and two ranks, the same but for wall_time; each row its single run's window means; a map
+# killed by SIGKILL resumed from its journals equal to the whole; two slices merged; Q = -mu P where the contact slips.
+roller_test(transient_sweep transient_sweep.py LABELS mpi PROCESSORS 2 TIMEOUT 300)

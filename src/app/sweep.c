@@ -1,22 +1,19 @@
-/* -sweep F.csv (docs/squeal.md section 6): a stability map in one run. The cases are the Cartesian product of the values
-   given to a few scene options (-sweep_omega 0,0.1,0.2 -sweep_young_range 0.05,0.2,4 ...); MPI_COMM_WORLD is split
-   into -sweep_subcomms sub-communicators and the j-th case of the run goes to sub-communicator j % k, which solves it
-   as a separate `roller -modes` would: the case's values are set in this process's options database, a Roller is
-   created on the sub-communicator, set from the options, set up and solved, and its eigenvalues (ctx->eig) are kept.
-   Whatever the scene (free annulus, obstacle and friction) the case is the scene of the other options on the command
-   line, so the sweep needs no change when -modes learns a new scene. The eigenvalues of all cases are gathered to
-   rank 0 and written as one CSV (sweep_csv.c). */
+/* -sweep F.csv (docs/squeal.md section 6): the plan of a map. The cases are the Cartesian product of the values given
+   to a few scene options (-sweep_omega 0,0.1,0.2 -sweep_young_range 0.05,0.2,4 ...), numbered with the last swept
+   option varying fastest; with -modes each case is an eigenvalue problem, without it a transient reduced to one row
+   over the last -sweep_window of its run (sweep_transient.c). The runs are sweep_run.c's. */
 #include "app/sweep.h"
-#include "io/io.h"
+#include <ctype.h>
 
 /* The scene options a sweep may vary: one row each (and nothing else to add for a new one: the case sets the option
    by name, the scene's own options block reads and validates it). */
 static const char *const SweepParams[] = {"omega", "young", "friction", "obstacle_depth", "sheet_speed"};
 #define NPARAMS ((PetscInt)(sizeof(SweepParams) / sizeof(SweepParams[0])))
 
-/* The outputs of a single run, which would collide between the cases: the sweep's CSV has every eigenvalue. */
-static const char *const CaseOutputs[] = {"-modes_csv", "-modes_output", "-monitor_csv", "-output", "-checkpoint"};
-#define NOUTPUTS ((PetscInt)(sizeof(CaseOutputs) / sizeof(CaseOutputs[0])))
+/* The options of the sweep itself besides the swept lists */
+static const char *const SweepOptions[] = {"-sweep_subcomms", "-sweep_slice", "-sweep_window", "-sweep_fit"};
+
+const char *const RollerSweepFits[] = {"contact_force", "friction_force", "shaft_torque", "R", "alpha", "RollerSweepFit", "ROLLER_SWEEP_FIT_", NULL};
 
 PetscErrorCode RollerSweepFormatReal(char buf[], size_t len, PetscReal v)
 {
@@ -105,16 +102,74 @@ static PetscErrorCode CheckUnknown(MPI_Comm comm)
 
     PetscCall(PetscStrbeginswith(tok, "-sweep_", &match));
     if (!match) continue;
-    PetscCall(PetscStrcmp(tok, "-sweep_subcomms", &known));
-    if (!known) PetscCall(PetscStrcmp(tok, "-sweep_slice", &known));
+    for (PetscInt i = 0; i < (PetscInt)(sizeof(SweepOptions) / sizeof(SweepOptions[0])) && !known; ++i) PetscCall(PetscStrcmp(tok, SweepOptions[i], &known));
     for (PetscInt p = 0; p < NPARAMS && !known; ++p) {
       PetscCall(PetscSNPrintf(opt, sizeof(opt), "-sweep_%s", SweepParams[p]));
       PetscCall(PetscStrcmp(tok, opt, &known));
       if (!known) PetscCall(PetscStrlcat(opt, "_range", sizeof(opt)));
       if (!known) PetscCall(PetscStrcmp(tok, opt, &known));
     }
-    PetscCheck(known, comm, PETSC_ERR_ARG_WRONG, "%s: not a sweep option; allowed: -sweep_<name> v1,v2,... or -sweep_<name>_range a,b,n for <name> one of %s (the table SweepParams in src/app/sweep.c), -sweep_subcomms k, -sweep_slice i,k", tok, names);
+    PetscCheck(known, comm, PETSC_ERR_ARG_WRONG, "%s: not a sweep option; allowed: -sweep_<name> v1,v2,... or -sweep_<name>_range a,b,n for <name> one of %s (the table SweepParams in src/app/sweep.c), -sweep_subcomms k, -sweep_slice i,k, -sweep_window w, -sweep_fit column", tok, names);
   }
+  PetscCall(PetscFree(all));
+  PetscFunctionReturn(0);
+}
+
+/* qsort order of strings, the NULLs (items left out) last */
+static int CompareStrings_Null(const void *a, const void *b)
+{
+  const char *x = *(const char *const *)a, *y = *(const char *const *)b;
+
+  if (!x || !y) return (x == NULL) - (y == NULL);
+  return strcmp(x, y);
+}
+
+/* What makes every case's scene besides its swept values: every option of the database but the sweep's own, the
+   swept ones (which each case sets) and those that change no result (-quiet, -log_view, -options_left), as
+   "-name value" items sorted and joined by spaces. A resumed map checks that its journals were written by the same
+   scene (sweep_journal.c): a case already done is skipped only if it would come out the same. */
+static PetscErrorCode SceneOptions(const RollerSweepPlan *plan, char **scene)
+{
+  static const char *const ignore[] = {"-quiet", "-log_view", "-options_left", "-help"};
+  char                    *all, *tok, *save = NULL, **item;
+  size_t                   len, n = 0, total = 1;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetAll(NULL, &all));
+  PetscCall(PetscStrlen(all, &len));
+  PetscCall(PetscCalloc1(len / 2 + 2, &item));
+  for (tok = strtok_r(all, " ", &save); tok; tok = strtok_r(NULL, " ", &save)) {
+    if (tok[0] == '-' && isalpha((unsigned char)tok[1])) item[n++] = tok; /* a name; else a value of the last name */
+    else if (n) tok[-1] = '\x1f';                                         /* joined to it, marked apart from items */
+  }
+  for (size_t i = 0; i < n; ++i) {
+    PetscBool skip, match;
+    char     *name, *end;
+
+    PetscCall(PetscStrallocpy(item[i], &name));
+    if ((end = strchr(name, '\x1f'))) *end = '\0';
+    PetscCall(PetscStrbeginswith(name, "-sweep", &skip));
+    for (size_t k = 0; k < sizeof(ignore) / sizeof(ignore[0]) && !skip; ++k) PetscCall(PetscStrcasecmp(name, ignore[k], &skip));
+    for (PetscInt q = 0; q < plan->nparams && !skip; ++q) {
+      PetscCall(PetscStrcasecmp(name + 1, plan->name[q], &match));
+      skip = match;
+    }
+    PetscCall(PetscFree(name));
+    if (skip) item[i] = NULL;
+    else {
+      for (char *c = item[i]; *c; ++c)
+        if (*c == '\x1f') *c = ' ';
+      total += strlen(item[i]) + 1;
+    }
+  }
+  qsort(item, n, sizeof(*item), CompareStrings_Null);
+  PetscCall(PetscCalloc1(total, scene));
+  for (size_t i = 0; i < n; ++i)
+    if (item[i]) {
+      if ((*scene)[0]) PetscCall(PetscStrlcat(*scene, " ", total));
+      PetscCall(PetscStrlcat(*scene, item[i], total));
+    }
+  PetscCall(PetscFree(item));
   PetscCall(PetscFree(all));
   PetscFunctionReturn(0);
 }
@@ -124,15 +179,18 @@ PetscErrorCode RollerSweepSetFromOptions(MPI_Comm comm, RollerSweepPlan *plan)
 {
   PetscMPIInt size;
   PetscInt    nslice = 2;
-  PetscBool   slice_set;
+  PetscBool   slice_set, modes = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(PetscMemzero(plan, sizeof(*plan)));
   plan->nsub     = size;
   plan->slice[1] = 1;
-  PetscOptionsBegin(comm, NULL, "Roller: sweep (docs/squeal.md section 6): -modes for every case of a product of scene option values, the cases spread over sub-communicators", NULL);
-  PetscCall(PetscOptionsString("-sweep", "Run a sweep of -modes; F.csv gathers every case's eigenvalues: case,<swept options>,re,im,frequency,growth_rate,order,wave,error", NULL, plan->csv, plan->csv, sizeof(plan->csv), NULL));
+  PetscCall(PetscOptionsGetBool(NULL, NULL, "-modes", &modes, NULL));
+  plan->transient = (PetscBool)!modes;
+  PetscOptionsBegin(comm, NULL, "Roller: sweep (docs/squeal.md section 6): -modes or a transient for every case of a product of scene option values, the cases spread over sub-communicators", NULL);
+  PetscCall(PetscOptionsString("-sweep", "Run a map; F.csv gathers every case's rows. With -modes: case,<swept options>,re,im,frequency,growth_rate,order,wave,error; without: case,<swept options>,window_start,window_end,contact_force,friction_force,stick_fraction,amplitude,growth_rate,frequency,wall_time,status", NULL,
+                               plan->csv, plan->csv, sizeof(plan->csv), NULL));
   for (PetscInt p = 0; p < NPARAMS; ++p) {
     char opt[64], help[128], list[PETSC_MAX_PATH_LEN] = "", range[PETSC_MAX_PATH_LEN] = "";
 
@@ -152,7 +210,12 @@ PetscErrorCode RollerSweepSetFromOptions(MPI_Comm comm, RollerSweepPlan *plan)
   }
   PetscCall(PetscOptionsInt("-sweep_subcomms", "Sub-communicators, each solving its own cases (default: the number of ranks, one rank per case)", NULL, plan->nsub, &plan->nsub, NULL));
   PetscCall(PetscOptionsIntArray("-sweep_slice", "i,k: take only the cases c with c % k == i (one task of a job array; default 0,1: all)", NULL, plan->slice, &nslice, &slice_set));
+  plan->window = 0.5;
+  PetscCall(PetscOptionsReal("-sweep_window", "Transient map: the rows' means and fits are over the last w of each run's time, 0 < w <= 1", NULL, plan->window, &plan->window, NULL));
+  plan->fit = ROLLER_SWEEP_FIT_CONTACT_FORCE;
+  PetscCall(PetscOptionsEnum("-sweep_fit", "Transient map: the column whose growth rate and frequency are fitted over the window", "RollerSweepFit", RollerSweepFits, (PetscEnum)plan->fit, (PetscEnum *)&plan->fit, NULL));
   PetscOptionsEnd();
+  RollerCheckOption(comm, "-sweep_window", plan->window, plan->window > 0 && plan->window <= 1, "in (0, 1] (the last fraction of each run's time)");
   PetscCheck(plan->nsub >= 1 && plan->nsub <= size, comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_subcomms %" PetscInt_FMT ": allowed 1 to the number of ranks, %d", plan->nsub, size);
   if (slice_set && !(nslice == 2 && plan->slice[1] >= 1 && plan->slice[0] >= 0 && plan->slice[0] < plan->slice[1])) {
     char given[64];
@@ -167,6 +230,7 @@ PetscErrorCode RollerSweepSetFromOptions(MPI_Comm comm, RollerSweepPlan *plan)
     plan->ncases *= plan->count[q];
   }
   PetscCall(PetscOptionsGetBool(NULL, NULL, "-quiet", &plan->quiet, NULL));
+  PetscCall(SceneOptions(plan, &plan->scene));
   PetscFunctionReturn(0);
 }
 
@@ -175,6 +239,24 @@ PetscErrorCode RollerSweepPlanDestroy(RollerSweepPlan *plan)
   PetscFunctionBeginUser;
   for (PetscInt q = 0; q < plan->nparams; ++q) PetscCall(PetscFree(plan->values[q]));
   plan->nparams = 0;
+  PetscCall(PetscFree(plan->scene));
+  PetscFunctionReturn(0);
+}
+
+/* Case c's values as the CSV prints them: ",v1,v2,..." */
+PetscErrorCode RollerSweepCaseParams(const RollerSweepPlan *plan, PetscInt c, char buf[], size_t len)
+{
+  PetscReal v[ROLLER_SWEEP_MAX_PARAMS];
+  char      value[32];
+
+  PetscFunctionBeginUser;
+  PetscCall(RollerSweepCaseValues(plan, c, v));
+  buf[0] = '\0';
+  for (PetscInt q = 0; q < plan->nparams; ++q) {
+    PetscCall(RollerSweepFormatReal(value, sizeof(value), v[q]));
+    PetscCall(PetscStrlcat(buf, ",", len));
+    PetscCall(PetscStrlcat(buf, value, len));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -186,140 +268,5 @@ PetscErrorCode RollerSweepCaseValues(const RollerSweepPlan *plan, PetscInt c, Pe
     v[q] = plan->values[q][c % plan->count[q]];
     c /= plan->count[q];
   }
-  PetscFunctionReturn(0);
-}
-
-/* An option of this process's database set (to value, NULL for a flag) or removed (set false) for the cases, and
-   put back after. */
-typedef struct {
-  char      name[64], value[PETSC_MAX_PATH_LEN];
-  PetscBool had;
-} SavedOption;
-
-static PetscErrorCode OptionPush(const char name[], PetscBool set, const char value[], SavedOption *s)
-{
-  PetscFunctionBeginUser;
-  PetscCall(PetscStrncpy(s->name, name, sizeof(s->name)));
-  PetscCall(PetscOptionsGetString(NULL, NULL, name, s->value, sizeof(s->value), &s->had));
-  if (set) PetscCall(PetscOptionsSetValue(NULL, name, value));
-  else PetscCall(PetscOptionsClearValue(NULL, name));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode OptionPop(const SavedOption *s)
-{
-  PetscFunctionBeginUser;
-  if (s->had) PetscCall(PetscOptionsSetValue(NULL, s->name, s->value[0] ? s->value : NULL));
-  else PetscCall(PetscOptionsClearValue(NULL, s->name));
-  PetscFunctionReturn(0);
-}
-
-/* One case on the sub-communicator: exactly a `roller -modes` run with the case's values on the command line. */
-static PetscErrorCode SolveCase(MPI_Comm sub, const RollerSweepPlan *plan, PetscInt c, RollerSweepRows *rows, PetscInt *n, PetscReal *growth)
-{
-  PetscReal   v[ROLLER_SWEEP_MAX_PARAMS];
-  SavedOption saved[ROLLER_SWEEP_MAX_PARAMS];
-  Roller      roller;
-  PetscMPIInt rank;
-
-  PetscFunctionBeginUser;
-  PetscCall(RollerSweepCaseValues(plan, c, v));
-  for (PetscInt q = 0; q < plan->nparams; ++q) {
-    char opt[64], value[32];
-
-    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%s", plan->name[q]));
-    PetscCall(RollerSweepFormatReal(value, sizeof(value), v[q]));
-    PetscCall(OptionPush(opt, PETSC_TRUE, value, &saved[q]));
-  }
-  PetscCall(RollerCreate(sub, &roller));
-  PetscCall(RollerSetFromOptions(roller));
-  PetscCall(RollerSetUp(roller));
-  PetscCall(RollerSolve(roller));
-  PetscCallMPI(MPI_Comm_rank(sub, &rank));
-  if (!rank) PetscCall(RollerSweepRowsAppend(rows, c, &roller->eig));
-  *n      = roller->eig.n;
-  *growth = PETSC_MIN_REAL;
-  for (PetscInt j = 0; j < roller->eig.n; ++j) *growth = PetscMax(*growth, roller->eig.re[j]);
-  PetscCall(RollerDestroy(&roller));
-  for (PetscInt q = plan->nparams - 1; q >= 0; --q) PetscCall(OptionPop(&saved[q]));
-  PetscFunctionReturn(0);
-}
-
-static PetscErrorCode CaseLabel(const RollerSweepPlan *plan, PetscInt c, char buf[], size_t len)
-{
-  PetscReal v[ROLLER_SWEEP_MAX_PARAMS];
-  char      item[96], value[32];
-
-  PetscFunctionBeginUser;
-  PetscCall(RollerSweepCaseValues(plan, c, v));
-  buf[0] = '\0';
-  for (PetscInt q = 0; q < plan->nparams; ++q) {
-    PetscCall(RollerSweepFormatReal(value, sizeof(value), v[q]));
-    PetscCall(PetscSNPrintf(item, sizeof(item), "%s%s %s", q ? ", " : "", plan->name[q], value));
-    PetscCall(PetscStrlcat(buf, item, len));
-  }
-  PetscFunctionReturn(0);
-}
-
-/* This sub-communicator's cases: the j-th case of the run's slice if j % k is its colour. A failed case names
-   itself before the error goes up (Open MPI then ends the other ranks). */
-static PetscErrorCode SolveCases(MPI_Comm sub, PetscMPIInt color, const RollerSweepPlan *plan, RollerSweepRows *rows)
-{
-  PetscFunctionBeginUser;
-  for (PetscInt c = plan->slice[0], j = 0; c < plan->ncases; c += plan->slice[1], ++j) {
-    char           label[256];
-    PetscInt       n      = 0;
-    PetscReal      growth = 0;
-    PetscLogDouble t0     = MPI_Wtime();
-    PetscErrorCode ierr;
-
-    if (j % plan->nsub != color) continue;
-    PetscCall(CaseLabel(plan, c, label, sizeof(label)));
-    ierr = SolveCase(sub, plan, c, rows, &n, &growth);
-    if (ierr) PetscCall(PetscFPrintf(PETSC_COMM_SELF, PETSC_STDERR, "sweep: case %" PetscInt_FMT "/%" PetscInt_FMT " (%s) on subcomm %d failed\n", c, plan->ncases, label, color));
-    PetscCall(ierr);
-    if (!plan->quiet) PetscCall(PetscPrintf(sub, "sweep: case %" PetscInt_FMT "/%" PetscInt_FMT " (%s) on subcomm %d: %" PetscInt_FMT " eigenvalues, max growth %.3g, %.2f s\n", c, plan->ncases, label, color, n, (double)growth, MPI_Wtime() - t0));
-  }
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode RollerSweep(MPI_Comm comm)
-{
-  RollerSweepPlan plan;
-  RollerSweepRows rows = {0, 0, NULL};
-  PetscSubcomm    psub;
-  SavedOption     saved[NOUTPUTS + 1];
-  PetscBool       modes = PETSC_FALSE;
-  PetscLogDouble  t0    = MPI_Wtime();
-  char            part[PETSC_MAX_PATH_LEN];
-
-  PetscFunctionBeginUser;
-  PetscCall(RollerSweepSetFromOptions(comm, &plan));
-  PetscCheck(plan.csv[0], comm, PETSC_ERR_ARG_WRONG, "-sweep needs the name of its CSV, -sweep F.csv");
-  PetscCheck(plan.nparams, comm, PETSC_ERR_ARG_WRONG, "-sweep %s: nothing to sweep; give -sweep_<name> v1,v2,... or -sweep_<name>_range a,b,n for <name> one of omega, young, friction, obstacle_depth, sheet_speed", plan.csv);
-  PetscCall(PetscOptionsGetBool(NULL, NULL, "-modes", &modes, NULL));
-  PetscCheck(modes, comm, PETSC_ERR_ARG_WRONG, "-sweep %s maps the eigenvalues of every case: give -modes too", plan.csv);
-  PetscCall(RollerJoinPath(part, sizeof(part), plan.csv, ".part", "-sweep"));
-  PetscCall(RollerRemoveStale(comm, plan.csv));
-  PetscCall(RollerCheckWritable(comm, "-sweep", part)); /* before hours of cases, not after */
-
-  PetscCall(PetscSubcommCreate(comm, &psub));
-  PetscCall(PetscSubcommSetNumber(psub, plan.nsub));
-  PetscCall(PetscSubcommSetType(psub, PETSC_SUBCOMM_CONTIGUOUS));
-  for (PetscInt i = 0; i < NOUTPUTS; ++i) {
-    PetscCall(OptionPush(CaseOutputs[i], PETSC_FALSE, NULL, &saved[i]));
-    if (saved[i].had) PetscCall(PetscPrintf(comm, "sweep: %s %s is not written by the cases (the sweep's CSV %s has every eigenvalue)\n", CaseOutputs[i], saved[i].value, plan.csv));
-  }
-  PetscCall(OptionPush("-quiet", PETSC_TRUE, NULL, &saved[NOUTPUTS])); /* the progress lines instead of each case's table */
-  PetscCall(SolveCases(PetscSubcommChild(psub), psub->color, &plan, &rows));
-  for (PetscInt i = NOUTPUTS; i >= 0; --i) PetscCall(OptionPop(&saved[i]));
-
-  PetscCall(RollerSweepWrite(comm, &plan, &rows));
-  if (!plan.quiet)
-    PetscCall(PetscPrintf(comm, "sweep: %" PetscInt_FMT " cases (slice %" PetscInt_FMT ",%" PetscInt_FMT ") on %" PetscInt_FMT " subcomms -> %s, %.2f s\n", (plan.ncases - plan.slice[0] + plan.slice[1] - 1) / plan.slice[1], plan.slice[0], plan.slice[1],
-                          plan.nsub, plan.csv, MPI_Wtime() - t0));
-  PetscCall(PetscSubcommDestroy(&psub));
-  PetscCall(RollerSweepRowsDestroy(&rows));
-  PetscCall(RollerSweepPlanDestroy(&plan));
   PetscFunctionReturn(0);
 }
