@@ -17,8 +17,8 @@
    along Gamma_C), and a node set slipping inside a stick zone pushes its upstream neighbour over the bound in the
    next solve while its own slip comes out backwards: flipping every node over the bound at once sent such a
    spurious slip node up the stick zone one node per iteration (one iteration per stick node, 73 on Carter's
-   scene at h_c = 0.001, past any fixed limit on finer meshes; docs/squeal.md section 3). Each node starts slipping
-   at most once per stick/slip pattern, so n + 100 iterations bound it. */
+   scene at h_c = 0.001, past any fixed limit on finer meshes; docs/squeal.md section 3). The limit, n + 100, leaves
+   room for one stick-to-slip switch per node (2-10 iterations measured). */
 static PetscErrorCode Tangential(MPI_Comm comm, PetscInt n, const PetscReal G[], const PetscReal d[], const PetscReal mu[], const PetscReal N[], PetscInt state[], PetscReal s[], PetscReal T[], PetscInt *its)
 {
   const PetscInt m = 2 * n, maxit = n + 100;
