@@ -43,8 +43,11 @@ Asserts (tolerances from the measurements in docs/friction.md 5.1, about 1.5-2x 
    of Mindlin's (measured 0.064-0.073, max 0.19-0.29: the reversal traction inside the stick zone deviates
    from Mindlin's curve by more than the mesh error, a shift of the stick zone by ~0.05 a that does not
    shrink with h (docs/friction.md 5.1); b itself matches).
-6. Quasi-static: the same mesh turned twice as slowly gives Q/(mu P) against the turned fraction within
-   0.03 (measured 0.024 quick, 0.021 long), and passes 1.-5. as well (checked above for every run).
+6. Rate: the same mesh turned twice as slowly gives Q/(mu P) against the turned fraction within
+   0.03 (measured 0.024 quick, 0.021 long), and passes 1.-5. as well (checked above for every run). This
+   bounds the change from T to 2T, not the distance to the quasi-static curve: with eta = 1 (a force in the
+   rotating frame, which turns with the shaft) T = 40 reads Q/(mu P) up to 0.046 above it, the excess about
+   2/T (docs/friction.md 5.1, measured at T = 20 ... 320 and undamped).
 quick: h_c = 0.004, T = 40 and the fast run T = 20 (the pair for 6). 53 s of CPU measured.
 long:  h_c = 0.001, T = 40; h_c = 0.002, T = 40 and T = 80 (the pair for 6). 278 s of CPU measured (the HDF5 files, 0.1-0.2 GB each, are deleted after use)."""
 import math

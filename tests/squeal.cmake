@@ -16,3 +16,9 @@ roller_test(steady_rolling steady_rolling.py LABELS quick PROCESSORS 2 TIMEOUT 3
 # report; checks the verdict against modes.csv, the transient's frequency (2 %), the WAV's loudest line at the pitch
 # (2 %), the map, spectrogram and GIF; about 6-8 min on 2 cores
 roller_test(squeal_report squeal_report.py LABELS long PROCESSORS 2 TIMEOUT 2400)
+# The steady rolling state over Carter's whole creep curve: 24 creeps from free rolling (Q = 0) to full slip
+# (|Q| = mu P), separate runs two at a time: every one converges, Coulomb's law at every node, |Q|/(mu P) within 0.02
+# of Carter's, the stick zone at the leading edge (docs/squeal.md section 3). quick: h_c = 0.003 (about 50 s of CPU);
+# long: h_c = 0.0007, where the solver before the fix stopped at three of four creeps near free rolling (150 s of CPU)
+roller_test(steady_sweep steady_sweep.py LABELS quick PROCESSORS 2 TIMEOUT 600)
+roller_test(steady_sweep_long steady_sweep.py LABELS long ARGS long PROCESSORS 2 TIMEOUT 1800)

@@ -45,7 +45,7 @@ PETSC_INTERN PetscErrorCode             RollerModeClassifierDestroy(RollerModeCl
    forces, mu(v), mu'(v), slip speeds, gaps and states (0 off the sheet, 1 stick, 2 slip), the state u; the
    scatter to the candidates */
 typedef struct {
-  PetscInt   n, *dof, *state, iterations, alternations;
+  PetscInt   n, *dof, *state, iterations, alternations, active_set;
   PetscReal *xy, *normal, *tangent, *mu, *dmu, *slip, *gap;
   Vec        u, red;
   VecScatter scatter;
@@ -55,8 +55,8 @@ PETSC_INTERN PetscErrorCode RollerSteadyAngularDerivative(const RollerSteady *, 
 PETSC_INTERN PetscErrorCode RollerSteadyDestroy(RollerSteady *, PetscBool);
 PETSC_INTERN PetscErrorCode RollerSteadyReport(Roller, const RollerSteady *); /* printed, and -modes_steady_csv */
 /* steady_coulomb.c: Coulomb on the candidates' dual data w = G x + d (n, G, d, friction, mu; N, T, state in/out as a
-   warm start; the number of normal/tangential alternations) */
-PETSC_INTERN PetscErrorCode RollerSteadyCoulomb(MPI_Comm, PetscInt, const PetscReal[], const PetscReal[], PetscBool, const PetscReal[], PetscReal[], PetscReal[], PetscInt[], PetscInt *);
+   warm start; the number of normal/tangential alternations, the most stick/slip active-set iterations of one of them) */
+PETSC_INTERN PetscErrorCode RollerSteadyCoulomb(MPI_Comm, PetscInt, const PetscReal[], const PetscReal[], PetscBool, const PetscReal[], PetscReal[], PetscReal[], PetscInt[], PetscInt *, PetscInt *);
 
 /* squeal.c: the linearization about the steady state: the reduced (M, C, K) on the dofs but the contact nodes'
    normal ones (and after them, on the last rank, one multiplier per stick node: their number), and the map of a

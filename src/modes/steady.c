@@ -202,7 +202,7 @@ static PetscErrorCode SolveContact(Roller ctx, Vec uf, PetscReal g, PetscBool fr
   PetscReal     *xs, nmax = 0;
 
   PetscFunctionBeginUser;
-  PetscCall(RollerSteadyCoulomb(ctx->comm, n, G, d, friction, st->mu, st->normal, st->tangent, st->state, &st->alternations));
+  PetscCall(RollerSteadyCoulomb(ctx->comm, n, G, d, friction, st->mu, st->normal, st->tangent, st->state, &st->alternations, &st->active_set));
   PetscCall(VecCopy(uf, st->u));
   for (PetscInt j = 0; j < n; ++j) {
     if (st->normal[j] != 0) PetscCall(VecAXPY(st->u, st->normal[j], w[j]));
@@ -345,8 +345,8 @@ PetscErrorCode RollerSteadyReport(Roller ctx, const RollerSteady *st)
     a1 = PetscMax(a1, st->xy[2 * j]);
   }
   if (!ctx->ts.quiet)
-    PetscCall(PetscPrintf(ctx->comm, "roller: steady %s state (lab frame): %" PetscInt_FMT " of %" PetscInt_FMT " candidate nodes in contact over x in [%g, %g] (%" PetscInt_FMT " stick, %" PetscInt_FMT " slip), normal force %.6g, friction force %.6g, nominal slip speed %g, %" PetscInt_FMT " mu(v) passes (the last: %" PetscInt_FMT " normal/tangential alternations)\n", T == 0 ? "frictionless rolling" : (count[1] ? "rolling" : "sliding"), count[1] + count[2], st->n, (double)a0, (double)a1, count[1], count[2], (double)N, (double)T,
-                          (double)(ctx->rotation.omega * ctx->mesh.r_outer - ctx->obstacle.sheet_speed), st->iterations, st->alternations));
+    PetscCall(PetscPrintf(ctx->comm, "roller: steady %s state (lab frame): %" PetscInt_FMT " of %" PetscInt_FMT " candidate nodes in contact over x in [%g, %g] (%" PetscInt_FMT " stick, %" PetscInt_FMT " slip), normal force %.6g, friction force %.6g, nominal slip speed %g, %" PetscInt_FMT " mu(v) passes (the last: %" PetscInt_FMT " normal/tangential alternations, at most %" PetscInt_FMT " stick/slip active-set iterations each)\n", T == 0 ? "frictionless rolling" : (count[1] ? "rolling" : "sliding"), count[1] + count[2], st->n, (double)a0, (double)a1, count[1], count[2], (double)N, (double)T,
+                          (double)(ctx->rotation.omega * ctx->mesh.r_outer - ctx->obstacle.sheet_speed), st->iterations, st->alternations, st->active_set));
   if (!ctx->eig.steady_csv[0]) PetscFunctionReturn(0);
   PetscCall(RollerPartFileOpen(ctx->comm, ctx->eig.steady_csv, "-modes_steady_csv", part, sizeof(part), &fp));
   if (fp) {
