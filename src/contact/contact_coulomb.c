@@ -18,8 +18,8 @@
 #include "contact_impl.h"
 
 typedef struct {
-  PetscInt  *idx_n, *idx_t, *state; /* unknown numbers in the reduced system (-1: none); state 0 off, 1 stick, 2 slip */
-  PetscReal *sign, *R, *rhs, *sol, *w, *x0;
+  PetscInt  *idx_n, *idx_t, *state;              /* unknown numbers in the reduced system (-1: none); state 0 off, 1 stick, 2 slip */
+  PetscReal *sign, *R, *rhs, *sol, *w, *x0, *x1; /* x0: the iterate, x1: the full step from it */
 } CoulombWork;
 
 /* The states of the last iterate (x, w = G x + d); returns how many changed. */
@@ -167,7 +167,7 @@ PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *box, PetscInt m, con
   *converged = PETSC_FALSE;
   *its       = 0;
   PetscCall(PetscMalloc3(m, &cw.idx_n, m, &cw.idx_t, m, &cw.state));
-  PetscCall(PetscMalloc6(m, &cw.sign, (size_t)4 * m * m, &cw.R, 2 * m, &cw.rhs, 2 * m, &cw.sol, 2 * m, &cw.w, 2 * m, &cw.x0));
+  PetscCall(PetscMalloc7(m, &cw.sign, (size_t)4 * m * m, &cw.R, 2 * m, &cw.rhs, 2 * m, &cw.sol, 2 * m, &cw.w, 2 * m, &cw.x0, 2 * m, &cw.x1));
   for (PetscInt a = 0; a < m; ++a) {
     cw.state[a] = -1; /* no state yet: the first pass counts as a change */
     cw.sign[a]  = 0.0;
@@ -192,6 +192,7 @@ PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *box, PetscInt m, con
     else if (++stalled >= 10) break; /* ten iterations without progress: a cycle (or no solution of these laws) */
     PetscCall(PetscArraycpy(cw.x0, x, 2 * m));
     PetscCall(SolveStates(m, G, d, mu, *its > 1 ? kv : NULL, &cw, x));
+    PetscCall(PetscArraycpy(cw.x1, x, 2 * m));
     RollerContactLCPSlack(box, 2 * m, x, cw.w);
     /* non-monotone Armijo backtracking against the largest of the last four merits (Grippo, Lampariello & Lucidi,
        SIAM J. Numer. Anal. 23, 1986: the active-set iteration's own full steps are kept while it makes progress
@@ -202,7 +203,7 @@ PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *box, PetscInt m, con
       RollerContactLCPSlack(box, 2 * m, x, cw.w);
     }
     if (alpha <= 1e-3) {
-      PetscCall(SolveStates(m, G, d, mu, *its > 1 ? kv : NULL, &cw, x));
+      PetscCall(PetscArraycpy(x, cw.x1, 2 * m));
       RollerContactLCPSlack(box, 2 * m, x, cw.w);
       alpha = 1.0;
     }
@@ -210,6 +211,6 @@ PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *box, PetscInt m, con
   }
   PetscCall(PetscFree(kv));
   PetscCall(PetscFree3(cw.idx_n, cw.idx_t, cw.state));
-  PetscCall(PetscFree6(cw.sign, cw.R, cw.rhs, cw.sol, cw.w, cw.x0));
+  PetscCall(PetscFree7(cw.sign, cw.R, cw.rhs, cw.sol, cw.w, cw.x0, cw.x1));
   PetscFunctionReturn(0);
 }

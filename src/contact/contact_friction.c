@@ -86,12 +86,8 @@ static inline PetscReal Entry(const PetscReal *S, PetscInt n, const PetscReal u[
    Delta s_n = t^k . (x_n + xi^k_n) - t^{k-2} . (x_n + xi^{k-2}_n) - dX. */
 static void SlipFrame(Roller ctx, PetscReal t, PetscReal t2[2], PetscReal *dX)
 {
-  PetscReal n2[2], g2;
-
-  RollerContactObstacleAt(ctx, t - 2.0 * ctx->ts.dt, n2, &g2);
-  t2[0] = n2[1];
-  t2[1] = -n2[0];
-  *dX   = RollerSheetPosition(ctx, t) - RollerSheetPosition(ctx, t - 2.0 * ctx->ts.dt);
+  RollerContactSheetTangent(ctx, t - 2.0 * ctx->ts.dt, t2);
+  *dX = RollerSheetPosition(ctx, t) - RollerSheetPosition(ctx, t - 2.0 * ctx->ts.dt);
 }
 
 static PetscErrorCode LemkeAlloc(RollerContactFriction fr, PetscInt m)
@@ -167,7 +163,7 @@ static PetscErrorCode FrictionData(Roller ctx, RollerContact c, const PetscReal 
     const PetscInt i = cand[a];
 
     fr->box.d[a]     = gf[a];
-    fr->box.d[m + a] = (xc[2 * i] + PetscRealPart(uf[2 * i])) * tg[0] + (xc[2 * i + 1] + PetscRealPart(uf[2 * i + 1])) * tg[1] - ((xc[2 * i] + PetscRealPart(u2[2 * i])) * t2[0] + (xc[2 * i + 1] + PetscRealPart(u2[2 * i + 1])) * t2[1] + dX);
+    fr->box.d[m + a] = RollerContactAlong(xc, uf, i, tg) - (RollerContactAlong(xc, u2, i, t2) + dX);
     for (PetscInt b = 0; b < m; ++b) {
       const PetscInt j = cand[b];
 
@@ -196,10 +192,7 @@ static PetscErrorCode LaggedSolve(Roller ctx, RollerContact c, PetscInt m, const
   fr->count.lagged_steps++;
   fr->fallback = 3;
   PetscCall(RollerContactFrictionLaggedMu(ctx, c, m));
-  for (PetscInt a = 0; a < m; ++a) {
-    fr->x[a]     = lam[a];
-    fr->x[m + a] = 0.0;
-  }
+  RollerContactFrictionStart(m, lam, fr->x);
   PetscCall(RollerContactCoulombNewton(&fr->box, m, frozen, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
   fr->its += its;
   if (!converged) PetscCall(CoulombLemke(fr, m, c->step.t, fr->x));
@@ -334,8 +327,8 @@ PetscErrorCode RollerContactFrictionInfo(Roller ctx, RollerContact c, const Pets
   PetscCall(VecGetArrayRead(c->nodes.red, &u));
   PetscCall(VecGetArrayRead(c->nodes.red2, &u2));
   for (PetscInt i = 0; i < c->nodes.nc; ++i) {
-    const PetscReal p[2] = {xc[2 * i] + PetscRealPart(u[2 * i]), xc[2 * i + 1] + PetscRealPart(u[2 * i + 1])}, p2[2] = {xc[2 * i] + PetscRealPart(u2[2 * i]), xc[2 * i + 1] + PetscRealPart(u2[2 * i + 1])};
-    const PetscReal motion = p[0] * tg[0] + p[1] * tg[1] - (p2[0] * t2[0] + p2[1] * t2[1]);
+    const PetscReal p2[2]  = {xc[2 * i] + PetscRealPart(u2[2 * i]), xc[2 * i + 1] + PetscRealPart(u2[2 * i + 1])};
+    const PetscReal motion = RollerContactAlong(xc, u, i, tg) - RollerContactAlong(xc, u2, i, t2);
 
     slip[i] = motion - dX;
     if (lambda[i] > 0.0) sscale = PetscMax(sscale, PetscMax(PetscAbsReal(motion), PetscAbsReal(slip[i])));

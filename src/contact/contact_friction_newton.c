@@ -48,18 +48,18 @@ PetscErrorCode RollerContactFrictionLaggedMu(Roller ctx, RollerContact c, PetscI
   RollerContactFriction fr = c->friction;
   const PetscReal       t = c->step.t, dt = ctx->ts.dt, *xc = c->nodes.xc;
   const PetscScalar    *u1, *u2;
-  PetscReal             n1[2], n2[2], g1, g2, dX;
+  PetscReal             t1[2], t2[2], dX;
 
   PetscFunctionBeginUser;
-  RollerContactObstacleAt(ctx, t - dt, n1, &g1);
-  RollerContactObstacleAt(ctx, t - 2.0 * dt, n2, &g2);
+  RollerContactSheetTangent(ctx, t - dt, t1);
+  RollerContactSheetTangent(ctx, t - 2.0 * dt, t2);
   dX = RollerSheetPosition(ctx, t - dt) - RollerSheetPosition(ctx, t - 2.0 * dt);
   PetscCall(RollerContactGather(c, ctx->state.cur, c->nodes.red1));
   PetscCall(VecGetArrayRead(c->nodes.red1, &u1));
   PetscCall(VecGetArrayRead(c->nodes.red2, &u2));
   for (PetscInt a = 0; a < m; ++a) {
     const PetscInt  i  = c->step.cand[a];
-    const PetscReal s1 = (xc[2 * i] + PetscRealPart(u1[2 * i])) * n1[1] - (xc[2 * i + 1] + PetscRealPart(u1[2 * i + 1])) * n1[0] - ((xc[2 * i] + PetscRealPart(u2[2 * i])) * n2[1] - (xc[2 * i + 1] + PetscRealPart(u2[2 * i + 1])) * n2[0]) - dX;
+    const PetscReal s1 = RollerContactAlong(xc, u1, i, t1) - RollerContactAlong(xc, u2, i, t2) - dX;
 
     fr->mu_n[a] = RollerFrictionLaw(fr->mu, fr->mu_s, fr->v_c, PetscAbsReal(s1) / dt, NULL);
   }
@@ -83,10 +83,7 @@ PetscErrorCode RollerContactFrictionNewton(Roller ctx, RollerContact c, PetscInt
 
   PetscFunctionBeginUser;
   *done = PETSC_FALSE;
-  for (PetscInt a = 0; a < m; ++a) {
-    fr->x[a]     = fr->lam_n[a];
-    fr->x[m + a] = 0.0;
-  }
+  RollerContactFrictionStart(m, fr->lam_n, fr->x);
   if (fr->v_c > 0.0) PetscCall(RollerContactFrictionLaggedMu(ctx, c, m)); /* the first iterate's mu: of the last step's slip speeds */
   PetscCall(RollerContactCoulombNewton(&fr->box, m, law, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
   fr->its += its;
@@ -101,10 +98,7 @@ PetscErrorCode RollerContactFrictionNewton(Roller ctx, RollerContact c, PetscInt
     PetscCall(PetscInfo(NULL, "Friction at t = %g: the semismooth Newton method with mu(v) inside failed after %" PetscInt_FMT " iterations; mu frozen per solve, accelerated\n", (double)c->step.t, its));
     RollerContactAndersonReset(&fr->aa, m);
     PetscCall(RollerContactFrictionLaggedMu(ctx, c, m));
-    for (PetscInt a = 0; a < m; ++a) {
-      fr->x[a]     = fr->lam_n[a];
-      fr->x[m + a] = 0.0;
-    }
+    RollerContactFrictionStart(m, fr->lam_n, fr->x);
     for (PetscInt pass = 0; pass < c->opt.friction_max_it; ++pass) {
       PetscCall(RollerContactCoulombNewton(&fr->box, m, frozen, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
       fr->its += its;

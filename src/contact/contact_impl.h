@@ -269,6 +269,31 @@ struct _n_RollerContactFriction {
   } count; /* the run's Coulomb solves and their fallbacks */
 };
 
+/* The sheet's tangent t = (n_y, -n_x) at time t (n its outward normal, RollerContactObstacleAt). */
+static inline void RollerContactSheetTangent(Roller ctx, PetscReal t, PetscReal tan[2])
+{
+  PetscReal n[2], g;
+
+  RollerContactObstacleAt(ctx, t, n, &g);
+  tan[0] = n[1];
+  tan[1] = -n[0];
+}
+
+/* The lab position along tan of the Gamma_C node i, x_i + u_i (xc the reference positions, u a gathered field). */
+static inline PetscReal RollerContactAlong(const PetscReal xc[], const PetscScalar u[], PetscInt i, const PetscReal tan[2])
+{
+  return (xc[2 * i] + PetscRealPart(u[2 * i])) * tan[0] + (xc[2 * i + 1] + PetscRealPart(u[2 * i + 1])) * tan[1];
+}
+
+/* The frictionless multipliers lam as the first iterate x = (lambda_N, lambda_T = 0) of a Coulomb solve on m nodes. */
+static inline void RollerContactFrictionStart(PetscInt m, const PetscReal lam[], PetscReal x[])
+{
+  for (PetscInt a = 0; a < m; ++a) {
+    x[a]     = lam[a];
+    x[m + a] = 0.0;
+  }
+}
+
 /* contact_friction_newton.c */
 PETSC_INTERN void           RollerContactFrictionUpdate(RollerContactFriction, PetscInt, PetscReal, PetscReal *, PetscReal *, PetscReal *);
 PETSC_INTERN PetscErrorCode RollerContactFrictionNext(RollerContactFriction, PetscInt, PetscBool);
