@@ -28,14 +28,15 @@ os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
 os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
 
 
-def command(args, nproc=1):
+def command(args, nproc=1, launcher=False):
+    """The command line; under mpiexec when nproc > 1 or launcher (mpiexec -n 1: the same start-up as a parallel run)."""
     cmd = [EXE] + [str(a) for a in args]
-    if nproc > 1:
+    if nproc > 1 or launcher:
         cmd = [MPIEXEC, "-n", str(nproc)] + cmd
     return cmd
 
 
-def run(args, nproc=1, csv=False, logview=True, cwd=ROOT):
+def run(args, nproc=1, csv=False, logview=True, cwd=ROOT, launcher=False):
     """Run roller with the options `args`; return a dict (see the module docstring)."""
     with tempfile.TemporaryDirectory() as tmp:
         extra = ["-quiet"]
@@ -44,7 +45,7 @@ def run(args, nproc=1, csv=False, logview=True, cwd=ROOT):
             extra += ["-log_view", ":" + lv]
         if csv:
             extra += ["-monitor_csv", os.path.join(tmp, "run.csv")]
-        cmd = command(list(args) + extra, nproc)
+        cmd = command(list(args) + extra, nproc, launcher)
         out = open(os.path.join(tmp, "stdout"), "w+")
         # Peak memory through /usr/bin/time: the rusage of a child forked from this (large) Python process
         # counts the pages it shared with it before exec, so wait4's ru_maxrss would report Python's size.
@@ -76,11 +77,11 @@ def run(args, nproc=1, csv=False, logview=True, cwd=ROOT):
         return res
 
 
-def shell(args, nproc=1):
+def shell(args, nproc=1, launcher=False):
     """The command line as a user would type it (relative to the repository, for the docs)."""
     exe = "build/roller"
     s = " ".join([exe] + [str(a) for a in args])
-    return f"mpiexec -n {nproc} {s}" if nproc > 1 else s
+    return f"mpiexec -n {nproc} {s}" if nproc > 1 or launcher else s
 
 
 def stage(res, name):

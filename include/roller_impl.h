@@ -135,6 +135,7 @@ typedef struct {
   PetscBool              static_solve;  /* -static: the rest state at the obstacle of t = max_time in one step, A = K */
   RollerContactMass      contact_mass;  /* -contact_mass (model/mass.c) */
   PetscInt               redundant_max; /* on several ranks, step matrices of at most this many unknowns are factored whole on every rank (model/solver.c) */
+  PetscBool              schur;         /* larger SPD ones by substructuring (model/solver_schur.c), else MUMPS */
 } RollerDiscretization;
 
 /* Operators fixed at set-up (model/operators.c): mass M, stiffness K (the step matrices are the time scheme's,

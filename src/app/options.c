@@ -30,6 +30,7 @@ PetscErrorCode RollerCreate(MPI_Comm comm, Roller *roller)
   ctx->disc.degree        = 2;
   ctx->disc.coriolis      = ROLLER_CORIOLIS_EXTRAPOLATED;
   ctx->disc.redundant_max = 100000;
+  ctx->disc.schur         = PETSC_TRUE;
   ctx->ts.phase_error     = 0.01;
   ctx->material.young     = 0.1;
   ctx->material.poisson   = 0.49;

@@ -53,6 +53,7 @@ PETSC_INTERN PetscErrorCode RollerStepOperatorUpdateGyroscopic(RollerStepOperato
 PETSC_INTERN PetscErrorCode RollerStepOperatorSolve(Roller, const RollerStepOperator *, Vec, Vec, PetscReal); /* b, x, t (for the message) */
 PETSC_INTERN PetscErrorCode RollerStepOperatorDestroy(RollerStepOperator *);
 PETSC_INTERN PetscErrorCode RollerDirectSolverDefaults(KSP, PCType); /* preonly + factorization: ND serial, MUMPS parallel */
+PETSC_INTERN PetscErrorCode RollerSchurPCSet(PC);                    /* solver_schur.c: the substructured Cholesky of an SPD MPIAIJ matrix */
 
 /* functionals.c */
 PETSC_INTERN PetscErrorCode RollerComputeBoundaryFunctionals(Roller);

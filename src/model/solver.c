@@ -32,15 +32,21 @@ static PetscErrorCode StepSolverLayout(Roller ctx, RollerStepOperator *op, PCTyp
   PetscInt    N;
   PC          pc, ipc;
   KSP         inner;
+  PetscBool   schur;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
   PetscCall(MatGetSize(op->A, &N, NULL));
+  schur = (PetscBool)(size > 1 && N > ctx->disc.redundant_max && ctx->disc.schur && !op->G);
   if (ctx->ts.view && op->id == 0 && size > 1)
-    PetscCall(PetscPrintf(ctx->comm, "roller: step solver on %d ranks: %s (%" PetscInt_FMT " unknowns %s -solver_redundant_max %" PetscInt_FMT ")\n", size, N > ctx->disc.redundant_max ? "MUMPS, the factorization distributed" : "the whole matrix factored on every rank (PCREDUNDANT, serial nested dissection), the contact condensation's columns split over the ranks", N,
-                          N > ctx->disc.redundant_max ? ">" : "<=", ctx->disc.redundant_max));
-  if (size == 1 || N > ctx->disc.redundant_max) PetscFunctionReturn(0);
+    PetscCall(PetscPrintf(ctx->comm, "roller: step solver on %d ranks: %s (%" PetscInt_FMT " unknowns %s -solver_redundant_max %" PetscInt_FMT ")\n", size,
+                          N <= ctx->disc.redundant_max ? "the whole matrix factored on every rank (PCREDUNDANT, serial nested dissection), the contact condensation's columns split over the ranks"
+                          : schur                      ? "substructured Cholesky (each rank factors its interior, the interface's dense Schur complement on every rank: -solver_schur)"
+                                                       : "MUMPS, the factorization distributed",
+                          N, N > ctx->disc.redundant_max ? ">" : "<=", ctx->disc.redundant_max));
   PetscCall(KSPGetPC(op->ksp, &pc));
+  if (schur) PetscCall(RollerSchurPCSet(pc));
+  if (size == 1 || N > ctx->disc.redundant_max) PetscFunctionReturn(0);
   PetscCall(PCSetType(pc, PCREDUNDANT));
   PetscCall(PCRedundantSetNumber(pc, size));
   PetscCall(PCRedundantGetKSP(pc, &inner));

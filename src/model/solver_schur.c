@@ -1,0 +1,412 @@
+/* A direct solve of a symmetric positive definite step matrix on several ranks by substructuring (docs/performance.md,
+   "Large meshes on several ranks"): the interface Gamma takes, for each pair of coupled ranks, the smaller of their two
+   sets of rows coupled to the other; the rest of rank r's rows are its interior I_r. No interior row couples to
+   another rank's interior, so with the interior blocks A_rr = L_r L_r^T factored on their ranks (serial Cholesky, nested dissection),
+     G_r = L_r^{-1} A_{I_r,Gamma}     (sparse: the fill of the interface columns in the rank's factor),
+     S   = A_{Gamma,Gamma} - sum_r G_r^T G_r   (dense, of the interface's size, Cholesky on every rank),
+   and a solve is
+     y_r = L_r^{-1} b_r,   x_Gamma = S^{-1} (b_Gamma - sum_r G_r^T y_r),   x_r = L_r^{-T} (y_r - G_r x_Gamma):
+   each rank's forward and backward substitution covers its share of the factor only (MUMPS's distributed triangular
+   solves cost more than a serial one on this machine), plus one reduction of the interface's size. The same
+   factorization as nested dissection with the partition's separator last, exact to round-off. */
+#include "model/model.h"
+
+typedef struct {
+  Mat          F, Gt, S;      /* the interior's factor, G_r^T (interface x interior, factor order), S's factor */
+  Vec          bI, yI, xI;    /* interior vectors in the factor's order */
+  Vec          g, xg, tg;     /* interface vectors (every rank holds all of them) */
+  PetscInt    *row;           /* row[p]: the local row of the factor's p-th interior unknown */
+  PetscInt    *grow, nglocal; /* the local rows of this rank's interface part, its offset in the interface */
+  PetscInt     goff, ng;
+  PetscScalar *Sa; /* S's storage, column-major */
+} SchurCtx;
+
+/* The owner of the global row c (ranges of size + 1 entries). */
+static PetscMPIInt Owner(PetscMPIInt size, const PetscInt ranges[], PetscInt c)
+{
+  PetscMPIInt lo = 0, hi = size - 1;
+
+  while (lo < hi) {
+    const PetscMPIInt mid = (lo + hi + 1) / 2;
+
+    if (ranges[mid] <= c) lo = mid;
+    else hi = mid - 1;
+  }
+  return lo;
+}
+
+/* The interface: for each pair of coupled ranks the smaller of their two sets of rows coupled to the other (the
+   lower rank's on a tie), so that every coupling between two ranks has an interface row at one end; numbered rank
+   by rank. gl[] all of them (global rows, sorted), on every rank; isg[] marks this rank's. */
+static PetscErrorCode Interface(Mat A, SchurCtx *sc, PetscInt **gl, PetscBool **isg)
+{
+  MPI_Comm        comm = PetscObjectComm((PetscObject)A);
+  Mat             Ad, Ao;
+  const PetscInt *garray, *ranges;
+  PetscInt        lo, hi, m, ng = 0, *mine, *cnt, *stamp;
+  PetscMPIInt     rank, size, *counts, *displs, n;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(MatGetOwnershipRange(A, &lo, &hi));
+  PetscCall(MatGetOwnershipRanges(A, &ranges));
+  PetscCall(MatMPIAIJGetSeqAIJ(A, &Ad, &Ao, &garray));
+  m = hi - lo;
+  PetscCall(PetscCalloc1(m, isg));
+  PetscCall(PetscMalloc1(m, &mine));
+  PetscCall(PetscCalloc1((size_t)size * size, &cnt)); /* cnt[r * size + q]: rows of rank r coupled to rank q */
+  PetscCall(PetscMalloc1(size, &stamp));
+  for (PetscInt pass = 0; pass < 2; ++pass) {
+    for (PetscMPIInt q = 0; q < size; ++q) stamp[q] = -1;
+    for (PetscInt i = 0; i < m; ++i) {
+      const PetscInt *cols;
+      PetscInt        nc;
+
+      PetscCall(MatGetRow(Ao, i, &nc, &cols, NULL));
+      for (PetscInt k = 0; k < nc; ++k) {
+        const PetscMPIInt q = Owner(size, ranges, garray[cols[k]]);
+
+        if (stamp[q] == i) continue;
+        stamp[q] = i;
+        if (!pass) cnt[(size_t)rank * size + q]++;
+        else if (cnt[(size_t)rank * size + q] < cnt[(size_t)q * size + rank] || (cnt[(size_t)rank * size + q] == cnt[(size_t)q * size + rank] && rank < q)) (*isg)[i] = PETSC_TRUE;
+      }
+      PetscCall(MatRestoreRow(Ao, i, &nc, &cols, NULL));
+      if (pass && (*isg)[i]) mine[sc->nglocal++] = lo + i;
+    }
+    if (!pass) PetscCall(MPIU_Allreduce(MPI_IN_PLACE, cnt, (PetscMPIInt)(size * size), MPIU_INT, MPI_SUM, comm));
+  }
+  PetscCall(PetscFree(cnt));
+  PetscCall(PetscFree(stamp));
+  PetscCall(PetscMalloc2(size, &counts, size, &displs));
+  PetscCall(PetscMPIIntCast(sc->nglocal, &n));
+  PetscCallMPI(MPI_Allgather(&n, 1, MPI_INT, counts, 1, MPI_INT, comm));
+  for (PetscMPIInt r = 0; r < size; ++r) {
+    displs[r] = (PetscMPIInt)ng;
+    if (r == rank) sc->goff = ng;
+    ng += counts[r];
+  }
+  sc->ng = ng;
+  PetscCall(PetscMalloc1(ng + 1, gl));
+  PetscCallMPI(MPI_Allgatherv(mine, n, MPIU_INT, *gl, counts, displs, MPIU_INT, comm));
+  PetscCall(PetscMalloc1(sc->nglocal, &sc->grow));
+  for (PetscInt q = 0; q < sc->nglocal; ++q) sc->grow[q] = mine[q] - lo;
+  PetscCall(PetscFree2(counts, displs));
+  PetscCall(PetscFree(mine));
+  PetscFunctionReturn(0);
+}
+
+/* The position of the global row c in the interface, or -1. */
+static PetscInt InInterface(PetscInt ng, const PetscInt gl[], PetscInt c)
+{
+  PetscInt loc;
+
+  PetscCallAbort(PETSC_COMM_SELF, PetscFindInt(c, ng, gl, &loc));
+  return loc;
+}
+
+/* The interior block in nested-dissection order, factored; row[] maps the factor's unknowns to local rows. */
+static PetscErrorCode InteriorFactor(Mat A, SchurCtx *sc, const PetscBool isg[], PetscInt *nI, PetscInt **inv)
+{
+  Mat             Ad, Ao, AI, AP;
+  const PetscInt *garray, *perm;
+  PetscInt        lo, hi, m, n = 0, *loc, *nnz;
+  IS              rp, cp, nat;
+  MatFactorInfo   info;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatGetOwnershipRange(A, &lo, &hi));
+  PetscCall(MatMPIAIJGetSeqAIJ(A, &Ad, &Ao, &garray));
+  m = hi - lo;
+  PetscCall(PetscMalloc2(m, &loc, m, &nnz));
+  for (PetscInt i = 0; i < m; ++i) loc[i] = isg[i] ? -1 : n++;
+  for (PetscInt pass = 0; pass < 2; ++pass) { /* the block in local order (for the ordering), then permuted */
+    Mat B;
+
+    for (PetscInt i = 0, k = 0; i < m; ++i) {
+      const PetscInt *cols;
+      PetscInt        nc, c = 0;
+
+      if (loc[i] < 0) continue;
+      PetscCall(MatGetRow(Ad, i, &nc, &cols, NULL));
+      for (PetscInt j = 0; j < nc; ++j) c += loc[cols[j]] >= 0;
+      PetscCall(MatRestoreRow(Ad, i, &nc, &cols, NULL));
+      nnz[pass ? (*inv)[k] : k] = c;
+      ++k;
+    }
+    PetscCall(MatCreateSeqAIJ(PETSC_COMM_SELF, n, n, 0, nnz, &B));
+    for (PetscInt i = 0; i < m; ++i) {
+      const PetscInt    *cols;
+      const PetscScalar *vals;
+      PetscInt           nc, r;
+
+      if (loc[i] < 0) continue;
+      r = pass ? (*inv)[loc[i]] : loc[i];
+      PetscCall(MatGetRow(Ad, i, &nc, &cols, &vals));
+      for (PetscInt j = 0; j < nc; ++j) {
+        const PetscInt c = loc[cols[j]];
+
+        if (c >= 0) PetscCall(MatSetValue(B, r, pass ? (*inv)[c] : c, vals[j], INSERT_VALUES));
+      }
+      PetscCall(MatRestoreRow(Ad, i, &nc, &cols, &vals));
+    }
+    PetscCall(MatAssemblyBegin(B, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(B, MAT_FINAL_ASSEMBLY));
+    if (pass) AP = B;
+    else {
+      AI = B;
+      PetscCall(MatGetOrdering(AI, MATORDERINGND, &rp, &cp));
+      PetscCall(ISGetIndices(rp, &perm)); /* perm[new] = old */
+      PetscCall(PetscMalloc1(n, inv));
+      PetscCall(PetscMalloc1(n, &sc->row));
+      for (PetscInt p = 0; p < n; ++p) (*inv)[perm[p]] = p;
+      for (PetscInt i = 0; i < m; ++i)
+        if (loc[i] >= 0) sc->row[(*inv)[loc[i]]] = i;
+      PetscCall(ISRestoreIndices(rp, &perm));
+      PetscCall(ISDestroy(&rp));
+      PetscCall(ISDestroy(&cp));
+    }
+  }
+  /* inv[] was for the interior's local numbering; callers need it for local rows */
+  {
+    PetscInt *byrow;
+
+    PetscCall(PetscMalloc1(m, &byrow));
+    for (PetscInt i = 0; i < m; ++i) byrow[i] = loc[i] >= 0 ? (*inv)[loc[i]] : -1;
+    PetscCall(PetscFree(*inv));
+    *inv = byrow;
+  }
+  PetscCall(MatDestroy(&AI));
+  PetscCall(ISCreateStride(PETSC_COMM_SELF, n, 0, 1, &nat));
+  PetscCall(MatGetFactor(AP, MATSOLVERPETSC, MAT_FACTOR_CHOLESKY, &sc->F));
+  PetscCall(MatFactorInfoInitialize(&info));
+  info.fill = 6.0;
+  PetscCall(MatCholeskyFactorSymbolic(sc->F, AP, nat, &info));
+  PetscCall(MatCholeskyFactorNumeric(sc->F, AP, &info));
+  PetscCall(ISDestroy(&nat));
+  PetscCall(MatDestroy(&AP));
+  PetscCall(PetscFree2(loc, nnz));
+  *nI = n;
+  PetscFunctionReturn(0);
+}
+
+/* G_r^T by forward substitutions of the interface columns of A_{I_r,Gamma} (the fill of each kept, exact zeros
+   dropped), and this rank's share of S: its interface rows of A_{Gamma,Gamma} minus G_r^T G_r. */
+static PetscErrorCode Coupling(Mat A, SchurCtx *sc, PetscInt nI, const PetscInt inv[], const PetscInt gl[], const PetscBool isg[])
+{
+  Mat             Ad, Ao, C;
+  const PetscInt *garray;
+  PetscInt        lo, hi, m, ng = sc->ng, *gidx, *cnt, *ptr, *ent, nz = 0, cap, *ja, *ia, *rnnz;
+  PetscScalar    *ev, *va, *y;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatGetOwnershipRange(A, &lo, &hi));
+  PetscCall(MatMPIAIJGetSeqAIJ(A, &Ad, &Ao, &garray));
+  m = hi - lo;
+  PetscCall(PetscMalloc1(m, &gidx));
+  for (PetscInt i = 0, q = 0; i < m; ++i) gidx[i] = isg[i] ? sc->goff + q++ : -1;
+  /* the columns of A_{I_r,Gamma}: entries (factor row, value) per interface column, and the rows of A_{Gamma_r,Gamma} */
+  PetscCall(PetscCalloc2(ng + 1, &cnt, ng + 1, &ptr));
+  for (PetscInt pass = 0; pass < 2; ++pass) {
+    if (pass) {
+      for (PetscInt j = 0; j < ng; ++j) ptr[j + 1] = ptr[j] + cnt[j];
+      PetscCall(PetscMalloc2(ptr[ng], &ent, ptr[ng], &ev));
+      PetscCall(PetscArrayzero(cnt, ng));
+    }
+    for (PetscInt i = 0; i < m; ++i)
+      for (PetscInt part = 0; part < 2; ++part) {
+        const PetscInt    *cols;
+        const PetscScalar *vals;
+        PetscInt           nc;
+
+        PetscCall(MatGetRow(part ? Ao : Ad, i, &nc, &cols, &vals));
+        for (PetscInt k = 0; k < nc; ++k) {
+          const PetscInt j = part ? InInterface(ng, gl, garray[cols[k]]) : gidx[cols[k]];
+
+          PetscCheck(!part || isg[i] || j >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "The step matrix couples an interior row to a non-interface row of another rank: its pattern is not symmetric");
+          if (j < 0) continue;
+          if (isg[i]) {
+            if (pass) sc->Sa[gidx[i] + (size_t)j * ng] += vals[k];
+          } else if (pass) {
+            ent[ptr[j] + cnt[j]]  = inv[i];
+            ev[ptr[j] + cnt[j]++] = vals[k];
+          } else cnt[j]++;
+        }
+        PetscCall(MatRestoreRow(part ? Ao : Ad, i, &nc, &cols, &vals));
+      }
+  }
+  /* G_r^T, row j = L_r^{-1} (column j of A_{I_r,Gamma}) */
+  cap = 16 * (ptr[ng] + 1);
+  PetscCall(PetscMalloc2(cap, &ja, cap, &va));
+  PetscCall(PetscMalloc2(ng + 1, &ia, ng, &rnnz));
+  ia[0] = 0;
+  PetscCall(VecSet(sc->bI, 0.0));
+  for (PetscInt j = 0; j < ng; ++j) {
+    if (ptr[j + 1] > ptr[j]) {
+      PetscCall(VecSetValues(sc->bI, ptr[j + 1] - ptr[j], ent + ptr[j], ev + ptr[j], INSERT_VALUES));
+      PetscCall(VecAssemblyBegin(sc->bI));
+      PetscCall(VecAssemblyEnd(sc->bI));
+      PetscCall(MatForwardSolve(sc->F, sc->bI, sc->yI));
+      PetscCall(VecSet(sc->bI, 0.0));
+      PetscCall(VecGetArray(sc->yI, &y));
+      for (PetscInt p = 0; p < nI; ++p) {
+        if (y[p] == 0.0) continue;
+        if (nz == cap) {
+          PetscInt    *nja;
+          PetscScalar *nva;
+
+          PetscCall(PetscMalloc2(2 * cap, &nja, 2 * cap, &nva));
+          PetscCall(PetscArraycpy(nja, ja, nz));
+          PetscCall(PetscArraycpy(nva, va, nz));
+          PetscCall(PetscFree2(ja, va));
+          ja = nja, va = nva, cap *= 2;
+        }
+        ja[nz]   = p;
+        va[nz++] = y[p];
+      }
+      PetscCall(VecRestoreArray(sc->yI, &y));
+    }
+    ia[j + 1] = nz;
+    rnnz[j]   = ia[j + 1] - ia[j];
+  }
+  PetscCall(MatCreateSeqAIJ(PETSC_COMM_SELF, ng, nI, 0, rnnz, &sc->Gt));
+  for (PetscInt j = 0; j < ng; ++j)
+    if (rnnz[j]) PetscCall(MatSetValues(sc->Gt, 1, &j, rnnz[j], ja + ia[j], va + ia[j], INSERT_VALUES));
+  PetscCall(MatAssemblyBegin(sc->Gt, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(sc->Gt, MAT_FINAL_ASSEMBLY));
+  PetscCall(PetscFree2(ja, va));
+  PetscCall(PetscFree2(ia, rnnz));
+  /* S -= G_r^T G_r */
+  PetscCall(MatMatTransposeMult(sc->Gt, sc->Gt, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &C));
+  for (PetscInt r = 0; r < ng; ++r) {
+    const PetscInt    *cols;
+    const PetscScalar *vals;
+    PetscInt           nc;
+
+    PetscCall(MatGetRow(C, r, &nc, &cols, &vals));
+    for (PetscInt k = 0; k < nc; ++k) sc->Sa[r + (size_t)cols[k] * ng] -= vals[k];
+    PetscCall(MatRestoreRow(C, r, &nc, &cols, &vals));
+  }
+  PetscCall(MatDestroy(&C));
+  PetscCall(PetscFree2(ent, ev));
+  PetscCall(PetscFree2(cnt, ptr));
+  PetscCall(PetscFree(gidx));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode SchurDestroyCtx(SchurCtx *sc)
+{
+  PetscFunctionBeginUser;
+  PetscCall(MatDestroy(&sc->F));
+  PetscCall(MatDestroy(&sc->Gt));
+  PetscCall(MatDestroy(&sc->S));
+  PetscCall(VecDestroy(&sc->bI));
+  PetscCall(VecDestroy(&sc->yI));
+  PetscCall(VecDestroy(&sc->xI));
+  PetscCall(VecDestroy(&sc->g));
+  PetscCall(VecDestroy(&sc->xg));
+  PetscCall(VecDestroy(&sc->tg));
+  PetscCall(PetscFree(sc->row));
+  PetscCall(PetscFree(sc->grow));
+  PetscCall(PetscFree(sc->Sa));
+  PetscCall(PetscMemzero(sc, sizeof(*sc)));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode SchurSetUp(PC pc)
+{
+  SchurCtx     *sc;
+  Mat           A;
+  PetscInt     *gl, *inv, nI;
+  PetscBool    *isg;
+  MatFactorInfo info;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &sc));
+  PetscCall(SchurDestroyCtx(sc));
+  PetscCall(PCGetOperators(pc, &A, NULL));
+  PetscCall(Interface(A, sc, &gl, &isg));
+  PetscCall(InteriorFactor(A, sc, isg, &nI, &inv));
+  PetscCall(VecCreateSeq(PETSC_COMM_SELF, nI, &sc->bI));
+  PetscCall(VecDuplicate(sc->bI, &sc->yI));
+  PetscCall(VecDuplicate(sc->bI, &sc->xI));
+  PetscCall(VecCreateSeq(PETSC_COMM_SELF, sc->ng, &sc->g));
+  PetscCall(VecDuplicate(sc->g, &sc->xg));
+  PetscCall(VecDuplicate(sc->g, &sc->tg));
+  PetscCall(PetscCalloc1((size_t)sc->ng * sc->ng, &sc->Sa));
+  PetscCall(Coupling(A, sc, nI, inv, gl, isg));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, sc->Sa, (PetscMPIInt)(sc->ng * sc->ng), MPIU_SCALAR, MPIU_SUM, PetscObjectComm((PetscObject)pc)));
+  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, sc->ng, sc->ng, sc->Sa, &sc->S));
+  PetscCall(MatFactorInfoInitialize(&info));
+  PetscCall(MatCholeskyFactor(sc->S, NULL, &info));
+  PetscCall(PetscInfo(pc, "Substructured Cholesky: %" PetscInt_FMT " interior unknowns here, interface %" PetscInt_FMT "\n", nI, sc->ng));
+  PetscCall(PetscFree(gl));
+  PetscCall(PetscFree(isg));
+  PetscCall(PetscFree(inv));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode SchurApply(PC pc, Vec b, Vec x)
+{
+  SchurCtx          *sc;
+  const PetscScalar *bb, *xg;
+  PetscScalar       *bi, *g, *xx;
+  PetscInt           nI;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &sc));
+  PetscCall(VecGetSize(sc->bI, &nI));
+  PetscCall(VecGetArrayRead(b, &bb));
+  PetscCall(VecGetArray(sc->bI, &bi));
+  for (PetscInt p = 0; p < nI; ++p) bi[p] = bb[sc->row[p]];
+  PetscCall(VecRestoreArray(sc->bI, &bi));
+  PetscCall(MatForwardSolve(sc->F, sc->bI, sc->yI));
+  PetscCall(MatMult(sc->Gt, sc->yI, sc->tg)); /* G_r^T y_r */
+  PetscCall(VecScale(sc->tg, -1.0));
+  PetscCall(VecGetArray(sc->tg, &g));
+  for (PetscInt q = 0; q < sc->nglocal; ++q) g[sc->goff + q] += bb[sc->grow[q]];
+  PetscCall(VecRestoreArrayRead(b, &bb));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, g, (PetscMPIInt)sc->ng, MPIU_SCALAR, MPIU_SUM, PetscObjectComm((PetscObject)pc)));
+  PetscCall(VecRestoreArray(sc->tg, &g));
+  PetscCall(MatSolve(sc->S, sc->tg, sc->xg));
+  PetscCall(MatMultTranspose(sc->Gt, sc->xg, sc->xI)); /* G_r x_Gamma */
+  PetscCall(VecAYPX(sc->xI, -1.0, sc->yI));
+  PetscCall(MatBackwardSolve(sc->F, sc->xI, sc->bI));
+  PetscCall(VecGetArray(x, &xx));
+  PetscCall(VecGetArrayRead(sc->bI, (const PetscScalar **)&bi));
+  for (PetscInt p = 0; p < nI; ++p) xx[sc->row[p]] = bi[p];
+  PetscCall(VecRestoreArrayRead(sc->bI, (const PetscScalar **)&bi));
+  PetscCall(VecGetArrayRead(sc->xg, &xg));
+  for (PetscInt q = 0; q < sc->nglocal; ++q) xx[sc->grow[q]] = xg[sc->goff + q];
+  PetscCall(VecRestoreArrayRead(sc->xg, &xg));
+  PetscCall(VecRestoreArray(x, &xx));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode SchurDestroy(PC pc)
+{
+  SchurCtx *sc;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &sc));
+  PetscCall(SchurDestroyCtx(sc));
+  PetscCall(PetscFree(sc));
+  PetscFunctionReturn(0);
+}
+
+/* The step KSP's PC as the substructured Cholesky (an SPD matrix of type MPIAIJ on several ranks). */
+PetscErrorCode RollerSchurPCSet(PC pc)
+{
+  SchurCtx *sc;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(&sc));
+  PetscCall(PCSetType(pc, PCSHELL));
+  PetscCall(PCShellSetContext(pc, sc));
+  PetscCall(PCShellSetSetUp(pc, SchurSetUp));
+  PetscCall(PCShellSetApply(pc, SchurApply));
+  PetscCall(PCShellSetDestroy(pc, SchurDestroy));
+  PetscCall(PCShellSetName(pc, "substructured Cholesky: interiors factored on their ranks, the dense interface Schur complement on every rank"));
+  PetscFunctionReturn(0);
+}
