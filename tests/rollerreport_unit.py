@@ -92,13 +92,14 @@ for name in ("report.md", "map.png", "spectrogram.png", "squeal.wav"):
 anim = [name for name in out["files"] if name.startswith("zones")]
 c.check(len(anim) == 1 and os.path.getsize(os.path.join(d, anim[0])) > 0, f"animation written: {anim}")
 c.check(out["missing"] == [], f"nothing missing: {out['missing']}")
-c.check(abs(out["mesh_passing"] / f_mesh - 1) < 1e-12 and "mesh-passing" in open(os.path.join(d, "report.md")).read(),
-        f"the mesh-passing frequency {out['mesh_passing']:.4f} (omega N / 2 pi = {f_mesh:.4f}) named in report.md")
+heard_mesh = f"{f_mesh * pitch / f_nd:.1f} Hz"  # on the audio scale: f / (seconds per unit)
+c.check(abs(out["mesh_passing"] / f_mesh - 1) < 1e-12 and heard_mesh in open(os.path.join(d, "report.md")).read(),
+        f"the mesh-passing frequency {out['mesh_passing']:.4f} (omega N / 2 pi = {f_mesh:.4f}) named in report.md at {heard_mesh}")
 c.check(not v["diverges"] and v["real_growth_rate"] is None and out["divergent"] == [],
         "no real eigenvalue: no divergence in the verdict or the map")
 
-# the jam (docs/squeal.md 7.7): a torsional mode decaying at 27.7 /s in the torsion angle alpha, the contact force
-# only the mesh's square wave at 1588 Hz and a trace of the mode: the fit takes alpha and finds the mode
+# the jam (docs/squeal.md 7.7): a torsional mode decaying at 27.7 /s in alpha (the mean tangential displacement), the
+# contact force only the mesh's square wave at 1588 Hz and a trace of the mode: the fit takes alpha and finds the mode
 from rollerreport import lines  # noqa: E402
 
 tj = np.arange(800) * 2.387e-5

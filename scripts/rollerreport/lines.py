@@ -5,8 +5,8 @@ cross it at the mesh-passing frequency f_m = omega N / (2 pi) = omega r_outer / 
 leaves the patch the contact set (and the contact force) steps: lines at f_m and its harmonics whatever dt is, a
 discretization artefact, not a mode (the printer roller: N = 524, f_m = 1587.9 Hz; at the jam the contact force's
 loudest line, 0.06 N/m on 104.5 N/m). The report removes them before it fits the seeded mode and before it plays
-the force, and fits the mode on the monitor column that carries it (the torsion angle alpha for an order-0 mode at
-the jam, where the friction force is mu N and hardly moves).
+the force, and fits the mode on the monitor column that carries it (alpha, the mean tangential displacement of
+Gamma_C, for an order-0 mode at the jam, where the friction force is mu N and hardly moves).
 """
 import math
 

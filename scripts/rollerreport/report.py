@@ -217,9 +217,10 @@ def transient_lines(j, v, signal, out):
           f"Seeded with the leading mode, fitted on the {column}: growth {fit['growth_rate']:.4g} (CEA "
           f"{v['growth_rate']:.4g}), frequency {fit['frequency']:.5g} (CEA {f0:.5g}).", ""]
     if f_m:
-        md += [f"The mesh-passing lines (the {f_m * s:.1f} Hz at which the Gamma_C vertices cross the contact patch, "
-               "and its harmonics: a discretization artefact, docs/squeal.md 7.7) are removed before the fit and the "
-               "sound" + (f"; they were the {raw}'s loudest line ({loud_raw * s:.1f} Hz, harmonic {k_raw})" if k_raw
+        heard_at = f"{f_m / s:.1f} Hz" if s == 1 else f"{f_m:.5g} per unit of time, {f_m / s:.1f} Hz on the audio scale"
+        md += [f"The mesh-passing lines (the Gamma_C vertices cross the contact patch at {heard_at}; that line and its "
+               "harmonics are a discretization artefact, docs/squeal.md 7.7) are removed before the fit and the "
+               "sound" + (f"; they were the {raw}'s loudest line ({loud_raw / s:.1f} Hz, harmonic {k_raw})" if k_raw
                           else "") + ".", ""]
     return md + [f"Sound: [squeal.wav](squeal.wav), the {signal} with time scaled by {s:.4g} s per unit; its loudest "
                  f"line {heard:.0f} Hz (predicted {v['pitch_hz']:.0f} Hz).", "", "![spectrogram](spectrogram.png)", ""]
