@@ -2,7 +2,10 @@
 growing mode, a map over creep and friction, a transient whose contact force whirls at the CEA's frequency and a
 small HDF5 file of a ring with stick and slip; no roller run. Checks the verdict, the loss-factor margin, the
 friction at onset, the transient's fit, the WAV (readable by `wave`, 16 bit, 44.1 kHz, the predicted pitch its
-loudest line within 2 %), and that every file is written."""
+loudest line within 2 %), and that every file is written. The contact force also carries the mesh-passing line
+omega N / (2 pi) of the ring's N outer vertices, a square wave 1 to 30 times the mode's amplitude (the printer roller's jam,
+docs/squeal.md 7.7): the fit and the WAV must not take it for the mode. A second folder's CEA has a real positive
+eigenvalue (the worn roller's divergence): the verdict and the map must name it, unstable without a pitch."""
 import csv
 import json
 import math
@@ -40,7 +43,9 @@ with open(os.path.join(d, "sweep.csv"), "w", newline="") as f:
             w.writerow([0, g, 2 * math.pi * f_nd, f_nd, g, 1, "backward", creep, mu])
 dt = 0.02
 t = dt * np.arange(int(300 / dt))
-force = 1.0 + 1e-3 * np.exp(sigma * t) * np.cos(2 * math.pi * f_nd * t + 0.3)
+n, omega = 48, 0.1  # the ring's vertices on its outer circle pass the patch at omega n / (2 pi) (2.06 f_nd)
+f_mesh = omega * n / (2 * math.pi)
+force = 1.0 + 1e-3 * np.exp(sigma * t) * np.cos(2 * math.pi * f_nd * t + 0.3) + 0.03 * np.sign(np.sin(2 * math.pi * f_mesh * t))
 with open(os.path.join(d, "transient.csv"), "w", newline="") as f:
     w = csv.writer(f)
     w.writerow(["step", "t", "contact_force"])
@@ -48,12 +53,11 @@ with open(os.path.join(d, "transient.csv"), "w", newline="") as f:
         w.writerow([k, t[k], force[k]])
 import h5py  # noqa: E402
 
-n = 48
 ang = 2 * math.pi * np.arange(n) / n
 x = np.concatenate([0.5 * np.stack([np.cos(ang), np.sin(ang)], 1), 0.3 * np.stack([np.cos(ang), np.sin(ang)], 1)])
 cells = np.array([[i, (i + 1) % n, n + i] for i in range(n)] + [[(i + 1) % n, n + (i + 1) % n, n + i] for i in range(n)])
 with h5py.File(os.path.join(d, "transient.h5"), "w") as f:
-    f.create_group("parameters").attrs.update({"omega": 1.0, "theta_start": 0.0, "r_outer": 0.5})
+    f.create_group("parameters").attrs.update({"omega": omega, "theta_start": 0.0, "r_outer": 0.5})
     f["geometry/vertices"] = x
     f["viz/topology/cells"] = cells
     f["time"] = np.linspace(0, 3, 6)[:, None]
@@ -88,6 +92,52 @@ for name in ("report.md", "map.png", "spectrogram.png", "squeal.wav"):
 anim = [name for name in out["files"] if name.startswith("zones")]
 c.check(len(anim) == 1 and os.path.getsize(os.path.join(d, anim[0])) > 0, f"animation written: {anim}")
 c.check(out["missing"] == [], f"nothing missing: {out['missing']}")
+heard_mesh = f"{f_mesh * pitch / f_nd:.1f} Hz"  # on the audio scale: f / (seconds per unit)
+c.check(abs(out["mesh_passing"] / f_mesh - 1) < 1e-12 and heard_mesh in open(os.path.join(d, "report.md")).read(),
+        f"the mesh-passing frequency {out['mesh_passing']:.4f} (omega N / 2 pi = {f_mesh:.4f}) named in report.md at {heard_mesh}")
+c.check(not v["diverges"] and v["real_growth_rate"] is None and out["divergent"] == [],
+        "no real eigenvalue: no divergence in the verdict or the map")
+
+# the jam (docs/squeal.md 7.7): a torsional mode decaying at 27.7 /s in alpha (the mean tangential displacement), the
+# contact force only the mesh's square wave at 1588 Hz and a trace of the mode: the fit takes alpha and finds the mode
+from rollerreport import lines  # noqa: E402
+
+tj = np.arange(800) * 2.387e-5
+jam = {"t": tj, "alpha": -5.17e-5 + 1.3e-6 * np.exp(-27.7 * tj) * np.cos(2 * math.pi * 418.9 * tj),
+       "contact_force": 104.5 + 0.06 * np.sign(np.sin(2 * math.pi * 1587.9 * tj)) + 1e-3 * np.cos(2 * math.pi * 418.9 * tj)}
+column, y = lines.carrier(tj, jam, 418.9, 1587.9)
+fj = report.transient_fit(tj, y, 418.9)
+c.check(column == "alpha" and abs(fj["frequency"] / 418.9 - 1) < 0.01 and abs(fj["growth_rate"] / -27.7 - 1) < 0.05,
+        f"the jam: fitted on the {column} (alpha): {fj['frequency']:.2f} Hz (418.9), {fj['growth_rate']:.2f} /s (-27.7)")
+
+# a real positive eigenvalue (im = 0, frequency 0: roller's one row per real eigenvalue): a divergence, unstable
+# without a pitch, beside a decaying oscillating mode; in the map at one point
+dr = tempfile.mkdtemp(prefix="rollerreport_real_")
+json.dump({"name": "worn", "units": "si", "kelvin_voigt_tau": 4e-6, "friction": 1.2, "creep": 0.01},
+          open(os.path.join(dr, "scene.json"), "w"))
+with open(os.path.join(dr, "modes.csv"), "w", newline="") as f:
+    w = csv.writer(f)
+    w.writerow(cols[1:])
+    w.writerow([-51.6, 0, 0, -51.6, 0, "standing"])
+    w.writerow([11683.0, 0, 0, 11683.0, 6, "standing"])
+    w.writerow([-21.9, 2 * math.pi * 490.7, 490.7, -21.9, 0, "standing"])
+with open(os.path.join(dr, "sweep.csv"), "w", newline="") as f:
+    w = csv.writer(f)
+    w.writerow(["case", "friction", "sheet_speed"] + cols[1:])
+    for case, (mu, speed) in enumerate([(0.8, 0.2356), (1.2, 0.2356), (0.8, 0.0), (1.2, 0.0)]):
+        w.writerow([case, mu, speed, -21.9, 2 * math.pi * 490.7, 490.7, -21.9, 0, "standing"])
+        w.writerow([case, mu, speed, 11683.0 if case == 0 else -51.6, 0, 0, 11683.0 if case == 0 else -51.6, 6, "standing"])
+r = subprocess.run([sys.executable, "-m", "rollerreport", dr], env=env, capture_output=True, text=True)
+out = json.load(open(os.path.join(dr, "report.json"))) if r.returncode == 0 else {}
+v, md = out.get("verdict", {}), open(os.path.join(dr, "report.md")).read() if r.returncode == 0 else ""
+c.check(r.returncode == 0 and not v["squeals"] and v["diverges"] and v["unstable"] and v["real_growth_rate"] == 11683.0
+        and abs(v["frequency"] - 490.7) < 1e-9 and "unstable without a pitch" in md,
+        f"a real eigenvalue +11683: verdict diverges {v.get('diverges')}, squeals {v.get('squeals')}, the pitch still the "
+        f"oscillating mode's {v.get('pitch_hz', 0):.1f} Hz; report.md says 'unstable without a pitch' ({r.stderr.strip()[-300:]})")
+div = out.get("divergent", [])
+c.check(len(div) == 1 and div[0]["friction"] == 0.8 and div[0]["sheet_speed"] == 0.2356 and div[0]["growth_rate"] == 11683.0
+        and out.get("friction_onset") is None and "**diverges**" in md,
+        f"the map: a divergence at {div} only, no friction at onset of squeal ({out.get('friction_onset')})")
 
 # the loop of a short transient keeps its own line: 16 ms of a tone at 489 Hz (8 periods, decaying as the printer
 # roller's order-0 mode) heard at 489 Hz, not at the nearest multiple of 1 / (loop length) (about 120 Hz apart)

@@ -16,6 +16,11 @@ Delta eta = 2 sigma / omega: Kelvin-Voigt damping of loss factor eta gives a mod
 the decay eta omega / 2, so to first order the mode turns stable at eta_onset = eta + 2 sigma / omega. The
 friction at onset is read from the map: the least swept friction at which the largest growth rate is > 0, at
 the swept creep nearest the scene's.
+
+A real eigenvalue (im = 0: roller writes one row per real eigenvalue, frequency 0, and one row of each complex pair,
+im > 0) is a mode that does not oscillate. A positive one is a divergence: the steady sliding state leaves without a
+pitch (the velocity weakening's stick-slip onset, docs/squeal.md 7.7). The verdict and the map name it apart from
+the squeal, which is a growing oscillation.
 """
 import csv
 import json
@@ -24,7 +29,7 @@ import os
 
 import numpy as np
 
-from . import sound, zones
+from . import lines, sound, zones
 
 FIXED = {"case", "re", "im", "frequency", "growth_rate", "order", "wave", "error"}
 
@@ -49,9 +54,22 @@ def leading_mode(rows):
     return max(modes, key=lambda r: num(r["growth_rate"]))
 
 
-def verdict(mode, scene):
-    """The verdict as a dict from the leading mode's row and the scene."""
+def is_real(row):
+    """A real eigenvalue: Im lambda = 0 exactly (SLEPc's real arithmetic; src/modes/pep.c keeps every real one)."""
+    return num(row.get("im")) == 0 and math.isfinite(num(row.get("growth_rate")))
+
+
+def leading_real(rows):
+    """The real eigenvalue of largest growth rate, or None."""
+    real = [r for r in rows if is_real(r)]
+    return max(real, key=lambda r: num(r["growth_rate"])) if real else None
+
+
+def verdict(mode, scene, real=None):
+    """The verdict as a dict from the leading mode's row, the scene and the leading real eigenvalue's row (a
+    divergence when its growth rate is > 0: unstable without a pitch)."""
     sigma, w = num(mode["growth_rate"]), num(mode["im"])
+    g_real = num(real["growth_rate"]) if real else None
     f = w / (2 * math.pi)
     eta = num(scene.get("loss_factor"), 0.0)
     if "kelvin_voigt_tau" in scene:  # Kelvin-Voigt: the loss factor at the mode's frequency, 2 pi f tau (tau and f
@@ -61,23 +79,31 @@ def verdict(mode, scene):
     pitch = f if si else (num(scene.get("pitch_si_hz")) if "pitch_si_hz" in scene else f / s)
     return {"squeals": sigma > 0, "growth_rate": sigma, "frequency": f, "pitch_hz": pitch,
             "seconds_per_unit": s, "order": mode.get("order", ""), "wave": mode.get("wave", ""),
-            "loss_factor": eta, "loss_factor_margin": 2 * sigma / w, "loss_factor_onset": eta + 2 * sigma / w}
+            "loss_factor": eta, "loss_factor_margin": 2 * sigma / w, "loss_factor_onset": eta + 2 * sigma / w,
+            "real_growth_rate": g_real, "real_order": real.get("order", "") if real else "",
+            "diverges": bool(real) and g_real > 0, "unstable": sigma > 0 or (bool(real) and g_real > 0)}
 
 
 def sweep_map(rows, png, scene_x=None, scene_y=None, title="", si=False):
-    """The largest growth rate per swept point (with its mode's frequency, in Hz when si), drawn over the two swept
-    options; returns (xname, yname, friction at onset at the scene's x or None)."""
+    """The largest growth rate per swept point (with its mode's frequency, in Hz when si; a real positive eigenvalue,
+    a divergence, in place of the oscillating modes and marked "real"), drawn over the two swept options; returns
+    (xname, yname, the friction at the onset of squeal at the scene's x or None, [(x, y, growth) of every point with
+    a real positive eigenvalue])."""
     swept = [k for k in rows[0] if k not in FIXED]
     xname = next((k for k in swept if k != "friction"), swept[0])
     yname = "friction" if "friction" in swept else (swept[1] if len(swept) > 1 else swept[0])
-    best = {}
+    best, real = {}, {}
     for r in rows:
         key = (num(r[xname]), num(r[yname]))
         g = num(r["growth_rate"])
         if num(r.get("im")) > 0 and math.isfinite(g) and g > best.get(key, (-math.inf,))[0]:
             best[key] = (g, num(r["im"]) / (2 * math.pi))
+        elif is_real(r) and g > real.get(key, -math.inf):
+            real[key] = g
+    divergent = sorted((x, y, g) for (x, y), g in real.items() if g > 0)
     pts = np.array([(x, y, g) for (x, y), (g, _) in best.items()])
     freq = {key: f for key, (_, f) in best.items()}
+    cell = {key: max(g, real.get(key, -math.inf)) for key, (g, _) in best.items()}
     import matplotlib
 
     matplotlib.use("Agg")
@@ -87,17 +113,19 @@ def sweep_map(rows, png, scene_x=None, scene_y=None, title="", si=False):
     xs, ys = np.unique(pts[:, 0]), np.unique(pts[:, 1])
     grid = np.full((len(ys), len(xs)), np.nan)
     for x, y, g in pts:
-        grid[np.searchsorted(ys, y), np.searchsorted(xs, x)] = g
+        grid[np.searchsorted(ys, y), np.searchsorted(xs, x)] = cell[(x, y)]
     fig, ax = plt.subplots(figsize=(max(5.0, 1.8 + 1.1 * len(xs)), max(3.2, 1.4 + 0.7 * len(ys))))
-    lim = max(float(np.nanmax(np.abs(grid))), 1e-300)
+    lim = max(float(np.nanmax(np.abs(pts[:, 2]))), 1e-300)  # the oscillating modes' scale: a divergence saturates
     im = ax.imshow(grid, origin="lower", cmap="coolwarm", vmin=-lim, vmax=lim, aspect="auto")
     fig.colorbar(im, label="largest growth rate")
     for iy in range(len(ys)):
         for ix in range(len(xs)):
             if np.isfinite(grid[iy, ix]):
                 f = freq[(xs[ix], ys[iy])]
-                ax.text(ix, iy, f"{grid[iy, ix]:.3g}\n" + (f"{f:.0f} Hz" if si else f"f {f:.3g}"), ha="center",
-                        va="center", fontsize=8, fontweight="bold" if grid[iy, ix] > 0 else "normal")
+                diverges = real.get((xs[ix], ys[iy]), -math.inf) > 0
+                pitch = "real: no pitch" if diverges else (f"{f:.0f} Hz" if si else f"f {f:.3g}")
+                ax.text(ix, iy, f"{grid[iy, ix]:.3g}\n" + pitch, ha="center", va="center", fontsize=8,
+                        fontweight="bold" if grid[iy, ix] > 0 else "normal")
     if scene_x is not None and scene_y is not None and len(xs) and len(ys):
         ax.plot(np.argmin(np.abs(xs - scene_x)), np.argmin(np.abs(ys - scene_y)), "s", ms=28, mfc="none", mec="k", mew=2)
     ax.set_xticks(range(len(xs)), [f"{x:.3g}" for x in xs])
@@ -105,7 +133,7 @@ def sweep_map(rows, png, scene_x=None, scene_y=None, title="", si=False):
     ax.set_xlabel(xname)
     ax.set_ylabel(yname)
     ax.set_title((title + ": " if title else "") + "the least stable mode's growth rate" + (" (1/s)" if si else "")
-                 + " and frequency;\nbold: > 0, squeals; framed: the scene", fontsize=9)
+                 + " and frequency;\nbold: > 0, squeals (real: diverges, stick-slip); framed: the scene", fontsize=9)
     fig.tight_layout()
     fig.savefig(png, dpi=100)
     plt.close(fig)
@@ -116,7 +144,7 @@ def sweep_map(rows, png, scene_x=None, scene_y=None, title="", si=False):
         x0 = xs[np.argmin(np.abs(xs - scene_x))] if scene_x is not None else xs[0]
         col = pts[(pts[:, 0] == x0) & unstable]
         onset = float(col[:, 1].min()) if len(col) else None
-    return xname, yname, onset
+    return xname, yname, onset, divergent
 
 
 def transient_fit(t, y, f_guess):
@@ -134,12 +162,68 @@ def transient_fit(t, y, f_guess):
     return {"growth_rate": float(s[k].real), "frequency": float(abs(s[k].imag) / (2 * math.pi))}
 
 
-def heard_column(rows, columns=("contact_force", "friction_force")):
+def heard_column(cols, columns=("contact_force", "friction_force")):
     """The component of the force on the sheet that the transient moves most: of the normal (contact_force) and the
     tangential (friction_force) force, the one of larger standard deviation (in force units: what excites the sheet
-    and the air). A torsional mode (order 0) moves the friction force, a radial one the normal force."""
-    have = [c for c in columns if c in rows[0]]
-    return max(have, key=lambda c: float(np.nanstd([num(r[c]) for r in rows]))) if have else columns[0]
+    and the air; cols: the columns as arrays, the mesh's lines removed). A torsional mode (order 0) moves the
+    friction force, a radial one the normal force."""
+    have = [c for c in columns if c in cols]
+    return max(have, key=lambda c: float(np.nanstd(cols[c]))) if have else columns[0]
+
+
+def verdict_lines(v):
+    """The report's verdict in Markdown."""
+    word = "SQUEALS" if v["squeals"] else ("does not squeal, but its steady state DIVERGES" if v["diverges"] else
+                                           "does not squeal")
+    md = ["## Verdict", "",
+          f"The roller **{word}**: the leading mode (order {v['order']}, {v['wave']} wave) has the growth rate "
+          f"{v['growth_rate']:.4g} at the frequency {v['frequency']:.5g} (scene units), heard at "
+          f"**{v['pitch_hz']:.0f} Hz**.", "",
+          f"- margin against the rubber's damping: the loss factor {v['loss_factor']:.3g} "
+          f"{'lacks' if v['squeals'] else 'has to spare'} {abs(v['loss_factor_margin']):.3g} "
+          f"(2 sigma / omega); " + (f"the mode {'stabilizes' if v['squeals'] else 'destabilizes'} at a loss "
+          f"factor of about {v['loss_factor_onset']:.3g}" if v["loss_factor_onset"] > 0 else
+          "the mode is stable without the rubber's damping too (the contact alone damps it: the loss factor "
+          f"at onset {v['loss_factor_onset']:.3g} would be negative)")]
+    if v["diverges"]:
+        md += [f"- **unstable without a pitch**: a real eigenvalue {v['real_growth_rate']:+.4g} (order {v['real_order']}, "
+               "no frequency): a divergence, not a tone. The steady sliding state does not persist (with velocity "
+               "weakening: stick-slip sets in); no pitch is predicted for it, and the modes above describe a state "
+               "that does not last"]
+    return md + [""]
+
+
+def transient_lines(j, v, signal, out):
+    """The seeded transient's fit, the WAV and the spectrogram; returns the report's lines."""
+    rows = read_rows(j("transient.csv"))[1:]  # without row 0: the state before the first contact solve (force 0)
+    cols = {k: np.array([num(r[k]) for r in rows]) for k in rows[0] if k == "t" or k in lines.CARRIERS or k == signal}
+    t, f0 = cols["t"], v["frequency"]
+    f_m = out["mesh_passing"] = lines.mesh_passing(j("transient.h5"))
+    raw = heard_column(cols) if signal == "auto" else signal
+    loud_raw = sound.loudest_line(cols[raw], 1.0 / (t[1] - t[0]), fmin=0.05 * f0, pad=8)
+    k_raw = lines.is_mesh_line(loud_raw, f_m)
+    clean = {k: lines.notch(t, y, f_m, keep=f0) for k, y in cols.items() if k != "t"}
+    signal = heard_column(clean) if signal == "auto" else signal
+    out["signal"] = signal
+    column, y = lines.carrier(t, clean, f0, f_m)
+    fit = out["fit"] = dict(transient_fit(t, y, f0), column=column)
+    samples, rate = sound.audio_signal(t, clean[signal], v["seconds_per_unit"])
+    sound.write_wav(j("squeal.wav"), samples, rate)
+    heard = out["loudest_hz"] = sound.loudest_line(*sound.read_wav(j("squeal.wav")))
+    sound.spectrogram_png(j("spectrogram.png"), samples, rate, v["pitch_hz"])
+    out["files"] += ["squeal.wav", "spectrogram.png"]
+    s = v["seconds_per_unit"]
+    md = ["## Transient", "",
+          f"Seeded with the leading mode, fitted on the {column}: growth {fit['growth_rate']:.4g} (CEA "
+          f"{v['growth_rate']:.4g}), frequency {fit['frequency']:.5g} (CEA {f0:.5g}).", ""]
+    if f_m:
+        heard_at = f"{f_m / s:.1f} Hz" if s == 1 else f"{f_m:.5g} per unit of time, {f_m / s:.1f} Hz on the audio scale"
+        md += [f"The mesh-passing lines (the Gamma_C vertices cross the contact patch at {heard_at}; that line and its "
+               "harmonics are a discretization artefact, docs/squeal.md 7.7) are removed before the fit and the "
+               "sound" + (f"; they were the {raw}'s loudest line ({loud_raw / s:.1f} Hz, harmonic {k_raw})" if k_raw
+                          else "") + ".", ""]
+    return md + [f"Sound: [squeal.wav](squeal.wav), the {signal} with time scaled by {s:.4g} s per unit; its loudest "
+                 f"line {heard:.0f} Hz (predicted {v['pitch_hz']:.0f} Hz).", "", "![spectrogram](spectrogram.png)", ""]
 
 
 def write(folder, signal="auto"):
@@ -149,22 +233,12 @@ def write(folder, signal="auto"):
     scene = json.load(open(j("scene.json"))) if os.path.exists(j("scene.json")) else {}
     out = {"scene": scene, "files": [], "missing": []}
     commands = json.load(open(j("commands.json"))) if os.path.exists(j("commands.json")) else []
-    lines = [f"# Squeal report: {scene.get('name', os.path.basename(os.path.abspath(folder)))}", ""]
+    md = [f"# Squeal report: {scene.get('name', os.path.basename(os.path.abspath(folder)))}", ""]
     v = None
     if os.path.exists(j("modes.csv")):
-        mode = leading_mode(read_rows(j("modes.csv")))
-        v = out["verdict"] = verdict(mode, scene)
-        word = "SQUEALS" if v["squeals"] else "does not squeal"
-        lines += ["## Verdict", "",
-                  f"The roller **{word}**: the leading mode (order {v['order']}, {v['wave']} wave) has the growth rate "
-                  f"{v['growth_rate']:.4g} at the frequency {v['frequency']:.5g} (scene units), heard at "
-                  f"**{v['pitch_hz']:.0f} Hz**.", "",
-                  f"- margin against the rubber's damping: the loss factor {v['loss_factor']:.3g} "
-                  f"{'lacks' if v['squeals'] else 'has to spare'} {abs(v['loss_factor_margin']):.3g} "
-                  f"(2 sigma / omega); " + (f"the mode {'stabilizes' if v['squeals'] else 'destabilizes'} at a loss "
-                  f"factor of about {v['loss_factor_onset']:.3g}" if v["loss_factor_onset"] > 0 else
-                  "the mode is stable without the rubber's damping too (the contact alone damps it: the loss factor "
-                  f"at onset {v['loss_factor_onset']:.3g} would be negative)"), ""]
+        rows = read_rows(j("modes.csv"))
+        v = out["verdict"] = verdict(leading_mode(rows), scene, leading_real(rows))
+        md += verdict_lines(v)
     else:
         out["missing"].append("modes.csv")
     if os.path.exists(j("sweep.csv")):
@@ -175,56 +249,43 @@ def write(folder, signal="auto"):
                 r["creep"] = repr(1.0 - num(r.pop("sheet_speed")) / num(scene["surface_speed"]))
             xname = "creep"
         scene_x = num(scene.get(xname, scene.get("creep")), None)  # e.g. "sheet_speed" when that is swept
-        xname, yname, onset = sweep_map(rows, j("map.png"), scene_x, num(scene.get("friction"), None),
-                                        scene.get("name", ""), scene.get("units") == "si")
+        xname, yname, onset, divergent = sweep_map(rows, j("map.png"), scene_x, num(scene.get("friction"), None),
+                                                   scene.get("name", ""), scene.get("units") == "si")
         out["files"].append("map.png")
         out["friction_onset"] = onset
-        lines += ["## Map", "", f"![map](map.png)", "",
-                  f"- friction at onset (scene's {xname}): {onset if onset is not None else 'none in the map'}", ""]
+        out["divergent"] = [{xname: x, yname: y, "growth_rate": g} for x, y, g in divergent]
+        md += ["## Map", "", f"![map](map.png)", "",
+               f"- friction at onset of squeal (scene's {xname}): {onset if onset is not None else 'none in the map'}"]
+        md += [f"- **diverges** (a real positive eigenvalue: unstable without a pitch, stick-slip) at {xname} {x:.4g}, "
+               f"{yname} {y:.4g}: {g:+.4g}" for x, y, g in divergent] + [""]
     else:
         out["missing"].append("sweep.csv")
     if os.path.exists(j("transient.csv")) and v is not None:
-        # without the monitor's row 0: the initial state, before the first contact solve (its contact force is 0)
-        rows = read_rows(j("transient.csv"))[1:]
-        signal = heard_column(rows) if signal == "auto" else signal
-        out["signal"] = signal
-        data = {k: np.array([num(r[k]) for r in rows]) for k in ("t", signal)}
-        fit = out["fit"] = transient_fit(data["t"], data[signal], v["frequency"])
-        samples, rate = sound.audio_signal(data["t"], data[signal], v["seconds_per_unit"])
-        sound.write_wav(j("squeal.wav"), samples, rate)
-        heard = out["loudest_hz"] = sound.loudest_line(*sound.read_wav(j("squeal.wav")))
-        sound.spectrogram_png(j("spectrogram.png"), samples, rate, v["pitch_hz"])
-        out["files"] += ["squeal.wav", "spectrogram.png"]
-        lines += ["## Transient", "",
-                  f"Seeded with the leading mode: growth {fit['growth_rate']:.4g} (CEA {v['growth_rate']:.4g}), "
-                  f"frequency {fit['frequency']:.5g} (CEA {v['frequency']:.5g}).", "",
-                  f"Sound: [squeal.wav](squeal.wav), the {signal} with time scaled by {v['seconds_per_unit']:.4g} s "
-                  f"per unit; its loudest line {heard:.0f} Hz (predicted {v['pitch_hz']:.0f} Hz).", "",
-                  "![spectrogram](spectrogram.png)", ""]
+        md += transient_lines(j, v, signal, out)
     else:
         out["missing"].append("transient.csv")
         failed = [c for c in commands if c.get("step") == "transient" and c.get("returncode")]
         if failed:
-            lines += ["## Transient", "", f"The seeded transient **stopped with an error**: {failed[0]['error']} "
-                      f"(its log: {failed[0]['log']}).", ""]
+            md += ["## Transient", "", f"The seeded transient **stopped with an error**: {failed[0]['error']} "
+                   f"(its log: {failed[0]['log']}).", ""]
     if os.path.exists(j("transient.h5")):
         path, kind = zones.animate(zones.frames_from_h5(j("transient.h5")), j("zones"))
         out["files"].append(os.path.basename(path))
-        lines += ["## Stick and slip", "", f"![zones]({os.path.basename(path)}) ({kind})", ""]
+        md += ["## Stick and slip", "", f"![zones]({os.path.basename(path)}) ({kind})", ""]
     else:
         out["missing"].append("transient.h5")
     if out["missing"]:
-        lines += ["Missing: " + ", ".join(out["missing"]), ""]
+        md += ["Missing: " + ", ".join(out["missing"]), ""]
     if commands:
         out["commands"] = commands
-        lines += ["## Commands", "", "Each step as run (in the output folder; rollerreport.run wrote them to "
-                  "commands.json):", ""]
+        md += ["## Commands", "", "Each step as run (in the output folder; rollerreport.run wrote them to "
+               "commands.json):", ""]
         for c in commands:
             took = f", {c['seconds']:.0f} s" if c.get("seconds") is not None else ""
             state = f" **failed**: {c['error']}" if c.get("returncode") else ""
-            lines += [f"- {c['step']}: {c['what']}{took}{state}", "", "      " + c["command"], ""]
+            md += [f"- {c['step']}: {c['what']}{took}{state}", "", "      " + c["command"], ""]
     with open(j("report.md"), "w") as f:
-        f.write("\n".join(lines))
+        f.write("\n".join(md))
     out["files"].append("report.md")
     with open(j("report.json"), "w") as f:
         json.dump({k: val for k, val in out.items()}, f, indent=1, default=str)
