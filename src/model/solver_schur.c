@@ -158,7 +158,13 @@ static PetscErrorCode SchurSetUp(PC pc)
   PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, sc->ng, sc->ng, sc->Sa, &sc->S));
   PetscCall(MatFactorInfoInitialize(&info));
   PetscCall(MatCholeskyFactor(sc->S, NULL, &info));
-  PetscCall(PetscInfo(pc, "Substructured Cholesky: %" PetscInt_FMT " interior unknowns here, interface %" PetscInt_FMT "\n", nI, sc->ng));
+  {
+    MatInfo fi, gi;
+
+    PetscCall(MatGetInfo(sc->F, MAT_LOCAL, &fi));
+    PetscCall(MatGetInfo(sc->Gt, MAT_LOCAL, &gi));
+    PetscCall(PetscInfo(pc, "Substructured Cholesky: %" PetscInt_FMT " interior unknowns here (factor %g nonzeros, G %g), interface %" PetscInt_FMT "\n", nI, fi.nz_used, gi.nz_used, sc->ng));
+  }
   PetscCall(PetscFree(gl));
   PetscCall(PetscFree(isg));
   PetscCall(PetscFree(inv));
@@ -213,6 +219,25 @@ static PetscErrorCode SchurDestroy(PC pc)
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode SchurView(PC pc, PetscViewer viewer)
+{
+  SchurCtx *sc;
+  PetscInt  nI = 0;
+  MatInfo   fi = {0}, gi = {0};
+  PetscReal loc[3], mx[3];
+
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &sc));
+  if (!sc->F) PetscFunctionReturn(0);
+  PetscCall(VecGetSize(sc->bI, &nI));
+  PetscCall(MatGetInfo(sc->F, MAT_LOCAL, &fi));
+  PetscCall(MatGetInfo(sc->Gt, MAT_LOCAL, &gi));
+  loc[0] = nI, loc[1] = fi.nz_used, loc[2] = gi.nz_used;
+  PetscCall(MPIU_Allreduce(loc, mx, 3, MPIU_REAL, MPIU_MAX, PetscObjectComm((PetscObject)pc)));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "  interface %" PetscInt_FMT " unknowns (dense Schur complement on every rank); largest interior %g unknowns, its factor %g nonzeros, its G %g\n", sc->ng, mx[0], mx[1], mx[2]));
+  PetscFunctionReturn(0);
+}
+
 /* The step KSP's PC as the substructured Cholesky (an SPD matrix of type MPIAIJ on several ranks). */
 PetscErrorCode RollerSchurPCSet(PC pc)
 {
@@ -225,6 +250,7 @@ PetscErrorCode RollerSchurPCSet(PC pc)
   PetscCall(PCShellSetSetUp(pc, SchurSetUp));
   PetscCall(PCShellSetApply(pc, SchurApply));
   PetscCall(PCShellSetDestroy(pc, SchurDestroy));
+  PetscCall(PCShellSetView(pc, SchurView));
   PetscCall(PCShellSetName(pc, "substructured Cholesky: interiors factored on their ranks, the dense interface Schur complement on every rank"));
   PetscFunctionReturn(0);
 }
