@@ -11,6 +11,8 @@
    factorization as nested dissection with the partition's separator last, exact to round-off. */
 #include "model/solver_schur.h"
 
+static PetscErrorCode Forward(const SchurCtx *, Vec, Vec);
+
 /* G_r^T by forward substitutions of the interface columns of A_{I_r,Gamma} (the fill of each kept, exact zeros
    dropped), and this rank's share of S: its interface rows of A_{Gamma,Gamma} minus G_r^T G_r. */
 static PetscErrorCode Coupling(Mat A, SchurCtx *sc, PetscInt nI, const PetscInt inv[], const PetscInt gl[], const PetscBool isg[])
@@ -67,7 +69,8 @@ static PetscErrorCode Coupling(Mat A, SchurCtx *sc, PetscInt nI, const PetscInt 
       PetscCall(VecSetValues(sc->bI, ptr[j + 1] - ptr[j], ent + ptr[j], ev + ptr[j], INSERT_VALUES));
       PetscCall(VecAssemblyBegin(sc->bI));
       PetscCall(VecAssemblyEnd(sc->bI));
-      PetscCall(MatForwardSolve(sc->F, sc->bI, sc->yI));
+      if (sc->rows.on) PetscCall(Forward(sc, sc->bI, sc->yI));
+      else PetscCall(MatForwardSolve(sc->F, sc->bI, sc->yI));
       PetscCall(VecSet(sc->bI, 0.0));
       PetscCall(VecGetArray(sc->yI, &y));
       for (PetscInt p = 0; p < nI; ++p) {
@@ -115,9 +118,98 @@ static PetscErrorCode Coupling(Mat A, SchurCtx *sc, PetscInt nI, const PetscInt 
   PetscFunctionReturn(0);
 }
 
+/* The backward substitution D^{1/2} U x = b (MatBackwardSolve) on the factor's rows. */
+static PetscErrorCode Backward(const SchurCtx *sc, Vec b, Vec x)
+{
+  const PetscInt    *ai = sc->rows.i, *aj = sc->rows.j;
+  const PetscScalar *aa = sc->rows.a, *bb;
+  PetscScalar       *xx;
+  PetscInt           n;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetSize(b, &n));
+  PetscCall(VecGetArrayRead(b, &bb));
+  PetscCall(VecGetArray(x, &xx));
+  for (PetscInt k = n - 1; k >= 0; --k) {
+    PetscScalar s = PetscSqrtReal(PetscRealPart(aa[ai[k + 1] - 1])) * bb[k];
+
+    for (PetscInt p = ai[k + 1] - 2; p >= ai[k]; --p) s += aa[p] * xx[aj[p]]; /* backwards: one descending stream */
+    xx[k] = s;
+  }
+  PetscCall(VecRestoreArrayRead(b, &bb));
+  PetscCall(VecRestoreArray(x, &xx));
+  PetscCall(PetscLogFlops(2.0 * ai[n] - n));
+  PetscFunctionReturn(0);
+}
+
+/* The forward substitution U^T D^{1/2} x = b (MatForwardSolve) on the factor's rows, skipping the rows of zero
+   entries: the interface columns' substitutions touch only their reach in the elimination tree. */
+static PetscErrorCode Forward(const SchurCtx *sc, Vec b, Vec x)
+{
+  const PetscInt    *ai = sc->rows.i, *aj = sc->rows.j;
+  const PetscScalar *aa = sc->rows.a;
+  PetscScalar       *xx;
+  PetscInt           n;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetSize(b, &n));
+  PetscCall(VecCopy(b, x));
+  PetscCall(VecGetArray(x, &xx));
+  for (PetscInt k = 0; k < n; ++k) {
+    const PetscScalar xk = xx[k];
+
+    if (xk == 0.0) continue;
+    for (PetscInt p = ai[k]; p < ai[k + 1] - 1; ++p) xx[aj[p]] += aa[p] * xk;
+    xx[k] = xk * PetscSqrtReal(PetscRealPart(aa[ai[k + 1] - 1]));
+  }
+  PetscCall(VecRestoreArray(x, &xx));
+  PetscCall(PetscLogFlops(2.0 * ai[n] - n));
+  PetscFunctionReturn(0);
+}
+
+/* The factor's rows for Forward() and Backward(), kept only if they reproduce MatForwardSolve and MatBackwardSolve
+   on a test vector (to 1e-12). */
+static PetscErrorCode SubstitutionSetUp(SchurCtx *sc)
+{
+  PetscInt  n;
+  PetscBool done;
+  Vec       b, x1, x2;
+  PetscReal err, ref;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatGetRowIJ(sc->F, 0, PETSC_FALSE, PETSC_FALSE, &n, &sc->rows.i, &sc->rows.j, &done));
+  if (!done) PetscFunctionReturn(0);
+  PetscCall(MatSeqAIJGetArrayRead(sc->F, &sc->rows.a));
+  PetscCall(VecDuplicate(sc->bI, &b));
+  PetscCall(VecDuplicate(sc->bI, &x1));
+  PetscCall(VecDuplicate(sc->bI, &x2));
+  for (PetscInt k = 0; k < n; ++k) PetscCall(VecSetValue(b, k, PetscSinReal(0.37 * k + 0.1), INSERT_VALUES));
+  PetscCall(VecAssemblyBegin(b));
+  PetscCall(VecAssemblyEnd(b));
+  sc->rows.on = PETSC_TRUE;
+  for (PetscInt pass = 0; pass < 2; ++pass) {
+    PetscCall(pass ? MatBackwardSolve(sc->F, b, x1) : MatForwardSolve(sc->F, b, x1));
+    PetscCall(pass ? Backward(sc, b, x2) : Forward(sc, b, x2));
+    PetscCall(VecNorm(x1, NORM_INFINITY, &ref));
+    PetscCall(VecAXPY(x2, -1.0, x1));
+    PetscCall(VecNorm(x2, NORM_INFINITY, &err));
+    if (err > 1e-12 * ref) sc->rows.on = PETSC_FALSE;
+    PetscCall(PetscInfo(NULL, "Substructured Cholesky: own %s substitution against PETSc's: difference %g of %g\n", pass ? "backward" : "forward", (double)err, (double)ref));
+  }
+  PetscCall(VecDestroy(&b));
+  PetscCall(VecDestroy(&x1));
+  PetscCall(VecDestroy(&x2));
+  PetscFunctionReturn(0);
+}
+
 static PetscErrorCode SchurDestroyCtx(SchurCtx *sc)
 {
+  PetscBool done;
+  PetscInt  n;
+
   PetscFunctionBeginUser;
+  if (sc->rows.a) PetscCall(MatSeqAIJRestoreArrayRead(sc->F, &sc->rows.a));
+  if (sc->rows.i) PetscCall(MatRestoreRowIJ(sc->F, 0, PETSC_FALSE, PETSC_FALSE, &n, &sc->rows.i, &sc->rows.j, &done));
   PetscCall(MatDestroy(&sc->F));
   PetscCall(MatDestroy(&sc->Gt));
   PetscCall(MatDestroy(&sc->S));
@@ -150,6 +242,7 @@ static PetscErrorCode SchurSetUp(PC pc)
   PetscCall(VecCreateSeq(PETSC_COMM_SELF, nI, &sc->bI));
   PetscCall(VecDuplicate(sc->bI, &sc->yI));
   PetscCall(VecDuplicate(sc->bI, &sc->xI));
+  PetscCall(SubstitutionSetUp(sc));
   PetscCall(VecCreateSeq(PETSC_COMM_SELF, sc->ng, &sc->xg));
   PetscCall(VecDuplicate(sc->xg, &sc->tg));
   PetscCall(PetscCalloc1((size_t)sc->ng * sc->ng, &sc->Sa));
@@ -185,7 +278,8 @@ static PetscErrorCode SchurApply(PC pc, Vec b, Vec x)
   PetscCall(VecGetArray(sc->bI, &bi));
   for (PetscInt p = 0; p < nI; ++p) bi[p] = bb[sc->row[p]];
   PetscCall(VecRestoreArray(sc->bI, &bi));
-  PetscCall(MatForwardSolve(sc->F, sc->bI, sc->yI));
+  if (sc->rows.on) PetscCall(Forward(sc, sc->bI, sc->yI));
+  else PetscCall(MatForwardSolve(sc->F, sc->bI, sc->yI));
   PetscCall(MatMult(sc->Gt, sc->yI, sc->tg)); /* G_r^T y_r */
   PetscCall(VecScale(sc->tg, -1.0));
   PetscCall(VecGetArray(sc->tg, &g));
@@ -196,7 +290,8 @@ static PetscErrorCode SchurApply(PC pc, Vec b, Vec x)
   PetscCall(MatSolve(sc->S, sc->tg, sc->xg));
   PetscCall(MatMultTranspose(sc->Gt, sc->xg, sc->xI)); /* G_r x_Gamma */
   PetscCall(VecAYPX(sc->xI, -1.0, sc->yI));
-  PetscCall(MatBackwardSolve(sc->F, sc->xI, sc->bI));
+  if (sc->rows.on) PetscCall(Backward(sc, sc->xI, sc->bI));
+  else PetscCall(MatBackwardSolve(sc->F, sc->xI, sc->bI));
   PetscCall(VecGetArray(x, &xx));
   PetscCall(VecGetArrayRead(sc->bI, (const PetscScalar **)&bi));
   for (PetscInt p = 0; p < nI; ++p) xx[sc->row[p]] = bi[p];
