@@ -20,8 +20,7 @@ import benchlib  # noqa: E402
 from benchlib import event, stage  # noqa: E402
 
 ROOT = benchlib.ROOT
-VARIANTS = [("1 rank", 1, []), ("2 ranks, substructured", 2, ["-solver_redundant_max", 0]),
-            ("2 ranks, MUMPS", 2, ["-solver_redundant_max", 0, "-solver_schur", "false"])]
+VARIANTS = [("1 rank", 1, []), ("2 ranks, substructured", 2, []), ("2 ranks, MUMPS", 2, ["-solver_schur", "false", "-solver_redundant_max", 0])]
 
 
 def steps_to_end(text, scheme_dt):

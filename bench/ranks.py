@@ -5,7 +5,8 @@
 baselines: `mpiexec -n 1 roller` (the issue's: the same launcher as the parallel run) and the bare `roller` (Open MPI's
 singleton start-up). Wall time is what a user waits for; the CPU time (user + system of the whole
 process tree) is printed beside it (2 ranks spend more CPU in total, the question is the wall). Also the 2-rank run
-with MUMPS (-solver_redundant_max 0, the former parallel default) for comparison.
+with the former layouts for comparison: the whole factor on every rank (-solver_schur false) and MUMPS
+(-solver_schur false -solver_redundant_max 0).
 
 The development machine has 2 cores and is shared: a 2-rank run competes with other jobs for both cores, so
 measure on a quiet machine (the load is printed).
@@ -32,7 +33,8 @@ def main():
     o = ap.parse_args()
     # (label, ranks, options, under mpiexec): the baseline is `mpiexec -n 1`; the bare command (Open MPI's
     # singleton start-up) is measured beside it
-    variants = [("1 rank", 1, [], False), ("mpiexec -n 1", 1, [], True), ("2 ranks", 2, [], True)] + ([] if o.no_mumps else [("2 ranks, MUMPS", 2, ["-solver_redundant_max", 0], True)])
+    variants = [("1 rank", 1, [], False), ("mpiexec -n 1", 1, [], True), ("2 ranks", 2, [], True)] + ([] if o.no_mumps else [("2 ranks, whole factor on every rank", 2, ["-solver_schur", "false"], True),
+                                                  ("2 ranks, MUMPS", 2, ["-solver_schur", "false", "-solver_redundant_max", 0], True)])
     rows = []
     for scene in o.scenes.split(","):
         args = ["-options_file", os.path.join(ROOT, "jobs", f"{scene}.yaml"), "-ts_max_time", o.t_end]

@@ -134,8 +134,8 @@ typedef struct {
   PetscReal              damping;       /* eta of the DMF functional */
   PetscBool              static_solve;  /* -static: the rest state at the obstacle of t = max_time in one step, A = K */
   RollerContactMass      contact_mass;  /* -contact_mass (model/mass.c) */
-  PetscInt               redundant_max; /* on several ranks, step matrices of at most this many unknowns are factored whole on every rank (model/solver.c) */
-  PetscBool              schur;         /* larger SPD ones by substructuring (model/solver_schur.c), else MUMPS */
+  PetscBool              schur;         /* on several ranks, SPD step matrices by substructuring (model/solver_schur.c) */
+  PetscInt               redundant_max; /* the others: up to this many unknowns factored whole on every rank, larger ones by MUMPS (model/solver.c) */
 } RollerDiscretization;
 
 /* Operators fixed at set-up (model/operators.c): mass M, stiffness K (the step matrices are the time scheme's,

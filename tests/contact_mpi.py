@@ -1,10 +1,10 @@
 """1 rank and 2 ranks give the same contact time series (issue 4): rolling contact (the contact set moves
 across the partition boundary) on a coarse mesh; every CSV column agrees to 1e-9 relative to its range and
 the number of contact nodes is identical at every step. Both the condensed default and SNES VI, and the condensed
-solver with each parallel layout of the step factorization: the whole matrix on every rank (the default for this
-size, the condensation's columns split over the ranks), the substructured Cholesky of larger matrices
-(-solver_redundant_max 0: each rank factors its interior, the interface's Schur complement on every rank,
-src/model/solver_schur.c) and MUMPS (-solver_redundant_max 0 -solver_schur false).
+solver with each parallel layout of the step factorization: the substructured Cholesky (the default: each rank
+factors its interior, the interface's Schur complement on every rank, src/model/solver_schur.c), the whole matrix on
+every rank (-solver_schur false; the condensation's columns split over the ranks) and MUMPS (-solver_schur false
+-solver_redundant_max 0).
 
 Discretization: rank independence must hold for whatever users run, so this is Roller's default (P2 curved,
 extrapolated Coriolis velocity, dt from -ts_phase_error: 0.0054 for t <= 2, 0.0109 for t <= 0.5) on the
@@ -16,8 +16,8 @@ from rollertest import Checker, read_csv, run
 c = Checker("contact_mpi")
 base = ["-mesh_h", 0.05, "-obstacle", "-obstacle_speed", 0.05, "-obstacle_depth", 0.01, "-omega", 0.3141592653589793,
         "-damping", 1, "-quiet"]
-for solver, t_end, extra in (("condensed", 2.0, []), ("vi", 0.5, []), ("condensed_schur", 2.0, ["-solver_redundant_max", 0]),
-                            ("condensed_mumps", 2.0, ["-solver_redundant_max", 0, "-solver_schur", "false"])):
+for solver, t_end, extra in (("condensed", 2.0, []), ("vi", 0.5, []), ("condensed_redundant", 2.0, ["-solver_schur", "false"]),
+                            ("condensed_mumps", 2.0, ["-solver_schur", "false", "-solver_redundant_max", 0])):
     d = []
     for n in (1, 2):
         run(base + ["-contact_solver", solver.split("_")[0], "-ts_max_time", t_end, "-monitor_csv", f"{solver}_np{n}.csv"] + extra, nproc=n)

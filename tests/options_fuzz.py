@@ -28,7 +28,7 @@ VALID = {
     ("-ts_dt", "0"): "chosen from -ts_phase_error", ("-mesh_h", "0"): "chosen from -ts_phase_error",
     ("-mesh_h_contact", "0"): "uniform mesh", ("-mesh_contact_layer", "0"): "2 h_c (no grading: unused)",
     ("-ts_max_time", "0"): "the initial state only", ("-ts_max_steps", "-1"): "no cap", ("-ts_max_steps", "0"): "the initial state only",
-    ("-solver_redundant_max", "0"): "MUMPS on several ranks (one rank: unused)",
+    ("-solver_redundant_max", "0"): "MUMPS for the non-symmetric step matrices on several ranks (one rank: unused)",
     ("-ic_amplitude", "0"): "zero amplitude", ("-checkpoint_every", "0"): "only on a signal",
     ("-sheet_speed", "-1"): "the sheet backwards", ("-sheet_speed", "0"): "a still sheet",
     ("-obstacle_depth", "0"): "touching only", ("-friction", "0"): "frictionless",

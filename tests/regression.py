@@ -7,7 +7,11 @@ those scenes changed their damping from eta = 1 to the rubber's Kelvin-Voigt dam
 code itself had reproduced the old ones at tau = 0; the np2 ones again when the parallel step solver of these
 small meshes became a factorization held whole on every rank instead of MUMPS (-solver_redundant_max,
 docs/performance.md): the new np2 runs differ from the np1 goldens by at most 8.1e-12 (alpha of compression_P2),
-the MUMPS goldens by 1.7e-12, both round-off of a different elimination order amplified by the contact set); a
+the MUMPS goldens by 1.7e-12, both round-off of a different elimination order amplified by the contact set; and
+again when the substructured Cholesky became the parallel default for these symmetric step matrices
+(-solver_schur, model/solver_schur.c): the new np2 runs differ from the np1 goldens by at most 3.8e-12, alpha of
+compression_P1, and from the previous np2 goldens by 7.2e-11 in shaft_torque of compression_P2, a column the np1
+comparison does not have); a
 refactoring that changes a result fails here. Usage: regression.py [--regenerate] [--nproc N] (N = 1 or 2; default: the cases of both)."""
 import argparse
 import os

@@ -19,12 +19,12 @@ PetscErrorCode RollerDiscretizationSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsReal("-damping", "Damping eta of the DMF functional", NULL, ctx->disc.damping, &ctx->disc.damping, NULL));
   PetscCall(PetscOptionsBool("-static", "Solve the static contact (Signorini) problem K xi = E N lambda at the obstacle of t = -ts_max_time in one step, the state a damped run with -omega 0 comes to rest in (docs/validation.md section 5)", NULL,
                              ctx->disc.static_solve, &ctx->disc.static_solve, NULL));
-  PetscCall(PetscOptionsInt("-solver_redundant_max", "On several ranks: step matrices of at most this many unknowns are factored whole on every rank (serial Cholesky, no distributed triangular solves), larger ones by substructuring (-solver_schur) or MUMPS (docs/performance.md)", NULL,
-                            ctx->disc.redundant_max, &ctx->disc.redundant_max, NULL));
-  PetscCall(PetscOptionsBool("-solver_schur", "On several ranks: larger symmetric positive definite step matrices by substructuring (each rank factors its interior, the interface's dense Schur complement on every rank); false: MUMPS (docs/performance.md)", NULL,
+  PetscCall(PetscOptionsBool("-solver_schur", "On several ranks: symmetric positive definite step matrices by substructuring (each rank factors its interior, the interface's dense Schur complement on every rank); false: as the non-symmetric ones (-solver_redundant_max) (docs/performance.md)", NULL,
                              ctx->disc.schur, &ctx->disc.schur, NULL));
+  PetscCall(PetscOptionsInt("-solver_redundant_max", "On several ranks, step matrices not solved by substructuring (non-symmetric, or -solver_schur false): at most this many unknowns factored whole on every rank (serial Cholesky or LU), larger ones by MUMPS (docs/performance.md)", NULL,
+                            ctx->disc.redundant_max, &ctx->disc.redundant_max, NULL));
   PetscOptionsEnd();
-  PetscCheck(ctx->disc.redundant_max >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-solver_redundant_max %" PetscInt_FMT " must be >= 0 (0: MUMPS always)", ctx->disc.redundant_max);
+  PetscCheck(ctx->disc.redundant_max >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-solver_redundant_max %" PetscInt_FMT " must be >= 0 (0: MUMPS for every step matrix not solved by substructuring)", ctx->disc.redundant_max);
   PetscCheck(ctx->disc.degree >= 1 && ctx->disc.degree <= 3, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-degree %" PetscInt_FMT " must be 1, 2 or 3", ctx->disc.degree);
   PetscCheck(!ctx->mesh.curved || ctx->disc.degree >= 2, ctx->comm, PETSC_ERR_ARG_INCOMP, "-mesh_curved needs -degree 2 or 3 (a P1 field cannot see a curved edge), got -degree %" PetscInt_FMT, ctx->disc.degree);
   RollerCheckOption(ctx->comm, "-damping", ctx->disc.damping, ctx->disc.damping >= 0, ">= 0");

@@ -20,33 +20,36 @@ PetscErrorCode RollerDirectSolverDefaults(KSP ksp, PCType type)
   PetscFunctionReturn(0);
 }
 
-/* The parallel layout of a step matrix's direct solve: up to -solver_redundant_max unknowns every rank factors the
-   whole matrix (PCREDUNDANT, one copy per rank, the serial factorization with nested dissection). A step's solve then
-   costs one serial solve and two scatters, and the contact condensation's columns are split over the ranks
-   (contact_condensed.c); MUMPS's distributed triangular solves cost more than they save on such sizes (measured on
-   the rolling scene, 20k unknowns: its 25 blocks of S columns took 2-5 times longer on 2 ranks than on one,
-   docs/performance.md). Larger matrices keep MUMPS, whose factorization scales. */
+/* The parallel layout of a step matrix's direct solve (docs/performance.md "Several ranks"):
+   - a symmetric positive definite matrix by substructuring (-solver_schur, model/solver_schur.c): each rank factors
+     its interior, the interface's dense Schur complement on every rank; a solve is each rank's share of the
+     substitutions and one reduction of the interface's size (2 ranks: the rolling and feed scenes 2.2-2.4x faster
+     than one rank, 221k unknowns 1.9x);
+   - otherwise (the centred Coriolis term's LU, or -solver_schur false) up to -solver_redundant_max unknowns every rank
+     factors the whole matrix (PCREDUNDANT, the serial factorization with nested dissection; the contact
+     condensation's columns split over the ranks, contact_condensed.c), larger ones MUMPS, whose distributed
+     triangular solves cost more than a serial solve on these sizes. */
 static PetscErrorCode StepSolverLayout(Roller ctx, RollerStepOperator *op, PCType type)
 {
   PetscMPIInt size;
   PetscInt    N;
   PC          pc, ipc;
   KSP         inner;
-  PetscBool   schur;
+  PetscBool   schur, redundant;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(ctx->comm, &size));
   PetscCall(MatGetSize(op->A, &N, NULL));
-  schur = (PetscBool)(size > 1 && N > ctx->disc.redundant_max && ctx->disc.schur && !op->G);
+  schur     = (PetscBool)(size > 1 && ctx->disc.schur && !op->G);
+  redundant = (PetscBool)(size > 1 && !schur && N <= ctx->disc.redundant_max);
   if (ctx->ts.view && op->id == 0 && size > 1)
-    PetscCall(PetscPrintf(ctx->comm, "roller: step solver on %d ranks: %s (%" PetscInt_FMT " unknowns %s -solver_redundant_max %" PetscInt_FMT ")\n", size,
-                          N <= ctx->disc.redundant_max ? "the whole matrix factored on every rank (PCREDUNDANT, serial nested dissection), the contact condensation's columns split over the ranks"
-                          : schur                      ? "substructured Cholesky (each rank factors its interior, the interface's dense Schur complement on every rank: -solver_schur)"
-                                                       : "MUMPS, the factorization distributed",
-                          N, N > ctx->disc.redundant_max ? ">" : "<=", ctx->disc.redundant_max));
+    PetscCall(PetscPrintf(ctx->comm, "roller: step solver on %d ranks, %" PetscInt_FMT " unknowns: %s\n", size, N,
+                          schur       ? "substructured Cholesky (each rank factors its interior, the interface's dense Schur complement on every rank; -solver_schur)"
+                          : redundant ? "the whole matrix factored on every rank (PCREDUNDANT, serial nested dissection; the contact condensation's columns split over the ranks; at most -solver_redundant_max unknowns)"
+                                      : "MUMPS, the factorization distributed (more than -solver_redundant_max unknowns)"));
   PetscCall(KSPGetPC(op->ksp, &pc));
   if (schur) PetscCall(RollerSchurPCSet(pc));
-  if (size == 1 || N > ctx->disc.redundant_max) PetscFunctionReturn(0);
+  if (!redundant) PetscFunctionReturn(0);
   PetscCall(PCSetType(pc, PCREDUNDANT));
   PetscCall(PCRedundantSetNumber(pc, size));
   PetscCall(PCRedundantGetKSP(pc, &inner));
