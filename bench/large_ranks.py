@@ -7,7 +7,7 @@ step (the scene's number of steps printed by -ts_view), on 1 rank (serial Choles
 with the substructured Cholesky (the default above -solver_redundant_max) and with MUMPS (-solver_schur false).
 Interleaved rounds, the median of each figure; wall times, CPU beside them. Measure on a quiet machine.
 
-Usage: /usr/bin/python3 bench/large_ranks.py [--rounds 3] [--steps 20] [--scenes free,rolling] [--h 0.005]"""
+Usage: /usr/bin/python3 bench/large_ranks.py [--rounds 3] [--steps 20] [--scenes free,rolling] [--h 0.005] [--no-mumps]"""
 import argparse
 import os
 import platform
@@ -35,15 +35,17 @@ def main():
     ap.add_argument("--steps", type=int, default=20)
     ap.add_argument("--scenes", default="free,rolling")
     ap.add_argument("--h", default="0.005")
+    ap.add_argument("--no-mumps", action="store_true", help="leave out the MUMPS variant")
     o = ap.parse_args()
+    variants = [v for v in VARIANTS if not (o.no_mumps and "MUMPS" in v[0])]
     rows = []
     for scene in o.scenes.split(","):
         args = ["-options_file", os.path.join(ROOT, "jobs", f"{scene}.yaml"), "-degree", 2, "-mesh_h", o.h, "-ts_max_steps", o.steps, "-ts_view"]
         if scene != "free":
             args += ["-mesh_h_contact", o.h]
-        fig = {v[0]: {"setup": [], "step": [], "solve": [], "wall": [], "cpu": [], "end": []} for v in VARIANTS}
+        fig = {v[0]: {"setup": [], "step": [], "solve": [], "wall": [], "cpu": [], "end": []} for v in variants}
         for r in range(o.rounds):
-            for label, n, extra in VARIANTS:
+            for label, n, extra in variants:
                 res = benchlib.run(args + extra, nproc=n)
                 nsteps = o.steps
                 step = (stage(res, "Roller step") + stage(res, "Roller contact") + stage(res, "Roller diagnostics")) / nsteps
@@ -59,7 +61,7 @@ def main():
                 print(f"  {scene} round {r + 1} {label}: set-up {f['setup'][-1]:.1f} s, {1e3 * step:.1f} ms/step, whole run ~{f['end'][-1]:.0f} s "
                       f"({total:.0f} steps); wall {res['wall']:.1f} s, load {os.getloadavg()[0]:.1f}", file=sys.stderr, flush=True)
         base = statistics.median(fig["1 rank"]["end"])
-        for label, n, extra in VARIANTS:
+        for label, n, extra in variants:
             f = {k: statistics.median(v) for k, v in fig[label].items()}
             rows.append(f"| {scene} | {label} | {f['setup']:.1f} | {1e3 * f['step']:.1f} | {1e3 * f['solve']:.1f} | {f['wall']:.1f} ({f['cpu']:.1f}) | "
                         f"{f['end']:.0f} | {base / f['end']:.2f} | `{benchlib.shell(args + extra, n)}` |")

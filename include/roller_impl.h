@@ -135,6 +135,7 @@ typedef struct {
   PetscBool              static_solve;  /* -static: the rest state at the obstacle of t = max_time in one step, A = K */
   RollerContactMass      contact_mass;  /* -contact_mass (model/mass.c) */
   PetscBool              schur;         /* on several ranks, SPD step matrices by substructuring (model/solver_schur.c) */
+  PetscInt               schur_ranks;   /* on groups of at most this many ranks, each group a copy (PCREDUNDANT) */
   PetscInt               redundant_max; /* the others: up to this many unknowns factored whole on every rank, larger ones by MUMPS (model/solver.c) */
 } RollerDiscretization;
 

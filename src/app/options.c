@@ -31,6 +31,7 @@ PetscErrorCode RollerCreate(MPI_Comm comm, Roller *roller)
   ctx->disc.coriolis      = ROLLER_CORIOLIS_EXTRAPOLATED;
   ctx->disc.redundant_max = 100000;
   ctx->disc.schur         = PETSC_TRUE;
+  ctx->disc.schur_ranks   = 8;
   ctx->ts.phase_error     = 0.01;
   ctx->material.young     = 0.1;
   ctx->material.poisson   = 0.49;

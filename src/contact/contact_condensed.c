@@ -125,6 +125,15 @@ static PetscErrorCode CondensedColumns(Roller ctx, RollerContact c, const Roller
   PetscCall(VecGetOwnershipRange(ctx->state.cur, &rstart, &rend));
   PetscCall(KSPGetPC(op->ksp, &pc));
   PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCREDUNDANT, &redundant));
+  if (redundant) { /* the columns split over the ranks only when each holds the whole factor (not groups of ranks) */
+    KSP         inner;
+    PetscMPIInt gsize;
+
+    PetscCall(PCRedundantGetKSP(pc, &inner));
+    PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)inner), &gsize));
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &gsize, 1, MPI_INT, MPI_MAX, ctx->comm)); /* the same path on every rank */
+    redundant = (PetscBool)(gsize == 1);
+  }
   if (redundant) PetscCall(CondensedColumnsSplit(ctx, c, pc, cs, need, m));
   for (PetscInt j0 = 0; !redundant && j0 < 2 * m; j0 += nb) {
     const PetscInt mb = PetscMin(nb, 2 * m - j0);

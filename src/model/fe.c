@@ -21,9 +21,12 @@ PetscErrorCode RollerDiscretizationSetFromOptions(Roller ctx)
                              ctx->disc.static_solve, &ctx->disc.static_solve, NULL));
   PetscCall(PetscOptionsBool("-solver_schur", "On several ranks: symmetric positive definite step matrices by substructuring (each rank factors its interior, the interface's dense Schur complement on every rank); false: as the non-symmetric ones (-solver_redundant_max) (docs/performance.md)", NULL,
                              ctx->disc.schur, &ctx->disc.schur, NULL));
+  PetscCall(PetscOptionsInt("-solver_schur_ranks", "The substructuring on groups of at most this many ranks, each group holding a copy of the step matrix: its dense interface grows with the ranks (bench/rank_model.py: 8 ranks pay most)", NULL,
+                            ctx->disc.schur_ranks, &ctx->disc.schur_ranks, NULL));
   PetscCall(PetscOptionsInt("-solver_redundant_max", "On several ranks, step matrices not solved by substructuring (non-symmetric, or -solver_schur false): at most this many unknowns factored whole on every rank (serial Cholesky or LU), larger ones by MUMPS (docs/performance.md)", NULL,
                             ctx->disc.redundant_max, &ctx->disc.redundant_max, NULL));
   PetscOptionsEnd();
+  PetscCheck(ctx->disc.schur_ranks >= 2, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-solver_schur_ranks %" PetscInt_FMT " must be >= 2 (a group of one rank: -solver_schur false)", ctx->disc.schur_ranks);
   PetscCheck(ctx->disc.redundant_max >= 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-solver_redundant_max %" PetscInt_FMT " must be >= 0 (0: MUMPS for every step matrix not solved by substructuring)", ctx->disc.redundant_max);
   PetscCheck(ctx->disc.degree >= 1 && ctx->disc.degree <= 3, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-degree %" PetscInt_FMT " must be 1, 2 or 3", ctx->disc.degree);
   PetscCheck(!ctx->mesh.curved || ctx->disc.degree >= 2, ctx->comm, PETSC_ERR_ARG_INCOMP, "-mesh_curved needs -degree 2 or 3 (a P1 field cannot see a curved edge), got -degree %" PetscInt_FMT, ctx->disc.degree);

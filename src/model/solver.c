@@ -31,7 +31,7 @@ PetscErrorCode RollerDirectSolverDefaults(KSP ksp, PCType type)
      triangular solves cost more than a serial solve on these sizes. */
 static PetscErrorCode StepSolverLayout(Roller ctx, RollerStepOperator *op, PCType type)
 {
-  PetscMPIInt size;
+  PetscMPIInt size, gsize;
   PetscInt    N;
   PC          pc, ipc;
   KSP         inner;
@@ -44,19 +44,23 @@ static PetscErrorCode StepSolverLayout(Roller ctx, RollerStepOperator *op, PCTyp
   redundant = (PetscBool)(size > 1 && !schur && N <= ctx->disc.redundant_max);
   if (ctx->ts.view && op->id == 0 && size > 1)
     PetscCall(PetscPrintf(ctx->comm, "roller: step solver on %d ranks, %" PetscInt_FMT " unknowns: %s\n", size, N,
-                          schur       ? "substructured Cholesky (each rank factors its interior, the interface's dense Schur complement on every rank; -solver_schur)"
+                          schur       ? (size <= ctx->disc.schur_ranks ? "substructured Cholesky (each rank factors its interior, the interface's dense Schur complement on every rank; -solver_schur)" : "substructured Cholesky on groups of at most -solver_schur_ranks ranks, each group a copy of the matrix (PCREDUNDANT): the dense interface of all the ranks would cost more than it saves")
                           : redundant ? "the whole matrix factored on every rank (PCREDUNDANT, serial nested dissection; the contact condensation's columns split over the ranks; at most -solver_redundant_max unknowns)"
                                       : "MUMPS, the factorization distributed (more than -solver_redundant_max unknowns)"));
   PetscCall(KSPGetPC(op->ksp, &pc));
-  if (schur) PetscCall(RollerSchurPCSet(pc));
-  if (!redundant) PetscFunctionReturn(0);
+  if (schur && size <= ctx->disc.schur_ranks) PetscCall(RollerSchurPCSet(pc));
+  if (!redundant && !(schur && size > ctx->disc.schur_ranks)) PetscFunctionReturn(0);
+  /* a copy of the matrix on every rank (redundant) or on every group of at most -solver_schur_ranks ranks */
   PetscCall(PCSetType(pc, PCREDUNDANT));
-  PetscCall(PCRedundantSetNumber(pc, size));
+  PetscCall(PCRedundantSetNumber(pc, redundant ? size : (size + ctx->disc.schur_ranks - 1) / ctx->disc.schur_ranks));
   PetscCall(PCRedundantGetKSP(pc, &inner));
   PetscCall(KSPSetType(inner, KSPPREONLY));
   PetscCall(KSPGetPC(inner, &ipc));
-  PetscCall(PCSetType(ipc, type));
-  PetscCall(PCFactorSetMatOrderingType(ipc, MATORDERINGND));
+  PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)inner), &gsize));
+  if (redundant || gsize == 1) { /* a group of one rank (more groups than ranks / -solver_schur_ranks) factors alone */
+    PetscCall(PCSetType(ipc, type));
+    PetscCall(PCFactorSetMatOrderingType(ipc, MATORDERINGND));
+  } else PetscCall(RollerSchurPCSet(ipc));
   PetscFunctionReturn(0);
 }
 
