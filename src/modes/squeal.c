@@ -15,9 +15,40 @@
      row a,x  -=  dT_a  (K),     constraint row of dT_a:  lambda du_a,x (C) + theta' d_phi du_a,x (K) = 0,
    appended after the kept dofs (on the last rank; zero mass: the pencil is singular at infinity, harmless to
    shift-and-invert, whose LU then needs pivoting: MUMPS).
+   With -modes_stick_eps eps > 0 a stick node instead obeys the regularized cone T = -mu N v/sqrt(v^2 + eps^2): at
+   its ratio r = |T|/(mu N) < 1 it slips at v0 = eps r/sqrt(1 - r^2), and dT = (T/N) dN - c dv,
+   c = mu N (1 - r^2)^{3/2}/eps: a sliding node's rows with s mu -> -T/N and N mu' -> c (docs/squeal.md 4.4).
+   A sliding node whose force points against the patch's (the upwind slip's artifact at the leading edge) is left
+   out: its dofs stay free.
    The same operations on M, C and K give the reduced quadratic eigenproblem on the kept dofs (and the stick
    nodes' multipliers). */
 #include "modes/modes.h"
+
+/* A stick node is rigid (a multiplier) at eps = 0, else in the regularized cone. */
+static PetscBool RigidStick(const RollerSteady *st, PetscInt j, PetscReal eps)
+{
+  return st->state[j] == 1 && eps == 0 ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* A sliding node whose force points against the patch's total tangential force Tsum: the upwind slip's artifact at
+   the leading edge (docs/squeal.md section 3: its stencil reaches the free surface, its normal force the
+   smallest); left out of the linearization (docs/squeal.md 4.4). */
+static PetscBool Reversed(const RollerSteady *st, PetscInt j, PetscReal Tsum)
+{
+  return st->state[j] == 2 && st->tangent[j] * Tsum < 0 ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* The coefficient of the slip speed's change dv on row a,x: N mu' sliding (velocity weakening), mu N (1 - r^2)^{3/2}/eps
+   for a stick node in the regularized cone. */
+static PetscReal SlipCoefficient(const RollerSteady *st, PetscInt j, PetscReal eps)
+{
+  PetscReal r;
+
+  if (st->state[j] == 2) return st->normal[j] * st->dmu[j];
+  if (st->state[j] != 1 || eps == 0) return 0;
+  r = PetscMin(PetscAbsReal(st->tangent[j]) / (st->mu[j] * st->normal[j]), 1.0);
+  return st->mu[j] * st->normal[j] * PetscPowReal(1 - r * r, 1.5) / eps;
+}
 
 /* B = [A 0; 0 0] with ns rows and columns appended on the last rank, plus the entries (rows[k], cols[k], vals[k])
    (global indices of B; set by any rank). */
@@ -62,7 +93,7 @@ static PetscErrorCode Augment(Mat A, PetscInt ns, PetscInt ne, const PetscInt ro
 }
 
 /* The stick nodes' multipliers: their entries in K (the force, the transport's d_phi part) and C (its lambda part). */
-static PetscErrorCode StickMultipliers(Roller ctx, const RollerSteady *st, IS kept, PetscInt nk, PetscInt *ns, PetscInt *nek, PetscInt **rk, PetscInt **ck, PetscScalar **vk, PetscInt *nec, PetscInt **rc, PetscInt **cc, PetscScalar **vc)
+static PetscErrorCode StickMultipliers(Roller ctx, const RollerSteady *st, PetscReal eps, IS kept, PetscInt nk, PetscInt *ns, PetscInt *nek, PetscInt **rk, PetscInt **ck, PetscScalar **vk, PetscInt *nec, PetscInt **rc, PetscInt **cc, PetscScalar **vc)
 {
   PetscInt    nloc, kstart, *red, js = 0;
   PetscMPIInt rank;
@@ -82,7 +113,7 @@ static PetscErrorCode StickMultipliers(Roller ctx, const RollerSteady *st, IS ke
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, red, st->n, MPIU_INT, MPI_MAX, ctx->comm));
   *ns = 0;
   for (PetscInt j = 0; j < st->n; ++j)
-    if (st->state[j] == 1) ++*ns;
+    if (RigidStick(st, j, eps)) ++*ns;
   PetscCall(PetscMalloc3(4 * *ns, rk, 4 * *ns, ck, 4 * *ns, vk));
   PetscCall(PetscMalloc3(*ns, rc, *ns, cc, *ns, vc));
   *nek = *nec = 0;
@@ -91,7 +122,7 @@ static PetscErrorCode StickMultipliers(Roller ctx, const RollerSteady *st, IS ke
     PetscInt  nb[3];
     PetscReal c[3];
 
-    if (st->state[j] != 1) continue;
+    if (!RigidStick(st, j, eps)) continue;
     if (!rank) { /* one rank adds each multiplier's entries */
       PetscCall(RollerSteadyAngularDerivative(st, ctx->rotation.omega, j, nb, c));
       (*rk)[*nek]     = red[j];
@@ -116,14 +147,14 @@ static PetscErrorCode StickMultipliers(Roller ctx, const RollerSteady *st, IS ke
 
 PetscErrorCode RollerSquealOperators(Roller ctx, const RollerSteady *st, Mat M, Mat C, Mat K, Mat *Mr, Mat *Cr, Mat *Kr, IS *kept, PetscInt *nstick)
 {
-  const PetscReal tol  = 1e-12;
-  PetscReal       nmax = 0;
+  const PetscReal tol = 1e-12, eps = ctx->eig.stick_eps;
+  PetscReal       nmax = 0, Tsum = 0;
   Mat             R, RM, RC, RK;
   PetscInt        lo, hi, m, nk = 0, *idx;
   PetscBool      *drop;
 
   PetscFunctionBeginUser;
-  for (PetscInt j = 0; j < st->n; ++j) nmax = PetscMax(nmax, st->normal[j]);
+  for (PetscInt j = 0; j < st->n; ++j) nmax = PetscMax(nmax, st->normal[j]), Tsum += st->tangent[j];
   PetscCall(MatGetOwnershipRange(M, &lo, &hi));
   m = hi - lo;
   /* R = I + sum_a s mu_a e_{a,x} e_{a,y}^T: the friction rows */
@@ -134,7 +165,8 @@ PetscErrorCode RollerSquealOperators(Roller ctx, const RollerSteady *st, Mat M, 
     const PetscInt a = st->dof[j];
 
     if (st->normal[j] <= tol * nmax || a < lo || a >= hi) continue;
-    if (st->state[j] == 2 && st->tangent[j] != 0) PetscCall(MatSetValue(R, a, a + 1, -st->tangent[j] / st->normal[j], INSERT_VALUES)); /* s mu_a */
+    if (Reversed(st, j, Tsum)) continue;
+    if (!RigidStick(st, j, eps) && st->tangent[j] != 0) PetscCall(MatSetValue(R, a, a + 1, -st->tangent[j] / st->normal[j], INSERT_VALUES)); /* s mu_a */
     drop[a + 1 - lo] = PETSC_TRUE;
   }
   PetscCall(MatAssemblyBegin(R, MAT_FINAL_ASSEMBLY));
@@ -142,20 +174,20 @@ PetscErrorCode RollerSquealOperators(Roller ctx, const RollerSteady *st, Mat M, 
   PetscCall(MatMatMult(R, M, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &RM));
   PetscCall(MatMatMult(R, C, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &RC));
   PetscCall(MatMatMult(R, K, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &RK));
-  /* velocity weakening on the rows a,x */
+  /* the slip speed's coefficient on the rows a,x: velocity weakening, the regularized cone */
   PetscCall(MatSetOption(RC, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
   PetscCall(MatSetOption(RK, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
   for (PetscInt j = 0; j < st->n; ++j) {
     const PetscInt a = st->dof[j];
     PetscInt       nb[3], cols[3];
-    PetscReal      c[3], vals[3];
+    PetscReal      c[3], vals[3], cv;
 
-    if (st->state[j] != 2 || st->normal[j] <= tol * nmax || a < lo || a >= hi || st->dmu[j] == 0) continue;
-    PetscCall(MatSetValue(RC, a, a, st->normal[j] * st->dmu[j], ADD_VALUES));
+    if (st->normal[j] <= tol * nmax || a < lo || a >= hi || Reversed(st, j, Tsum) || (cv = SlipCoefficient(st, j, eps)) == 0) continue;
+    PetscCall(MatSetValue(RC, a, a, cv, ADD_VALUES));
     PetscCall(RollerSteadyAngularDerivative(st, ctx->rotation.omega, j, nb, c));
     for (PetscInt k = 0; k < 3; ++k) {
       cols[k] = st->dof[nb[k]];
-      vals[k] = st->normal[j] * st->dmu[j] * ctx->rotation.omega * c[k];
+      vals[k] = cv * ctx->rotation.omega * c[k];
     }
     PetscCall(MatSetValues(RK, 1, &a, 3, cols, vals, ADD_VALUES));
   }
@@ -177,7 +209,7 @@ PetscErrorCode RollerSquealOperators(Roller ctx, const RollerSteady *st, Mat M, 
     Mat          A;
 
     PetscCall(ISGetSize(*kept, &nk));
-    PetscCall(StickMultipliers(ctx, st, *kept, nk, &ns, &nek, &rk, &ck, &vk, &nec, &rc, &cc, &vc));
+    PetscCall(StickMultipliers(ctx, st, eps, *kept, nk, &ns, &nek, &rk, &ck, &vk, &nec, &rc, &cc, &vc));
     *nstick = ns;
     if (ns) {
       PetscCall(Augment(*Mr, ns, 0, NULL, NULL, NULL, &A));
