@@ -91,3 +91,11 @@ def stage(res, name):
 def event(res, stage_name, ev):
     """(count, time) of an event inside a stage, (0, 0.0) if absent."""
     return res.get("events", {}).get((stage_name, ev), (0, 0.0))
+
+
+def save(name, text):
+    """Print a result table and write it to bench/results/NAME."""
+    print(text)
+    os.makedirs(os.path.join(ROOT, "bench", "results"), exist_ok=True)
+    with open(os.path.join(ROOT, "bench", "results", name), "w") as f:
+        f.write(text)

@@ -69,11 +69,7 @@ def main():
            f"load {os.getloadavg()[0]:.1f} at the end", "",
            "| scene | run | set-up [s] | per step [ms] | step solves per step [ms] | wall (CPU) of the short run [s] | whole run, estimated [s] | speed-up | command |",
            "|---|---|---|---|---|---|---|---|---|"] + rows
-    text = "\n".join(out) + "\n"
-    print(text)
-    os.makedirs(os.path.join(ROOT, "bench", "results"), exist_ok=True)
-    with open(os.path.join(ROOT, "bench", "results", "large_ranks.md"), "w") as fh:
-        fh.write(text)
+    benchlib.save("large_ranks.md", "\n".join(out) + "\n")
 
 
 if __name__ == "__main__":

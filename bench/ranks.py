@@ -56,11 +56,7 @@ def main():
            f"load {os.getloadavg()[0]:.1f} at the end", "",
            "Ratios: the median over the rounds of this run's wall time over the same round's baseline (range in brackets).", "",
            "| scene | run | wall [s] (median) | / `roller` (bare) | / `mpiexec -n 1 roller` | CPU [s] | command |", "|---|---|---|---|---|---|---|"] + rows
-    text = "\n".join(out) + "\n"
-    print(text)
-    os.makedirs(os.path.join(ROOT, "bench", "results"), exist_ok=True)
-    with open(os.path.join(ROOT, "bench", "results", "ranks.md"), "w") as f:
-        f.write(text)
+    benchlib.save("ranks.md", "\n".join(out) + "\n")
 
 
 if __name__ == "__main__":
