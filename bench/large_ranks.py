@@ -7,7 +7,7 @@ step (the scene's number of steps printed by -ts_view), on 1 rank (serial Choles
 with the substructured Cholesky (the default above -solver_redundant_max) and with MUMPS (-solver_schur false).
 Interleaved rounds, the median of each figure; wall times, CPU beside them. Measure on a quiet machine.
 
-Usage: /usr/bin/python3 bench/large_ranks.py [--rounds 3] [--steps 20] [--scenes free,rolling] [--h 0.005] [--no-mumps]"""
+Usage: /usr/bin/python3 bench/large_ranks.py [--rounds 3] [--steps 20] [--scenes free,rolling] [--h 0.005] [--no-mumps] [--out large_ranks.md]"""
 import argparse
 import os
 import platform
@@ -36,6 +36,7 @@ def main():
     ap.add_argument("--scenes", default="free,rolling")
     ap.add_argument("--h", default="0.005")
     ap.add_argument("--no-mumps", action="store_true", help="leave out the MUMPS variant")
+    ap.add_argument("--out", default="large_ranks.md", help="the table's file in bench/results/")
     o = ap.parse_args()
     variants = [v for v in VARIANTS if not (o.no_mumps and "MUMPS" in v[0])]
     rows = []
@@ -69,7 +70,7 @@ def main():
            f"load {os.getloadavg()[0]:.1f} at the end", "",
            "| scene | run | set-up [s] | per step [ms] | step solves per step [ms] | wall (CPU) of the short run [s] | whole run, estimated [s] | speed-up | command |",
            "|---|---|---|---|---|---|---|---|---|"] + rows
-    benchlib.save("large_ranks.md", "\n".join(out) + "\n")
+    benchlib.save(o.out, "\n".join(out) + "\n")
 
 
 if __name__ == "__main__":
