@@ -11,12 +11,16 @@ the CSV carry order 0). An order-1 wave of lab frequency w makes it whirl, e^{(g
   near the expected frequency gives g and w;
 - the envelope: U - mean(U) band-passed (FFT mask, |w' - w_sign| < bw) and log |.| fitted by a line.
 
+--base BASE.h5, the same run unseeded (-ic_amplitude 0): U - U_base is fitted, the seed's own response. The start
+(the time step's contact law settling from the CEA's steady state) excites the same whirl in both runs; to first
+order in the seed the difference is the seeded mode alone, so a seed need not stand far above the start's noise.
+
 The DMF's map of a continuous eigenvalue lambda (dmf_map): the scalar mode with lambda and conj(lambda) as
 roots, m = 1, c = -2 Re lambda, k = |lambda|^2, stepped by the three-level scheme
   (z - 1)^2/dt^2 + c (z^2 - 1)/(2 dt) + k (z^2 + 1)/2 = 0,
 gives the growth log|z|/dt and the frequency arg(z)/dt of the root with arg(z) > 0.
 
-  squeal_fit.py RUN.h5 --cea F.csv --order 1 --wave backward --window 10 100 [--plot out.png]
+  squeal_fit.py RUN.h5 --cea F.csv --order 1 --wave backward --window 10 100 [--base UNSEEDED.h5] [--plot out.png]
 """
 import argparse
 import csv
@@ -104,12 +108,18 @@ def main():
     ap.add_argument("--window", type=float, nargs=2, default=(10, 100))
     ap.add_argument("--dt", type=float, default=0.01, help="the run's -ts_dt, for the DMF map")
     ap.add_argument("--omega", type=float, default=np.pi / 10)
+    ap.add_argument("--base", help="the same run without the seed: fit the difference (the seed's response)")
     ap.add_argument("--plot")
     ap.add_argument("--title", default="")
     a = ap.parse_args()
     g, w = cea_mode(a.cea, a.order, a.wave)
     ws = -w if a.wave == "backward" else w
     t, U = whirl(a.h5)
+    if a.base:
+        tb, Ub = whirl(a.base)
+        if len(tb) != len(t) or np.max(np.abs(tb - t)) > 1e-9 * max(1.0, t[-1]):
+            raise SystemExit(f"squeal_fit.py: --base {a.base}: its times differ from {a.h5}'s (the same -ts_dt, -ts_max_time, -output_every are needed)")
+        U = U - Ub
     r = fit(t, U, ws, *a.window)
     gl, wl = dmf_map(complex(g, w), a.dt)
     gr, wr = dmf_map(complex(g, w + a.order * a.omega if a.wave == "backward" else abs(w - a.order * a.omega)), a.dt)
