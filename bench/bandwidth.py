@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """What two processes on this machine share (issue 27, docs/performance.md "221k unknowns"): the memory bandwidth
 one process gets alone and each of two gets side by side, by STREAM's triad (bench/stream.c, compiled here with
-cc -O2), and the same for Roller's own step (sparse substitutions and products): the free scene at P2 h = 0.005 (221k unknowns) on one
-rank, alone and two copies side by side, its time per step from -log_view (stages step + diagnostics). The ratio
-2 x alone / side by side is what two processes do together against one: the bound two ranks meet on work limited
-by what they share (memory bandwidth, the last-level cache), whatever the decomposition. Interleaved rounds, medians. Measure on a quiet machine.
+cc -O2), and the same for Roller's own step (sparse substitutions and products): the free scene at P2 h = 0.005
+(221k unknowns) on one rank, alone and two copies side by side, its time per step from -log_view (stages step +
+diagnostics). The ratio 2 x alone / side by side is what two processes do together against one: the bound two ranks
+meet on work limited by what they share (memory bandwidth, the last-level cache), whatever the decomposition.
+Interleaved rounds, medians. Measure on a quiet machine.
 
 Usage: /usr/bin/python3 bench/bandwidth.py [--rounds 5] [--mb 200] [--roller-rounds 2] [--steps 10]"""
 import argparse
@@ -59,13 +60,13 @@ def main():
     ap.add_argument("--roller-rounds", type=int, default=2)
     ap.add_argument("--steps", type=int, default=10)
     o = ap.parse_args()
-    tmp = tempfile.mkdtemp()
-    exe = os.path.join(tmp, "stream")
-    subprocess.run(["cc", "-O2", "-o", exe, os.path.join(ROOT, "bench", "stream.c")], check=True)
     alone, pair = [], []
-    for _ in range(o.rounds):
-        alone.append(stream(exe, o.mb, 1)[0])
-        pair.append(statistics.mean(stream(exe, o.mb, 2)))
+    with tempfile.TemporaryDirectory() as tmp:
+        exe = os.path.join(tmp, "stream")
+        subprocess.run(["cc", "-O2", "-o", exe, os.path.join(ROOT, "bench", "stream.c")], check=True)
+        for _ in range(o.rounds):
+            alone.append(stream(exe, o.mb, 1)[0])
+            pair.append(statistics.mean(stream(exe, o.mb, 2)))
     r_alone, r_pair = [], []
     for _ in range(o.roller_rounds):
         r_alone.append(roller_step(1, o.steps)[0])

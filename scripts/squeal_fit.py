@@ -47,6 +47,15 @@ def whirl(h5, omega=None, theta_start=None):
     return t, u + 1j * v
 
 
+def seed_response(h5, base):
+    """t and U - U_base: the seeded run's whirl minus the unseeded one's (the same times are needed)."""
+    t, U = whirl(h5)
+    tb, Ub = whirl(base)
+    if len(tb) != len(t) or np.max(np.abs(tb - t)) > 1e-9 * max(1.0, t[-1]):
+        raise SystemExit(f"squeal_fit.py: --base {base}: its times differ from {h5}'s (the same -ts_dt, -ts_max_time, -output_every are needed)")
+    return t, U - Ub
+
+
 def pencil(y, dt, p=10):
     """Matrix pencil: continuous exponents s and amplitudes a, largest |a| first."""
     n = len(y)
@@ -114,12 +123,7 @@ def main():
     a = ap.parse_args()
     g, w = cea_mode(a.cea, a.order, a.wave)
     ws = -w if a.wave == "backward" else w
-    t, U = whirl(a.h5)
-    if a.base:
-        tb, Ub = whirl(a.base)
-        if len(tb) != len(t) or np.max(np.abs(tb - t)) > 1e-9 * max(1.0, t[-1]):
-            raise SystemExit(f"squeal_fit.py: --base {a.base}: its times differ from {a.h5}'s (the same -ts_dt, -ts_max_time, -output_every are needed)")
-        U = U - Ub
+    t, U = seed_response(a.h5, a.base) if a.base else whirl(a.h5)
     r = fit(t, U, ws, *a.window)
     gl, wl = dmf_map(complex(g, w), a.dt)
     gr, wr = dmf_map(complex(g, w + a.order * a.omega if a.wave == "backward" else abs(w - a.order * a.omega)), a.dt)

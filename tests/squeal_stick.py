@@ -25,10 +25,11 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from rollertest import SOURCE, Checker, read_csv, run  # noqa: E402
 
 sys.path.insert(0, os.path.join(SOURCE, "scripts"))
-from squeal_fit import fit, whirl  # noqa: E402
+from squeal_fit import fit, seed_response, whirl  # noqa: E402
 
 SCENE = ["-options_file", os.path.join(SOURCE, "jobs", "feed.yaml"), "-viscosity", "0.0115", "-damping", "0", "-quiet"]
 MESHES = [0.0224, 0.0112, 0.0056]
+MIDDLE = MESHES[1]  # the transients' contact mesh
 OMEGA_R = np.pi / 10 * 0.5
 c = Checker("squeal_stick")
 
@@ -51,6 +52,23 @@ def cea(xi, hc, extra=()):
     return backward1(f"{name}.csv")
 
 
+def transient(xi, i, amp, name, extra=()):
+    """The transient seeded at amp on mode i of the CEA's {name}.h5 (its steady state), to t = 80 on the middle mesh."""
+    run(SCENE + mesh(MIDDLE) + ["-sheet_speed", repr(OMEGA_R * (1 - xi)), "-ts_dt", "0.01", "-ts_max_time", "80", "-obstacle_speed", "1e6", "-initial_condition", "mode",
+                                "-initial_mode_file", f"m{name}.h5", "-initial_mode", i, "-ic_amplitude", amp, "-output", f"t{name}_{amp}.h5", "-output_every", "20"] + list(extra))
+    return f"t{name}_{amp}.h5"
+
+
+def agrees(label, g, w, t, U):
+    """The fit of U on window 10-60 against the CEA's (g, w): growth within 20 % (pencil, envelope), frequency 1 %."""
+    f = fit(t, U, -w, 10, 60)
+    gp, wp, ge = f["pencil_growth"], abs(f["pencil_frequency"]), f["envelope_growth"]
+    print(f"{label}: CEA {g:.5f} @ {w:.5f}; pencil {gp:.5f} @ {wp:.5f}, envelope {ge:.5f}")
+    c.check(abs(gp - g) < 0.2 * g, f"{label}: growth (pencil) {gp:.5f} within 20 % of the CEA's {g:.5f}")
+    c.check(abs(ge - g) < 0.2 * g, f"{label}: growth (envelope) {ge:.5f} within 20 % of the CEA's {g:.5f}")
+    c.check(abs(wp - w) < 0.01 * w, f"{label}: frequency {wp:.5f} within 1 % of the CEA's {w:.5f}")
+
+
 for xi in (0.12, 0.13, 0.14):
     g, w = np.array([cea(xi, hc)[:2] for hc in MESHES]).T
     print(f"xi {xi}: growth {g}, frequency {w}")
@@ -59,32 +77,13 @@ for xi in (0.12, 0.13, 0.14):
     c.check(abs(w[2] - w[1]) < 0.01 * w[2], f"xi {xi}: the two finer meshes' frequencies within 1 % ({w[1]:.5f}, {w[2]:.5f})")
 
 # the seeded transient at xi = 0.14 on the middle mesh
-xi, hc = 0.14, 0.0112
-g, w, i = cea(xi, hc, ["-modes_output", "m14.h5"])
-run(SCENE + mesh(hc) + ["-sheet_speed", repr(OMEGA_R * (1 - xi)), "-ts_dt", "0.01", "-ts_max_time", "80", "-obstacle_speed", "1e6", "-initial_condition", "mode", "-initial_mode_file", "m14.h5",
-                        "-initial_mode", i, "-ic_amplitude", "1e-5", "-monitor_csv", "t14.csv", "-output", "t14.h5", "-output_every", "20"])
+g, w, i = cea(0.14, MIDDLE, ["-modes_output", "m14.h5"])
+h5 = transient(0.14, i, "1e-5", "14", ["-monitor_csv", "t14.csv"])
 mon = read_csv("t14.csv")
 c.check(np.all(mon["contact_force"][mon["t"] > 1] > 0), "xi 0.14: the transient stays in contact")
-t, U = whirl("t14.h5")
-f = fit(t, U, -w, 10, 60)
-gp, wp, ge = f["pencil_growth"], abs(f["pencil_frequency"]), f["envelope_growth"]
-print(f"xi 0.14: CEA {g:.5f} @ {w:.5f}; transient pencil {gp:.5f} @ {wp:.5f}, envelope {ge:.5f}")
-c.check(abs(gp - g) < 0.2 * g, f"xi 0.14: the transient's growth (pencil) {gp:.5f} within 20 % of the CEA's {g:.5f}")
-c.check(abs(ge - g) < 0.2 * g, f"xi 0.14: the transient's growth (envelope) {ge:.5f} within 20 % of the CEA's {g:.5f}")
-c.check(abs(wp - w) < 0.01 * w, f"xi 0.14: the transient's frequency {wp:.5f} within 1 % of the CEA's {w:.5f}")
+agrees("xi 0.14, the seeded transient", g, w, *whirl(h5))
 
 # xi = 0.13 on the middle mesh: the seed's response, seeded minus unseeded
-xi = 0.13
-g, w, i = cea(xi, hc, ["-modes_output", "m13.h5"])
-U = {}
-for amp in ("1e-4", "0"):
-    run(SCENE + mesh(hc) + ["-sheet_speed", repr(OMEGA_R * (1 - xi)), "-ts_dt", "0.01", "-ts_max_time", "80", "-obstacle_speed", "1e6", "-initial_condition", "mode", "-initial_mode_file", "m13.h5",
-                            "-initial_mode", i, "-ic_amplitude", amp, "-output", f"t13_{amp}.h5", "-output_every", "20"])
-    t, U[amp] = whirl(f"t13_{amp}.h5")
-f = fit(t, U["1e-4"] - U["0"], -w, 10, 60)
-gp, wp, ge = f["pencil_growth"], abs(f["pencil_frequency"]), f["envelope_growth"]
-print(f"xi 0.13: CEA {g:.5f} @ {w:.5f}; seeded - unseeded: pencil {gp:.5f} @ {wp:.5f}, envelope {ge:.5f}")
-c.check(abs(gp - g) < 0.2 * g, f"xi 0.13: the seed's response grows (pencil) at {gp:.5f}, within 20 % of the CEA's {g:.5f}")
-c.check(abs(ge - g) < 0.2 * g, f"xi 0.13: the seed's response grows (envelope) at {ge:.5f}, within 20 % of the CEA's {g:.5f}")
-c.check(abs(wp - w) < 0.01 * w, f"xi 0.13: the seed's response's frequency {wp:.5f} within 1 % of the CEA's {w:.5f}")
+g, w, i = cea(0.13, MIDDLE, ["-modes_output", "m13.h5"])
+agrees("xi 0.13, the seed's response (seeded - unseeded)", g, w, *seed_response(transient(0.13, i, "1e-4", "13"), transient(0.13, i, "0", "13")))
 c.close()
