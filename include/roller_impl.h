@@ -207,7 +207,8 @@ typedef struct {
   PetscBool   on;
   RollerFrame frame;
   PetscInt    nev;
-  PetscReal   stick_eps; /* the stick nodes' regularized cone, a slip speed (docs/squeal.md 4.4); 0: rigid stick */
+  PetscReal   stick_eps;    /* the stick nodes' regularized cone, a slip speed (docs/squeal.md 4.4); 0: rigid stick */
+  PetscReal   stick_margin; /* a stick node with |T| > (1 - margin) mu N is linearized as slipping (docs/squeal.md 4.4.2); 0: none */
   char        csv[PETSC_MAX_PATH_LEN], output[PETSC_MAX_PATH_LEN], steady_csv[PETSC_MAX_PATH_LEN];
   /* the result, sorted by frequency: n eigenvalues re + i im (im >= 0), their order, wave (RollerWave) and error */
   PetscInt   n, *order, *wave, dofs; /* dofs: the size of the eigenproblem */

@@ -20,7 +20,10 @@ roots, m = 1, c = -2 Re lambda, k = |lambda|^2, stepped by the three-level schem
   (z - 1)^2/dt^2 + c (z^2 - 1)/(2 dt) + k (z^2 + 1)/2 = 0,
 gives the growth log|z|/dt and the frequency arg(z)/dt of the root with arg(z) > 0.
 
-  squeal_fit.py RUN.h5 --cea F.csv --order 1 --wave backward --window 10 100 [--base UNSEEDED.h5] [--plot out.png]
+--stick-zone T0: where the run's Gamma_C vertices stick, in lab x bins, from T0 on (the time step's own stick zone, to
+set against the steady state's, -modes_steady_csv).
+
+  squeal_fit.py RUN.h5 --cea F.csv --order 1 --wave backward --window 10 100 [--base UNSEEDED.h5] [--stick-zone T0] [--plot out.png]
 """
 import argparse
 import csv
@@ -54,6 +57,36 @@ def seed_response(h5, base):
     if len(tb) != len(t) or np.max(np.abs(tb - t)) > 1e-9 * max(1.0, t[-1]):
         raise SystemExit(f"squeal_fit.py: --base {base}: its times differ from {h5}'s (the same -ts_dt, -ts_max_time, -output_every are needed)")
     return t, U - Ub
+
+
+def stick_zone(h5, t0, width=0.005):
+    """Where the run's Gamma_C vertices stick, in the lab: bin centres x (bins of this width across the sheet) and
+    the fractions of the outputs from t0 on in which a vertex in the bin is in contact and in which it sticks
+    (contact_state 1); the steady state's stick zone to compare is the -modes_steady_csv's state 1 nodes."""
+    import h5py
+
+    with h5py.File(h5, "r") as f:
+        par = f["parameters"].attrs
+        omega, r_outer = float(par["omega"]), float(par["r_outer"])
+        theta_start = float(par["theta_start"])
+        x = f["geometry/vertices"][:]
+        t = f["time"][:, 0]
+        outer = np.flatnonzero(np.abs(np.hypot(x[:, 0], x[:, 1]) - r_outer) < 1e-6 * r_outer)
+        states = f["vertex_fields/contact_state_contact_state"]
+        edges = np.arange(-r_outer, r_outer + width, width)
+        seen, contact, stick = (np.zeros(len(edges) - 1) for _ in range(3))
+        for k in np.flatnonzero(t >= t0):
+            th = omega * max(t[k] - theta_start, 0.0)
+            s = states[k, :][outer]
+            X = np.cos(th) * x[outer, 0] - np.sin(th) * x[outer, 1]
+            Y = np.sin(th) * x[outer, 0] + np.cos(th) * x[outer, 1]
+            b = np.digitize(X, edges) - 1
+            low = (Y < 0) & (b >= 0) & (b < len(seen))  # the half facing the sheet
+            np.add.at(seen, b[low], 1)
+            np.add.at(contact, b[low], s[low] > 0)
+            np.add.at(stick, b[low], s[low] == 1)
+    m = contact > 0
+    return 0.5 * (edges[:-1] + edges[1:])[m], contact[m] / seen[m], stick[m] / seen[m]
 
 
 def pencil(y, dt, p=10):
@@ -118,6 +151,7 @@ def main():
     ap.add_argument("--dt", type=float, default=0.01, help="the run's -ts_dt, for the DMF map")
     ap.add_argument("--omega", type=float, default=np.pi / 10)
     ap.add_argument("--base", help="the same run without the seed: fit the difference (the seed's response)")
+    ap.add_argument("--stick-zone", type=float, metavar="T0", help="also print where the run sticks from T0 on (lab x bins)")
     ap.add_argument("--plot")
     ap.add_argument("--title", default="")
     a = ap.parse_args()
@@ -134,6 +168,10 @@ def main():
           f"({100 * (r['pencil_growth'] / g - 1):+.1f} %), frequency {r['pencil_frequency']:+.6f} "
           f"({100 * (abs(r['pencil_frequency']) / w - 1):+.2f} %); envelope growth {r['envelope_growth']:.6f} "
           f"({100 * (r['envelope_growth'] / g - 1):+.1f} %)")
+    if a.stick_zone is not None:
+        print(f"where {a.h5} sticks from t = {a.stick_zone:g} (lab x, fractions of the outputs): x, in contact, stick")
+        for x, fc, fs in zip(*stick_zone(a.h5, a.stick_zone)):
+            print(f"  {x:+.4f}  {fc:.2f}  {fs:.2f}")
     if a.plot:
         import matplotlib
 

@@ -37,7 +37,7 @@ VALID = {
     ("-contact_margin", "-1"): "shrinks the candidate set (refused: > -r_outer)",
     ("-contact_margin", "1e300"): "every node a candidate",
     ("-initial_mode", "0"): "unused without -initial_condition mode",
-    ("-modes_stick_eps", "0"): "rigid stick (the default)", ("-modes_stick_eps", "1e300"): "stick nodes slide freely (unused without -obstacle)",
+    ("-modes_stick_eps", "0"): "rigid stick (the default)", ("-modes_stick_margin", "0"): "every stick node stuck (the default)", ("-modes_stick_eps", "1e300"): "stick nodes slide freely (unused without -obstacle)",
     ("-young", "1e300"): "stiff: dt and h are given", ("-density", "1e300"): "heavy: dt and h are given",
     ("-obstacle_speed", "1e300"): "the press at once", ("-ts_max_time", "1e300"): "capped by -ts_max_steps 2",
     ("-checkpoint_every", "1e300"): None, ("-output_every", "1e300"): None,

@@ -19,11 +19,14 @@ PetscErrorCode RollerModesSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsInt("-modes_nev", "Number of eigenvalues wanted (-pep_nev overrides); each complex pair counts twice; 0 with -obstacle: the steady state only", NULL, ctx->eig.nev, &ctx->eig.nev, NULL));
   PetscCall(PetscOptionsReal("-modes_stick_eps", "With -obstacle: the stick nodes' regularized Coulomb cone T = -mu N v/sqrt(v^2 + eps^2), eps a slip speed (docs/squeal.md 4.4); 0: each stick node rigidly stuck (a multiplier)", NULL, ctx->eig.stick_eps,
                              &ctx->eig.stick_eps, NULL));
+  PetscCall(PetscOptionsReal("-modes_stick_margin", "With -obstacle: a stick node whose friction is within this fraction of the cone, |T| > (1 - margin) mu N, is linearized as slipping (docs/squeal.md 4.4.2); 0: every stick node stuck", NULL,
+                             ctx->eig.stick_margin, &ctx->eig.stick_margin, NULL));
   PetscCall(PetscOptionsString("-modes_csv", "Eigenvalue CSV: re,im,frequency,growth_rate,order,wave,error", NULL, ctx->eig.csv, ctx->eig.csv, sizeof(ctx->eig.csv), NULL));
   PetscCall(PetscOptionsString("-modes_steady_csv", "With -obstacle: the steady state's contact nodes x,y,normal_force,tangential_force,gap,slip_velocity,mu,state", NULL, ctx->eig.steady_csv, ctx->eig.steady_csv, sizeof(ctx->eig.steady_csv), NULL));
   PetscCall(PetscOptionsString("-modes_output", "Mode shapes: HDF5 file F.h5 (+ XDMF index F.xmf for ParaView)", NULL, ctx->eig.output, ctx->eig.output, sizeof(ctx->eig.output), NULL));
   PetscOptionsEnd();
   PetscCheck(ctx->eig.stick_eps >= 0 && !PetscIsInfOrNanReal(ctx->eig.stick_eps), ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-modes_stick_eps %g must be a finite slip speed >= 0 (0: rigid stick)", (double)ctx->eig.stick_eps);
+  PetscCheck(ctx->eig.stick_margin >= 0 && ctx->eig.stick_margin < 1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-modes_stick_margin %g must be in [0, 1): a fraction of the Coulomb cone (0: every stick node stuck)", (double)ctx->eig.stick_margin);
   PetscCheck(ctx->eig.nev > 0 || (ctx->eig.nev == 0 && ctx->obstacle.on), ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-modes_nev %" PetscInt_FMT " must be > 0 (or 0 with -obstacle: the steady state only)", ctx->eig.nev);
   PetscFunctionReturn(0);
 }

@@ -18,16 +18,39 @@
    With -modes_stick_eps eps > 0 a stick node instead obeys the regularized cone T = -mu N v/sqrt(v^2 + eps^2): at
    its ratio r = |T|/(mu N) < 1 it slips at v0 = eps r/sqrt(1 - r^2), and dT = (T/N) dN - c dv,
    c = mu N (1 - r^2)^{3/2}/eps: a sliding node's rows with s mu -> -T/N and N mu' -> c (docs/squeal.md 4.4).
+   With -modes_stick_margin m > 0 a stick node within m of the cone, |T| > (1 - m) mu N, is linearized as sliding
+   against its force (-sign(T) mu in its friction row): the stick nodes a perturbation of finite amplitude unsticks
+   first, the leading edge's marginal nodes on which the rigid linearization hinges (docs/squeal.md 4.4.2).
    A sliding node whose force points against the patch's (the upwind slip's artifact at the leading edge) is left
    out: its dofs stay free.
    The same operations on M, C and K give the reduced quadratic eigenproblem on the kept dofs (and the stick
    nodes' multipliers). */
 #include "modes/modes.h"
 
-/* A stick node is rigid (a multiplier) at eps = 0, else in the regularized cone. */
-static PetscBool RigidStick(const RollerSteady *st, PetscInt j, PetscReal eps)
+/* How a stick node is linearized: eps, the regularized cone's slip speed (0: rigid); margin, the fraction of the cone
+   within which it is linearized as sliding (0: none). */
+typedef struct {
+  PetscReal eps, margin;
+} StickLaw;
+
+/* A stick node within the margin of the cone: linearized as sliding against its force. */
+static PetscBool Marginal(const RollerSteady *st, PetscInt j, StickLaw law)
 {
-  return st->state[j] == 1 && eps == 0 ? PETSC_TRUE : PETSC_FALSE;
+  return st->state[j] == 1 && law.margin > 0 && PetscAbsReal(st->tangent[j]) > (1 - law.margin) * st->mu[j] * st->normal[j] ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* A stick node is rigid (a multiplier) at eps = 0, else in the regularized cone; a marginal one slides. */
+static PetscBool RigidStick(const RollerSteady *st, PetscInt j, StickLaw law)
+{
+  return st->state[j] == 1 && law.eps == 0 && !Marginal(st, j, law) ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* s mu_a, the friction row's factor on the normal force: -T/N (sliding, or a stick node in the regularized cone),
+   -sign(T) mu for a marginal stick node. */
+static PetscReal FrictionRatio(const RollerSteady *st, PetscInt j, StickLaw law)
+{
+  if (Marginal(st, j, law)) return st->tangent[j] > 0 ? -st->mu[j] : st->mu[j];
+  return -st->tangent[j] / st->normal[j];
 }
 
 /* A sliding node whose force points against the patch's total tangential force Tsum: the upwind slip's artifact at
@@ -38,16 +61,16 @@ static PetscBool Reversed(const RollerSteady *st, PetscInt j, PetscReal Tsum)
   return st->state[j] == 2 && st->tangent[j] * Tsum < 0 ? PETSC_TRUE : PETSC_FALSE;
 }
 
-/* The coefficient of the slip speed's change dv on row a,x: N mu' sliding (velocity weakening), mu N (1 - r^2)^{3/2}/eps
-   for a stick node in the regularized cone. */
-static PetscReal SlipCoefficient(const RollerSteady *st, PetscInt j, PetscReal eps)
+/* The coefficient of the slip speed's change dv on row a,x: N mu' sliding or marginal (velocity weakening),
+   mu N (1 - r^2)^{3/2}/eps for a stick node in the regularized cone. */
+static PetscReal SlipCoefficient(const RollerSteady *st, PetscInt j, StickLaw law)
 {
   PetscReal r;
 
-  if (st->state[j] == 2) return st->normal[j] * st->dmu[j];
-  if (st->state[j] != 1 || eps == 0) return 0;
+  if (st->state[j] == 2 || Marginal(st, j, law)) return st->normal[j] * st->dmu[j];
+  if (st->state[j] != 1 || law.eps == 0) return 0;
   r = PetscMin(PetscAbsReal(st->tangent[j]) / (st->mu[j] * st->normal[j]), 1.0);
-  return st->mu[j] * st->normal[j] * PetscPowReal(1 - r * r, 1.5) / eps;
+  return st->mu[j] * st->normal[j] * PetscPowReal(1 - r * r, 1.5) / law.eps;
 }
 
 /* B = [A 0; 0 0] with ns rows and columns appended on the last rank, plus the entries (rows[k], cols[k], vals[k])
@@ -93,7 +116,7 @@ static PetscErrorCode Augment(Mat A, PetscInt ns, PetscInt ne, const PetscInt ro
 }
 
 /* The stick nodes' multipliers: their entries in K (the force, the transport's d_phi part) and C (its lambda part). */
-static PetscErrorCode StickMultipliers(Roller ctx, const RollerSteady *st, PetscReal eps, IS kept, PetscInt nk, PetscInt *ns, PetscInt *nek, PetscInt **rk, PetscInt **ck, PetscScalar **vk, PetscInt *nec, PetscInt **rc, PetscInt **cc, PetscScalar **vc)
+static PetscErrorCode StickMultipliers(Roller ctx, const RollerSteady *st, StickLaw law, IS kept, PetscInt nk, PetscInt *ns, PetscInt *nek, PetscInt **rk, PetscInt **ck, PetscScalar **vk, PetscInt *nec, PetscInt **rc, PetscInt **cc, PetscScalar **vc)
 {
   PetscInt    nloc, kstart, *red, js = 0;
   PetscMPIInt rank;
@@ -113,7 +136,7 @@ static PetscErrorCode StickMultipliers(Roller ctx, const RollerSteady *st, Petsc
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, red, st->n, MPIU_INT, MPI_MAX, ctx->comm));
   *ns = 0;
   for (PetscInt j = 0; j < st->n; ++j)
-    if (RigidStick(st, j, eps)) ++*ns;
+    if (RigidStick(st, j, law)) ++*ns;
   PetscCall(PetscMalloc3(4 * *ns, rk, 4 * *ns, ck, 4 * *ns, vk));
   PetscCall(PetscMalloc3(*ns, rc, *ns, cc, *ns, vc));
   *nek = *nec = 0;
@@ -122,7 +145,7 @@ static PetscErrorCode StickMultipliers(Roller ctx, const RollerSteady *st, Petsc
     PetscInt  nb[3];
     PetscReal c[3];
 
-    if (!RigidStick(st, j, eps)) continue;
+    if (!RigidStick(st, j, law)) continue;
     if (!rank) { /* one rank adds each multiplier's entries */
       PetscCall(RollerSteadyAngularDerivative(st, ctx->rotation.omega, j, nb, c));
       (*rk)[*nek]     = red[j];
@@ -147,7 +170,8 @@ static PetscErrorCode StickMultipliers(Roller ctx, const RollerSteady *st, Petsc
 
 PetscErrorCode RollerSquealOperators(Roller ctx, const RollerSteady *st, Mat M, Mat C, Mat K, Mat *Mr, Mat *Cr, Mat *Kr, IS *kept, PetscInt *nstick)
 {
-  const PetscReal tol = 1e-12, eps = ctx->eig.stick_eps;
+  const PetscReal tol  = 1e-12;
+  const StickLaw  law  = {ctx->eig.stick_eps, ctx->eig.stick_margin};
   PetscReal       nmax = 0, Tsum = 0;
   Mat             R, RM, RC, RK;
   PetscInt        lo, hi, m, nk = 0, *idx;
@@ -166,7 +190,7 @@ PetscErrorCode RollerSquealOperators(Roller ctx, const RollerSteady *st, Mat M, 
 
     if (st->normal[j] <= tol * nmax || a < lo || a >= hi) continue;
     if (Reversed(st, j, Tsum)) continue;
-    if (!RigidStick(st, j, eps) && st->tangent[j] != 0) PetscCall(MatSetValue(R, a, a + 1, -st->tangent[j] / st->normal[j], INSERT_VALUES)); /* s mu_a */
+    if (!RigidStick(st, j, law) && st->tangent[j] != 0) PetscCall(MatSetValue(R, a, a + 1, FrictionRatio(st, j, law), INSERT_VALUES)); /* s mu_a */
     drop[a + 1 - lo] = PETSC_TRUE;
   }
   PetscCall(MatAssemblyBegin(R, MAT_FINAL_ASSEMBLY));
@@ -182,7 +206,7 @@ PetscErrorCode RollerSquealOperators(Roller ctx, const RollerSteady *st, Mat M, 
     PetscInt       nb[3], cols[3];
     PetscReal      c[3], vals[3], cv;
 
-    if (st->normal[j] <= tol * nmax || a < lo || a >= hi || Reversed(st, j, Tsum) || (cv = SlipCoefficient(st, j, eps)) == 0) continue;
+    if (st->normal[j] <= tol * nmax || a < lo || a >= hi || Reversed(st, j, Tsum) || (cv = SlipCoefficient(st, j, law)) == 0) continue;
     PetscCall(MatSetValue(RC, a, a, cv, ADD_VALUES));
     PetscCall(RollerSteadyAngularDerivative(st, ctx->rotation.omega, j, nb, c));
     for (PetscInt k = 0; k < 3; ++k) {
@@ -209,7 +233,7 @@ PetscErrorCode RollerSquealOperators(Roller ctx, const RollerSteady *st, Mat M, 
     Mat          A;
 
     PetscCall(ISGetSize(*kept, &nk));
-    PetscCall(StickMultipliers(ctx, st, eps, *kept, nk, &ns, &nek, &rk, &ck, &vk, &nec, &rc, &cc, &vc));
+    PetscCall(StickMultipliers(ctx, st, law, *kept, nk, &ns, &nek, &rk, &ck, &vk, &nec, &rc, &cc, &vc));
     *nstick = ns;
     if (ns) {
       PetscCall(Augment(*Mr, ns, 0, NULL, NULL, NULL, &A));
