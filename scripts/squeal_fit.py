@@ -20,6 +20,10 @@ roots, m = 1, c = -2 Re lambda, k = |lambda|^2, stepped by the three-level schem
   (z - 1)^2/dt^2 + c (z^2 - 1)/(2 dt) + k (z^2 + 1)/2 = 0,
 gives the growth log|z|/dt and the frequency arg(z)/dt of the root with arg(z) > 0.
 
+RUN.csv (a -monitor_csv, every step) instead of RUN.h5: the column --signal (contact_force by default) is fitted at
+the CEA's frequency: a mode of any order (the order-10 stick-zone mode of docs/squeal.md 4.4.3) shows in the contact
+force, where the whirl shows order 1 only.
+
 --stick-zone T0: where the run's Gamma_C vertices stick, in lab x bins, from T0 on (the time step's own stick zone, to
 set against the steady state's, -modes_steady_csv).
 
@@ -50,10 +54,25 @@ def whirl(h5, omega=None, theta_start=None):
     return t, u + 1j * v
 
 
-def seed_response(h5, base):
-    """t and U - U_base: the seeded run's whirl minus the unseeded one's (the same times are needed)."""
-    t, U = whirl(h5)
-    tb, Ub = whirl(base)
+def monitor_signal(path, column):
+    """t and one column of a -monitor_csv (every step), as a complex signal: a mode of any order shows in the contact
+    force, where the whirl (order 1) does not."""
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    if not rows or column not in rows[0]:
+        raise SystemExit(f"squeal_fit.py: {path} has no column {column!r} (a -monitor_csv is needed)")
+    return np.array([float(r["t"]) for r in rows]), np.array([float(r[column]) for r in rows], dtype=complex)
+
+
+def signal(path, column=None):
+    """The whirl of an output .h5, or a column of a monitor .csv."""
+    return monitor_signal(path, column or "contact_force") if path.endswith(".csv") else whirl(path)
+
+
+def seed_response(h5, base, column=None):
+    """t and U - U_base: the seeded run's whirl (or monitor column) minus the unseeded one's (the same times are needed)."""
+    t, U = signal(h5, column)
+    tb, Ub = signal(base, column)
     if len(tb) != len(t) or np.max(np.abs(tb - t)) > 1e-9 * max(1.0, t[-1]):
         raise SystemExit(f"squeal_fit.py: --base {base}: its times differ from {h5}'s (the same -ts_dt, -ts_max_time, -output_every are needed)")
     return t, U - Ub
@@ -143,7 +162,8 @@ def cea_mode(path, order, wave):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("h5")
+    ap.add_argument("h5", help="the run's -output .h5 (the order-1 whirl) or its -monitor_csv .csv (a column, --signal)")
+    ap.add_argument("--signal", default="contact_force", help="the .csv column fitted (default contact_force)")
     ap.add_argument("--cea", required=True, help="roller -modes -modes_csv of the same scene and mesh")
     ap.add_argument("--order", type=int, default=1)
     ap.add_argument("--wave", default="backward")
@@ -157,7 +177,12 @@ def main():
     a = ap.parse_args()
     g, w = cea_mode(a.cea, a.order, a.wave)
     ws = -w if a.wave == "backward" else w
-    t, U = seed_response(a.h5, a.base) if a.base else whirl(a.h5)
+    t, U = seed_response(a.h5, a.base, a.signal) if a.base else signal(a.h5, a.signal)
+    if a.h5.endswith(".csv"):  # a real signal, every step: its line at +w, block means at about 20 per period
+        ws = abs(w)
+        k = max(1, int(2 * np.pi / abs(w) / 20 / (t[1] - t[0])))
+        n = len(t) // k
+        t, U = t[:n * k].reshape(n, k).mean(1), U[:n * k].reshape(n, k).mean(1)
     r = fit(t, U, ws, *a.window)
     gl, wl = dmf_map(complex(g, w), a.dt)
     gr, wr = dmf_map(complex(g, w + a.order * a.omega if a.wave == "backward" else abs(w - a.order * a.omega)), a.dt)
@@ -168,7 +193,7 @@ def main():
           f"({100 * (r['pencil_growth'] / g - 1):+.1f} %), frequency {r['pencil_frequency']:+.6f} "
           f"({100 * (abs(r['pencil_frequency']) / w - 1):+.2f} %); envelope growth {r['envelope_growth']:.6f} "
           f"({100 * (r['envelope_growth'] / g - 1):+.1f} %)")
-    if a.stick_zone is not None:
+    if a.stick_zone is not None and a.h5.endswith(".h5"):
         print(f"where {a.h5} sticks from t = {a.stick_zone:g} (lab x, fractions of the outputs): x, in contact, stick")
         for x, fc, fs in zip(*stick_zone(a.h5, a.stick_zone)):
             print(f"  {x:+.4f}  {fc:.2f}  {fs:.2f}")

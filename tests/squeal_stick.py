@@ -21,7 +21,8 @@ h_c = 0.0224, 0.0112, 0.0056, the default (rigid) stick constraint.
   no stick node is within 5 % of the cone and the margin 0.05 leaves the eigenvalue as it is.
 
 Not asserted (docs/squeal.md 4.4.2): xi = 0.12, where the CEA is nearly neutral (-0.002 on h_c = 0.0112) and the
-transients' seed response grows at 0.008 (dt = 0.01) or drifts (dt = 0.005); the changes of these three meshes
+transients' seed response grows at 0.008 (dt = 0.01), and with dt <= 0.005 the rolling state itself leaves for a
+stick-slip cycle of the stick zone at 6.8 rad / time; the changes of these three meshes
 shrink, but a fourth (h_c = 0.0028) gives +0.019 to +0.022 at 0.12 and moves every creep's frequency by 0.5-2 %:
 the stick CEA is not shown to converge with the contact mesh. The press transients' finite-amplitude rates. About
 9 min of CPU."""
