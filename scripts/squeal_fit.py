@@ -35,22 +35,31 @@ import csv
 import numpy as np
 
 
+def gamma_c(f, omega=None, theta_start=None):
+    """Of an open output file: the output times t, the rotation angles theta(t) (theta_a = 0 in these runs), the
+    vertex coordinates x and the mask of the Gamma_C (outer circle) vertices."""
+    par = f["parameters"].attrs
+    omega = float(par["omega"]) if omega is None else omega
+    theta_start = float(par["theta_start"]) if theta_start is None else theta_start
+    r_outer = float(par["r_outer"])
+    x = f["geometry/vertices"][:]
+    t = f["time"][:, 0]
+    return t, omega * np.maximum(t - theta_start, 0.0), x, np.abs(np.hypot(x[:, 0], x[:, 1]) - r_outer) < 1e-6 * r_outer
+
+
+def to_lab(th, a, b):
+    """The co-rotating components (a, b) turned by theta into the lab's."""
+    return np.cos(th) * a - np.sin(th) * b, np.sin(th) * a + np.cos(th) * b
+
+
 def whirl(h5, omega=None, theta_start=None):
     """t and the complex lab-frame mean displacement U of the Gamma_C vertices."""
     import h5py
 
     with h5py.File(h5, "r") as f:
-        par = f["parameters"].attrs
-        omega = float(par["omega"]) if omega is None else omega
-        theta_start = float(par["theta_start"]) if theta_start is None else theta_start
-        r_outer = float(par["r_outer"])
-        x = f["geometry/vertices"][:]
-        t = f["time"][:, 0]
-        outer = np.abs(np.hypot(x[:, 0], x[:, 1]) - r_outer) < 1e-6 * r_outer
+        t, th, _, outer = gamma_c(f, omega, theta_start)
         xi = f["vertex_fields/displacement_displacement"][:, :, :2][:, outer, :].mean(1)
-    th = omega * np.maximum(t - theta_start, 0.0)  # theta_a = 0 in these runs
-    u = np.cos(th) * xi[:, 0] - np.sin(th) * xi[:, 1]
-    v = np.sin(th) * xi[:, 0] + np.cos(th) * xi[:, 1]
+    u, v = to_lab(th, xi[:, 0], xi[:, 1])
     return t, u + 1j * v
 
 
@@ -85,20 +94,14 @@ def stick_zone(h5, t0, width=0.005):
     import h5py
 
     with h5py.File(h5, "r") as f:
-        par = f["parameters"].attrs
-        omega, r_outer = float(par["omega"]), float(par["r_outer"])
-        theta_start = float(par["theta_start"])
-        x = f["geometry/vertices"][:]
-        t = f["time"][:, 0]
-        outer = np.flatnonzero(np.abs(np.hypot(x[:, 0], x[:, 1]) - r_outer) < 1e-6 * r_outer)
+        t, th, x, outer = gamma_c(f)
+        r_outer = float(f["parameters"].attrs["r_outer"])
         states = f["vertex_fields/contact_state_contact_state"]
         edges = np.arange(-r_outer, r_outer + width, width)
         seen, contact, stick = (np.zeros(len(edges) - 1) for _ in range(3))
         for k in np.flatnonzero(t >= t0):
-            th = omega * max(t[k] - theta_start, 0.0)
             s = states[k, :][outer]
-            X = np.cos(th) * x[outer, 0] - np.sin(th) * x[outer, 1]
-            Y = np.sin(th) * x[outer, 0] + np.cos(th) * x[outer, 1]
+            X, Y = to_lab(th[k], x[outer, 0], x[outer, 1])
             b = np.digitize(X, edges) - 1
             low = (Y < 0) & (b >= 0) & (b < len(seen))  # the half facing the sheet
             np.add.at(seen, b[low], 1)
@@ -163,7 +166,7 @@ def cea_mode(path, order, wave):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("h5", help="the run's -output .h5 (the order-1 whirl) or its -monitor_csv .csv (a column, --signal)")
-    ap.add_argument("--signal", default="contact_force", help="the .csv column fitted (default contact_force)")
+    ap.add_argument("--signal", help="the .csv column fitted (default contact_force)")
     ap.add_argument("--cea", required=True, help="roller -modes -modes_csv of the same scene and mesh")
     ap.add_argument("--order", type=int, default=1)
     ap.add_argument("--wave", default="backward")
@@ -175,10 +178,15 @@ def main():
     ap.add_argument("--plot")
     ap.add_argument("--title", default="")
     a = ap.parse_args()
+    csv_run = a.h5.endswith(".csv")
+    if a.signal and not csv_run:
+        ap.error(f"--signal {a.signal}: a column of a monitor .csv; {a.h5} is an output .h5 (its whirl is fitted)")
+    if a.stick_zone is not None and csv_run:
+        ap.error(f"--stick-zone {a.stick_zone:g}: needs the run's output .h5 (its contact_state), not {a.h5}")
     g, w = cea_mode(a.cea, a.order, a.wave)
     ws = -w if a.wave == "backward" else w
     t, U = seed_response(a.h5, a.base, a.signal) if a.base else signal(a.h5, a.signal)
-    if a.h5.endswith(".csv"):  # a real signal, every step: its line at +w, block means at about 20 per period
+    if csv_run:  # a real signal, every step: its line at +w, block means at about 20 per period
         ws = abs(w)
         k = max(1, int(2 * np.pi / abs(w) / 20 / (t[1] - t[0])))
         n = len(t) // k
@@ -193,7 +201,7 @@ def main():
           f"({100 * (r['pencil_growth'] / g - 1):+.1f} %), frequency {r['pencil_frequency']:+.6f} "
           f"({100 * (abs(r['pencil_frequency']) / w - 1):+.2f} %); envelope growth {r['envelope_growth']:.6f} "
           f"({100 * (r['envelope_growth'] / g - 1):+.1f} %)")
-    if a.stick_zone is not None and a.h5.endswith(".h5"):
+    if a.stick_zone is not None:
         print(f"where {a.h5} sticks from t = {a.stick_zone:g} (lab x, fractions of the outputs): x, in contact, stick")
         for x, fc, fs in zip(*stick_zone(a.h5, a.stick_zone)):
             print(f"  {x:+.4f}  {fc:.2f}  {fs:.2f}")
