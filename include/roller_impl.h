@@ -203,13 +203,18 @@ typedef struct {
    the frame of the linearization, the eigenvalue CSV and the shapes' HDF5 file */
 typedef enum { ROLLER_FRAME_ROTATING, ROLLER_FRAME_LAB } RollerFrame;
 PETSC_EXTERN const char *const RollerFrames[];
+/* The steady state's slip speed along Gamma_C (RollerSteadyAngularDerivative): box (candidate j and its upstream
+   neighbour, the slip at their midpoint), upwind (the same two points, the slip at j), upwind2 (three points at j) */
+typedef enum { ROLLER_SLIP_BOX, ROLLER_SLIP_UPWIND, ROLLER_SLIP_UPWIND2 } RollerSlipDifference;
+PETSC_EXTERN const char *const RollerSlipDifferences[];
 typedef struct {
-  PetscBool   on;
-  RollerFrame frame;
-  PetscInt    nev;
-  PetscReal   stick_eps;    /* the stick nodes' regularized cone, a slip speed (docs/squeal.md 4.4); 0: rigid stick */
-  PetscReal   stick_margin; /* a stick node with |T| > (1 - margin) mu N is linearized as slipping (docs/squeal.md 4.4.2); 0: none */
-  char        csv[PETSC_MAX_PATH_LEN], output[PETSC_MAX_PATH_LEN], steady_csv[PETSC_MAX_PATH_LEN];
+  PetscBool            on;
+  RollerFrame          frame;
+  PetscInt             nev;
+  PetscReal            stick_eps;       /* the stick nodes' regularized cone, a slip speed (docs/squeal.md 4.4); 0: rigid stick */
+  PetscReal            stick_margin;    /* a stick node with |T| > (1 - margin) mu N is linearized as slipping (docs/squeal.md 4.4.2); 0: none */
+  RollerSlipDifference slip_difference; /* the steady slip along Gamma_C (docs/squeal.md 3, 4.4.4) */
+  char                 csv[PETSC_MAX_PATH_LEN], output[PETSC_MAX_PATH_LEN], steady_csv[PETSC_MAX_PATH_LEN];
   /* the result, sorted by frequency: n eigenvalues re + i im (im >= 0), their order, wave (RollerWave) and error */
   PetscInt   n, *order, *wave, dofs; /* dofs: the size of the eigenproblem */
   PetscReal *re, *im, *error;

@@ -4,7 +4,8 @@
    renamed when complete) and printed; the shapes to HDF5 + XDMF (-modes_output F.h5, io/output_modes.c). */
 #include "modes/modes.h"
 
-const char *const RollerFrames[] = {"rotating", "lab", "RollerFrame", "ROLLER_FRAME_", NULL};
+const char *const RollerFrames[]          = {"rotating", "lab", "RollerFrame", "ROLLER_FRAME_", NULL};
+const char *const RollerSlipDifferences[] = {"box", "upwind", "upwind2", "RollerSlipDifference", "ROLLER_SLIP_", NULL};
 
 PetscErrorCode RollerModesSetFromOptions(Roller ctx)
 {
@@ -21,6 +22,8 @@ PetscErrorCode RollerModesSetFromOptions(Roller ctx)
                              &ctx->eig.stick_eps, NULL));
   PetscCall(PetscOptionsReal("-modes_stick_margin", "With -obstacle: a stick node whose friction is within this fraction of the cone, |T| > (1 - margin) mu N, is linearized as slipping (docs/squeal.md 4.4.2); 0: every stick node stuck", NULL,
                              ctx->eig.stick_margin, &ctx->eig.stick_margin, NULL));
+  PetscCall(PetscOptionsEnum("-modes_slip_difference", "With -obstacle: the steady state's slip along Gamma_C from the displacement at a candidate and its upstream neighbour (docs/squeal.md 3, 4.4.4): box (the slip at their midpoint; the default), upwind (at the candidate) or upwind2 (three points at the candidate: not monotone, fragmented stick zones; the default before 2026-11-28)", "RollerSlipDifference", RollerSlipDifferences,
+                             (PetscEnum)ctx->eig.slip_difference, (PetscEnum *)&ctx->eig.slip_difference, NULL));
   PetscCall(PetscOptionsString("-modes_csv", "Eigenvalue CSV: re,im,frequency,growth_rate,order,wave,error", NULL, ctx->eig.csv, ctx->eig.csv, sizeof(ctx->eig.csv), NULL));
   PetscCall(PetscOptionsString("-modes_steady_csv", "With -obstacle: the steady state's contact nodes x,y,normal_force,tangential_force,gap,slip_velocity,mu,state", NULL, ctx->eig.steady_csv, ctx->eig.steady_csv, sizeof(ctx->eig.steady_csv), NULL));
   PetscCall(PetscOptionsString("-modes_output", "Mode shapes: HDF5 file F.h5 (+ XDMF index F.xmf for ParaView)", NULL, ctx->eig.output, ctx->eig.output, sizeof(ctx->eig.output), NULL));

@@ -45,13 +45,14 @@ PETSC_INTERN PetscErrorCode             RollerModeClassifierDestroy(RollerModeCl
    forces, mu(v), mu'(v), slip speeds, gaps and states (0 off the sheet, 1 stick, 2 slip), the state u; the
    scatter to the candidates */
 typedef struct {
-  PetscInt   n, *dof, *state, iterations, alternations, active_set;
-  PetscReal *xy, *normal, *tangent, *mu, *dmu, *slip, *gap;
-  Vec        u, red;
-  VecScatter scatter;
+  PetscInt             n, *dof, *state, iterations, alternations, active_set;
+  PetscReal           *xy, *normal, *tangent, *mu, *dmu, *slip, *gap;
+  RollerSlipDifference difference;
+  Vec                  u, red;
+  VecScatter           scatter;
 } RollerSteady;
-PETSC_INTERN PetscErrorCode RollerSteadySolve(Roller, Mat, RollerSteady *);                                                      /* with K_lab */
-PETSC_INTERN PetscErrorCode RollerSteadyAngularDerivative(const RollerSteady *, PetscReal, PetscInt, PetscInt[3], PetscReal[3]); /* upwind for omega */
+PETSC_INTERN PetscErrorCode RollerSteadySolve(Roller, Mat, RollerSteady *);                                                                    /* with K_lab */
+PETSC_INTERN PetscErrorCode RollerSteadyAngularDerivative(const RollerSteady *, PetscReal, PetscInt, PetscInt[3], PetscReal[3], PetscReal[3]); /* the slip's d_phi and point weights, upstream for omega */
 PETSC_INTERN PetscErrorCode RollerSteadyDestroy(RollerSteady *, PetscBool);
 PETSC_INTERN PetscErrorCode RollerSteadyReport(Roller, const RollerSteady *); /* printed, and -modes_steady_csv */
 /* steady_coulomb.c: Coulomb on the candidates' dual data w = G x + d (n, G, d, friction, mu; N, T, state in/out as a

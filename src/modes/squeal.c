@@ -5,6 +5,9 @@
 
      dT_a = -s mu_a dN_a - N_a mu'_a dv_a,   dv_a = (lambda + theta' d_phi) du_a,x   (the slip speed's change)
 
+   (d_phi and the point where the slip is taken as in the steady state, RollerSteadyAngularDerivative: by default
+   midway between a and its upstream neighbour, lambda du_a,x then the mean of the two)
+
    so that, with Q(lambda) = lambda^2 M + lambda C + K the lab-frame operator of the free annulus:
      row a,x  +=  s mu_a row a,y          (friction follows the normal force: a non-symmetric stiffness,
                                              mass and gyroscopic coupling: mode coupling, flutter)
@@ -138,16 +141,16 @@ static PetscErrorCode StickMultipliers(Roller ctx, const RollerSteady *st, Stick
   for (PetscInt j = 0; j < st->n; ++j)
     if (RigidStick(st, j, law)) ++*ns;
   PetscCall(PetscMalloc3(4 * *ns, rk, 4 * *ns, ck, 4 * *ns, vk));
-  PetscCall(PetscMalloc3(*ns, rc, *ns, cc, *ns, vc));
+  PetscCall(PetscMalloc3(3 * *ns, rc, 3 * *ns, cc, 3 * *ns, vc));
   *nek = *nec = 0;
   PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
   for (PetscInt j = 0; j < st->n; ++j) {
     PetscInt  nb[3];
-    PetscReal c[3];
+    PetscReal c[3], a[3];
 
     if (!RigidStick(st, j, law)) continue;
     if (!rank) { /* one rank adds each multiplier's entries */
-      PetscCall(RollerSteadyAngularDerivative(st, ctx->rotation.omega, j, nb, c));
+      PetscCall(RollerSteadyAngularDerivative(st, ctx->rotation.omega, j, nb, c, a));
       (*rk)[*nek]     = red[j];
       (*ck)[*nek]     = nk + js;
       (*vk)[(*nek)++] = -1.0;
@@ -158,9 +161,12 @@ static PetscErrorCode StickMultipliers(Roller ctx, const RollerSteady *st, Stick
         (*ck)[*nek]     = red[nb[k]];
         (*vk)[(*nek)++] = ctx->rotation.omega * c[k];
       }
-      (*rc)[*nec]     = nk + js;
-      (*cc)[*nec]     = red[j];
-      (*vc)[(*nec)++] = 1.0;
+      for (PetscInt k = 0; k < 3; ++k) {
+        if (a[k] == 0) continue;
+        (*rc)[*nec]     = nk + js;
+        (*cc)[*nec]     = red[nb[k]];
+        (*vc)[(*nec)++] = a[k];
+      }
     }
     ++js;
   }
@@ -204,15 +210,16 @@ PetscErrorCode RollerSquealOperators(Roller ctx, const RollerSteady *st, Mat M, 
   for (PetscInt j = 0; j < st->n; ++j) {
     const PetscInt a = st->dof[j];
     PetscInt       nb[3], cols[3];
-    PetscReal      c[3], vals[3], cv;
+    PetscReal      c[3], w[3], vals[3], cv;
 
     if (st->normal[j] <= tol * nmax || a < lo || a >= hi || Reversed(st, j, Tsum) || (cv = SlipCoefficient(st, j, law)) == 0) continue;
-    PetscCall(MatSetValue(RC, a, a, cv, ADD_VALUES));
-    PetscCall(RollerSteadyAngularDerivative(st, ctx->rotation.omega, j, nb, c));
+    PetscCall(RollerSteadyAngularDerivative(st, ctx->rotation.omega, j, nb, c, w));
     for (PetscInt k = 0; k < 3; ++k) {
       cols[k] = st->dof[nb[k]];
-      vals[k] = cv * ctx->rotation.omega * c[k];
+      vals[k] = cv * w[k];
     }
+    PetscCall(MatSetValues(RC, 1, &a, 3, cols, vals, ADD_VALUES));
+    for (PetscInt k = 0; k < 3; ++k) vals[k] = cv * ctx->rotation.omega * c[k];
     PetscCall(MatSetValues(RK, 1, &a, 3, cols, vals, ADD_VALUES));
   }
   PetscCall(MatAssemblyBegin(RC, MAT_FINAL_ASSEMBLY));

@@ -7,7 +7,8 @@
      v_j = theta'(-y_j,2 + d_phi u_j,1) - V,  |T_j| <= mu_j N_j,  T_j = -mu_j N_j sign(v_j) where v_j != 0,
 
    on the Gamma_C nodes within reach of the sheet: v_j is the speed of the material over the sheet (the rigid
-   rotation's plus the convective rate of the displacement, d_phi along Gamma_C by differences), so a node sticks
+   rotation's plus the convective rate of the displacement, d_phi along Gamma_C by differences: by default both
+   taken midway between j and its upstream neighbour, -modes_slip_difference), so a node sticks
    (v_j = 0) or slips against its force: Carter's rolling with stick and slip zones, full sliding when the sheet
    is held, frictionless rolling at mu = 0. K_lab is factored once; its inverse applied to the unit forces gives
    the dense dual data (gaps and slips of the candidates), and Coulomb's law on it is one LCP solved by Lemke's
@@ -87,22 +88,31 @@ static PetscErrorCode Candidates(Roller ctx, PetscReal g, PetscReal reach, Rolle
   PetscFunctionReturn(0);
 }
 
-/* d_phi of the x displacement at candidate j, from the redundant values ux[] of all candidates (sorted by angle):
-   coefficients c[3] on the candidates nb[3]. Upwind: the material flows through Gamma_C in the direction of the
-   rotation, and the slip speed's d_phi is the transport of the displacement by that flow, so the difference
-   looks upstream (second order, three points j, j -+ 1, j -+ 2; two points next to the upstream end, and the
-   downstream two at the end itself). A central difference would leave the stick condition v_j = 0 blind to
-   every other node (odd-even decoupling: the dual matrix of the stick zone singular). */
-PetscErrorCode RollerSteadyAngularDerivative(const RollerSteady *st, PetscReal omega, PetscInt j, PetscInt nb[3], PetscReal c[3])
+/* The slip speed of candidate j: d_phi of the x displacement, coefficients c[3] on the candidates nb[3] (sorted by
+   angle), and the weights a[3] of the point values (the rigid rotation's speed, the perturbation's rate) at the point
+   where the slip is taken. Upwind: the material flows through Gamma_C in the direction of the rotation, and the slip
+   speed's d_phi is the transport of the displacement by that flow, so the difference looks upstream:
+   - box (the default): two points, j and its upstream neighbour j -+ 1, the slip at their midpoint (the point values
+     averaged, a = 1/2, 1/2): second order there, and j's stick or slip is that of the segment it closes;
+   - upwind: the same difference taken at j (a = 1, 0): first order; its error, half a spacing of numerical
+     diffusion, shortens the stick zone on coarse meshes (docs/squeal.md 4.4.4);
+   - upwind2: three points j, j -+ 1, j -+ 2, the parabola's derivative at j: second order but not monotone (the
+     third point's weight has the other sign): at the stick/slip boundary, where the slip's derivative jumps, it
+     leaves fragmented stick zones (stick, slip, stick, ..., differently on every mesh), and the CEA about them does
+     not converge with the contact mesh (docs/squeal.md 4.4.2, 4.4.4). Before 2026-11-28 the only difference.
+   The upstream end uses its downstream neighbour (and upwind2 the two points next to it). A central difference
+   would leave the stick condition v_j = 0 blind to every other node (odd-even decoupling: the dual matrix of the
+   stick zone singular). */
+PetscErrorCode RollerSteadyAngularDerivative(const RollerSteady *st, PetscReal omega, PetscInt j, PetscInt nb[3], PetscReal c[3], PetscReal a[3])
 {
   const PetscInt up = omega >= 0 ? -1 : 1, end = omega >= 0 ? 0 : st->n - 1;
   PetscReal      t[3];
-  PetscInt       k = 3;
+  PetscInt       k = st->difference == ROLLER_SLIP_UPWIND2 ? 3 : 2;
 
   PetscFunctionBeginUser;
   PetscCheck(st->n > 2, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%" PetscInt_FMT " contact candidates: too few for a derivative along Gamma_C", st->n);
   nb[0] = j;
-  if (j == end) {
+  if (j == end) { /* nothing upstream: the downstream difference */
     nb[1] = j - up;
     nb[2] = j - 2 * up;
   } else if (j == end - up) {
@@ -114,7 +124,11 @@ PetscErrorCode RollerSteadyAngularDerivative(const RollerSteady *st, PetscReal o
     nb[2] = j + 2 * up;
   }
   for (PetscInt i = 0; i < 3; ++i) t[i] = PetscAtan2Real(st->xy[2 * nb[i] + 1], st->xy[2 * nb[i]]);
-  if (k == 2) { /* first order, upstream */
+  a[0] = 1.0;
+  a[1] = a[2] = 0.0;
+  /* box: the slip at the midpoint of j and nb[1] */
+  if (st->difference == ROLLER_SLIP_BOX) a[0] = a[1] = 0.5;
+  if (k == 2) { /* two points */
     c[0] = 1.0 / (t[0] - t[1]);
     c[1] = -c[0];
     c[2] = 0.0;
@@ -164,12 +178,12 @@ static PetscErrorCode GapSlip(Roller ctx, const RollerSteady *st, const PetscRea
   PetscFunctionBeginUser;
   for (PetscInt j = 0; j < st->n; ++j) {
     PetscInt  nb[3];
-    PetscReal c[3], du = 0;
+    PetscReal c[3], a[3], du = 0, y = 0;
 
-    PetscCall(RollerSteadyAngularDerivative(st, w, j, nb, c));
-    for (PetscInt k = 0; k < 3; ++k) du += c[k] * xs[2 * nb[k]];
+    PetscCall(RollerSteadyAngularDerivative(st, w, j, nb, c, a));
+    for (PetscInt k = 0; k < 3; ++k) du += c[k] * xs[2 * nb[k]], y += a[k] * st->xy[2 * nb[k] + 1];
     gap[j]  = xs[2 * j + 1] + (affine ? st->xy[2 * j + 1] - g : 0.0);
-    slip[j] = (w * du + (affine ? -w * st->xy[2 * j + 1] - ctx->obstacle.sheet_speed : 0.0)) / vs;
+    slip[j] = (w * du + (affine ? -w * y - ctx->obstacle.sheet_speed : 0.0)) / vs;
   }
   PetscFunctionReturn(0);
 }
@@ -231,6 +245,7 @@ PetscErrorCode RollerSteadySolve(Roller ctx, Mat Klab, RollerSteady *st)
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(st, sizeof(*st)));
+  st->difference = ctx->eig.slip_difference;
   PetscCall(KSPCreate(ctx->comm, &ksp));
   PetscCall(KSPSetOperators(ksp, Klab, Klab));
   PetscCall(RollerDirectSolverDefaults(ksp, PCLU));
