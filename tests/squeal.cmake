@@ -26,4 +26,4 @@ roller_test(steady_sweep_long steady_sweep.py LABELS long ARGS long PROCESSORS 2
 # and 0.14: the changes of the order-1 backward pair shrink on these meshes (a fourth breaks it: docs/squeal.md 4.4.2),
 # -modes_stick_margin frees exactly the marginal stick nodes, and at xi = 0.14 (seeded at 1e-5) and 0.13 (the seed's
 # response) transients grow at the CEA's rate (20 %, frequency 1 %) (docs/squeal.md 4.4.1; about 9 min of CPU)
-roller_test(squeal_stick squeal_stick.py LABELS long TIMEOUT 1800)
+roller_test(squeal_stick squeal_stick.py LABELS long TIMEOUT 3600)

@@ -1,8 +1,9 @@
 """The CEA about a rolling state with a stick zone converges with the contact mesh, and transients confirm it
 (docs/squeal.md 4.4.4): the feeder (jobs/feed.yaml) with its own Kelvin-Voigt damping (-viscosity 0.0115 -damping 0,
 the damped lab-frame CEA), the order-1 backward pair at the creeps CREEPS (the stick zone from about 0.055 long at
-0.12 to a few nodes next to the stick/slip boundary), graded meshes h_c = MESHES, the default slip difference (box:
-the slip midway between a node and its upstream neighbour, docs/squeal.md section 3) and the rigid stick constraint.
+0.12 to a few nodes next to the stick/slip boundary), graded meshes h_c = MESHES, the two-point slip difference
+-modes_slip_difference box (the slip midway between a node and its upstream neighbour, docs/squeal.md section 3; not
+yet the default) and the rigid stick constraint.
 
 - on the three meshes the pair's growth converges: the change from the middle to the fine mesh is smaller than from
   the coarse to the middle one, or both are within 10 % of the fine mesh's growth; the frequencies of the two finer
@@ -20,7 +21,7 @@ the slip midway between a node and its upstream neighbour, docs/squeal.md sectio
 
 Not asserted (docs/squeal.md 4.4.3-4.4.4): the fastest mode about a stick zone, a forward wave of order 8-10 near
 6-7 rad / time, which needs -modes_nev 400 and transients with dt <= 0.00125; the press transients' finite-amplitude
-rates. About 15 min of CPU."""
+rates. About 20 min of CPU."""
 import os
 import sys
 
@@ -54,7 +55,7 @@ def backward1(name):
 
 def cea(xi, hc, extra=(), tag=""):
     name = f"cea_{xi}_{hc}{tag}"
-    run(SCENE + mesh(hc) + ["-sheet_speed", repr(OMEGA_R * (1 - xi)), "-modes", "-modes_nev", 30, "-modes_csv", f"{name}.csv"] + list(extra))
+    run(SCENE + mesh(hc) + ["-sheet_speed", repr(OMEGA_R * (1 - xi)), "-modes", "-modes_nev", 30, "-modes_slip_difference", "box", "-modes_csv", f"{name}.csv"] + list(extra))
     return backward1(f"{name}.csv")
 
 

@@ -5,7 +5,7 @@
 
      dT_a = -s mu_a dN_a - N_a mu'_a dv_a,   dv_a = (lambda + theta' d_phi) du_a,x   (the slip speed's change)
 
-   (d_phi and the point where the slip is taken as in the steady state, RollerSteadyAngularDerivative: by default
+   (d_phi and the point where the slip is taken as in the steady state, RollerSteadyAngularDerivative: with box
    midway between a and its upstream neighbour, lambda du_a,x then the mean of the two)
 
    so that, with Q(lambda) = lambda^2 M + lambda C + K the lab-frame operator of the free annulus:
@@ -216,10 +216,9 @@ PetscErrorCode RollerSquealOperators(Roller ctx, const RollerSteady *st, Mat M, 
     PetscCall(RollerSteadyAngularDerivative(st, ctx->rotation.omega, j, nb, c, w));
     for (PetscInt k = 0; k < 3; ++k) {
       cols[k] = st->dof[nb[k]];
-      vals[k] = cv * w[k];
+      if (w[k] != 0) PetscCall(MatSetValue(RC, a, cols[k], cv * w[k], ADD_VALUES));
+      vals[k] = cv * ctx->rotation.omega * c[k];
     }
-    PetscCall(MatSetValues(RC, 1, &a, 3, cols, vals, ADD_VALUES));
-    for (PetscInt k = 0; k < 3; ++k) vals[k] = cv * ctx->rotation.omega * c[k];
     PetscCall(MatSetValues(RK, 1, &a, 3, cols, vals, ADD_VALUES));
   }
   PetscCall(MatAssemblyBegin(RC, MAT_FINAL_ASSEMBLY));

@@ -7,8 +7,8 @@
      v_j = theta'(-y_j,2 + d_phi u_j,1) - V,  |T_j| <= mu_j N_j,  T_j = -mu_j N_j sign(v_j) where v_j != 0,
 
    on the Gamma_C nodes within reach of the sheet: v_j is the speed of the material over the sheet (the rigid
-   rotation's plus the convective rate of the displacement, d_phi along Gamma_C by differences: by default both
-   taken midway between j and its upstream neighbour, -modes_slip_difference), so a node sticks
+   rotation's plus the convective rate of the displacement, d_phi along Gamma_C by differences, upwind: three
+   points at j, or two with the slip taken midway, -modes_slip_difference), so a node sticks
    (v_j = 0) or slips against its force: Carter's rolling with stick and slip zones, full sliding when the sheet
    is held, frictionless rolling at mu = 0. K_lab is factored once; its inverse applied to the unit forces gives
    the dense dual data (gaps and slips of the candidates), and Coulomb's law on it is one LCP solved by Lemke's
@@ -92,14 +92,16 @@ static PetscErrorCode Candidates(Roller ctx, PetscReal g, PetscReal reach, Rolle
    angle), and the weights a[3] of the point values (the rigid rotation's speed, the perturbation's rate) at the point
    where the slip is taken. Upwind: the material flows through Gamma_C in the direction of the rotation, and the slip
    speed's d_phi is the transport of the displacement by that flow, so the difference looks upstream:
-   - box (the default): two points, j and its upstream neighbour j -+ 1, the slip at their midpoint (the point values
-     averaged, a = 1/2, 1/2): second order there, and j's stick or slip is that of the segment it closes;
+   - box: two points, j and its upstream neighbour j -+ 1, the slip at their midpoint (the point values averaged,
+     a = 1/2, 1/2): second order there, and j's stick or slip is that of the segment it closes; the stick CEA
+     converges with it (docs/squeal.md 4.4.4);
    - upwind: the same difference taken at j (a = 1, 0): first order; its error, half a spacing of numerical
      diffusion, shortens the stick zone on coarse meshes (docs/squeal.md 4.4.4);
    - upwind2: three points j, j -+ 1, j -+ 2, the parabola's derivative at j: second order but not monotone (the
      third point's weight has the other sign): at the stick/slip boundary, where the slip's derivative jumps, it
      leaves fragmented stick zones (stick, slip, stick, ..., differently on every mesh), and the CEA about them does
-     not converge with the contact mesh (docs/squeal.md 4.4.2, 4.4.4). Before 2026-11-28 the only difference.
+     not converge with the contact mesh (docs/squeal.md 4.4.2, 4.4.4). The default (the reports' transient fit does
+     not yet confirm the mode box makes the feeder's least stable, docs/squeal.md 4.4.4).
    The upstream end uses its downstream neighbour (and upwind2 the two points next to it). A central difference
    would leave the stick condition v_j = 0 blind to every other node (odd-even decoupling: the dual matrix of the
    stick zone singular). */
