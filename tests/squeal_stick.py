@@ -11,18 +11,18 @@ yet the default) and the rigid stick constraint.
   and its CEA does not converge: at 0.12 -0.002, -0.004, +0.019 on these meshes, docs/squeal.md 4.4.2.) Not on
   every mesh: a fourth, h_c = 0.0014 (7 min, 3 GB each, not run here), keeps 0.12 at 0.0098 but moves 0.13 from
   0.022 to -0.011 (the leading edge's P2 vertex/edge alternation, docs/squeal.md 4.4.4).
-- at 0.12 and 0.135 the seed's own response on the middle mesh, the transient seeded on the CEA's steady state and
+- at 0.12 and 0.135 the seed's own response on the coarse mesh (h_c = 0.0112), the transient seeded on the CEA's steady state and
   mode (1e-4, dt = 0.01) minus the same run unseeded (the start's whirl, common to both, cancels:
-  scripts/squeal_fit.py --base), grows at the middle mesh's CEA rate within 20 % and its frequency within 1 %
+  scripts/squeal_fit.py --base), grows at that mesh's CEA rate within 20 % and its frequency within 1 %
   (pencil and envelope, two windows each; at 0.12, where the rate is smallest, over t = 40-140 of a run to t = 150).
 - -modes_stick_margin m linearizes a stick node with |T| > (1 - m) mu N as sliding: at 0.12 the margin 0.05 frees
   exactly the steady state's stick nodes within 5 % of the cone and changes the eigenvalue; 0.02, within which no
   stick node lies, leaves it unchanged to the last digit.
 
-Not asserted (docs/squeal.md 4.4.3-4.4.4): at 0.13 the seed's response grows 14-21 % faster than the middle mesh's CEA
-(0.0237-0.0251 against 0.0208; the envelope over t = 10-60 at +21 %, so the 20 % check fails there) on both meshes it
-was run on, and a fourth mesh moves that CEA to -0.011; the fastest mode about a stick zone, a forward wave of order 8-10 near
-6-7 rad / time, which needs -modes_nev 400 and transients with dt <= 0.00125; the press transients' finite-amplitude
+Not asserted (docs/squeal.md 4.4.3-4.4.4): at 0.13 the seed's response grows 14-21 % faster than the coarse mesh's
+CEA (0.0237-0.0251 against 0.0208; the envelope over t = 10-60 at +21 %, so the 20 % check fails there) on both
+meshes it was run on, and a fourth mesh moves that CEA to -0.011; the fastest mode about a stick zone, a forward wave
+of order 8-10 near 6-7 rad / time, which needs -modes_nev 400 and transients with dt <= 0.00125; the press transients' finite-amplitude
 rates. About 15 min of CPU."""
 import os
 import sys
@@ -37,7 +37,7 @@ from squeal_fit import fit, seed_response  # noqa: E402
 
 SCENE = ["-options_file", os.path.join(SOURCE, "jobs", "feed.yaml"), "-viscosity", "0.0115", "-damping", "0", "-quiet"]
 MESHES = [0.0112, 0.0056, 0.0028]
-MIDDLE = MESHES[0]  # the transients' contact mesh (the CEA's coarse one)
+COARSE = MESHES[0]  # the transients' contact mesh
 CREEPS = [0.12, 0.13, 0.135]
 TRANSIENTS = {0.12: (150, [(40, 140), (60, 140)]), 0.135: (80, [(10, 60), (20, 80)])}  # t_max, windows
 OMEGA_R = np.pi / 10 * 0.5
@@ -63,9 +63,9 @@ def cea(xi, hc, extra=(), tag=""):
 
 
 def transient(xi, i, amp, tmax):
-    """The transient seeded at amp on mode i of the CEA's m{xi}.h5 (its steady state), to tmax on the middle mesh."""
+    """The transient seeded at amp on mode i of the CEA's m{xi}.h5 (its steady state), to tmax on the coarse mesh."""
     out = f"t{xi}_{amp}.h5"
-    run(SCENE + mesh(MIDDLE) + ["-sheet_speed", repr(OMEGA_R * (1 - xi)), "-ts_dt", "0.01", "-ts_max_time", tmax, "-obstacle_speed", "1e6", "-initial_condition", "mode",
+    run(SCENE + mesh(COARSE) + ["-sheet_speed", repr(OMEGA_R * (1 - xi)), "-ts_dt", "0.01", "-ts_max_time", tmax, "-obstacle_speed", "1e6", "-initial_condition", "mode",
                                 "-initial_mode_file", f"m{xi}.h5", "-initial_mode", i, "-ic_amplitude", amp, "-output", out, "-output_every", "20"])
     return out
 
@@ -81,32 +81,32 @@ def agrees(label, g, w, t, U, windows):
         c.check(abs(wp - w) < 0.01 * w, f"{label}, window {t0}-{t1}: frequency {wp:.5f} within 1 % of the CEA's {w:.5f}")
 
 
-mid = {}  # xi: (growth, frequency, row) on the middle mesh, whose steady state and shapes the checks below read
+coarse = {}  # xi: (growth, frequency, row) on the coarse mesh, whose steady state and shapes the checks below read
 for xi in CREEPS:
-    res = [cea(xi, hc, ["-modes_steady_csv", f"s{xi}.csv", "-modes_output", f"m{xi}.h5"] if hc == MIDDLE else []) for hc in MESHES]
-    mid[xi] = res[0]
+    res = [cea(xi, hc, ["-modes_steady_csv", f"s{xi}.csv", "-modes_output", f"m{xi}.h5"] if hc == COARSE else []) for hc in MESHES]
+    coarse[xi] = res[0]
     g, w = np.array([r[:2] for r in res]).T
     print(f"xi {xi}: growth {g}, frequency {w}")
     d1, d2 = abs(g[1] - g[0]), abs(g[2] - g[1])
     c.check(d2 < d1 or max(d1, d2) < 0.1 * abs(g[2]), f"xi {xi}: the growth converges with h_c (changes {d1:.4f}, {d2:.4f}: shrinking, or both within 10 % of {g[2]:.4f})")
     c.check(abs(w[2] - w[1]) < 0.005 * w[2], f"xi {xi}: the two finer meshes' frequencies within 0.5 % ({w[1]:.5f}, {w[2]:.5f})")
 
-# the stick margin at 0.12 (its most marginal stick node 3.8 % inside the cone on the middle mesh): 0.05 frees exactly
+# the stick margin at 0.12 (its most marginal stick node 3.8 % inside the cone on the coarse mesh): 0.05 frees exactly
 # the stick nodes within it and moves the eigenvalue; 0.02 has none to free and nothing moves
 for xi, m in ((0.12, 0.05), (0.12, 0.02)):
-    g0, w0, _ = mid[xi]
+    g0, w0, _ = coarse[xi]
     st = read_csv(f"s{xi}.csv")
     stick = st["state"] == 1
     near = int(np.sum(np.abs(st["tangential_force"][stick]) > (1 - m) * st["mu"][stick] * st["normal_force"][stick]))
-    gm, wm, _ = cea(xi, MIDDLE, ["-modes_stick_margin", m], f"_m{m}")
+    gm, wm, _ = cea(xi, COARSE, ["-modes_stick_margin", m], f"_m{m}")
     print(f"xi {xi}, margin {m}: {near} of {int(stick.sum())} stick nodes within the margin; growth {g0:.5f} -> {gm:.5f}")
     if near:
         c.check(gm != g0, f"xi {xi}: the margin {m} frees {near} stick node(s) and moves the eigenvalue ({g0:.5f} -> {gm:.5f})")
     else:
         c.check(gm == g0 and wm == w0, f"xi {xi}: no stick node within the margin {m}, the eigenvalue unchanged ({g0:.6f} @ {w0:.6f} -> {gm:.6f} @ {wm:.6f})")
 
-# the seed's response at each creep on the middle mesh, seeded minus unseeded
+# the seed's response on the coarse mesh, seeded minus unseeded
 for xi, (tmax, windows) in TRANSIENTS.items():
-    g, w, i = mid[xi]
+    g, w, i = coarse[xi]
     agrees(f"xi {xi}, the seed's response", g, w, *seed_response(transient(xi, i, "1e-4", tmax), transient(xi, i, "0", tmax)), windows)
 c.close()
