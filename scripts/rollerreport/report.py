@@ -8,7 +8,8 @@ The folder holds what the steps of the one-command run write (any may be missing
 - `commands.json`: the steps as rollerreport.run ran them (listed in the report);
 - `modes.csv`: the CEA (`roller -modes`; columns re, im, frequency, growth_rate, order, wave);
 - `sweep.csv`: the map (`roller -modes -sweep`; the swept options as columns beside growth_rate, frequency);
-- `transient.csv` and `transient.h5`: the seeded transient (monitor CSV with t and contact_force; fields).
+- `transient.csv` and `transient.h5`: the seeded transient (monitor CSV with t and contact_force; fields);
+- `transient_base.csv`: the same run unseeded (its monitor CSV): the fit is of the difference, the seed's response.
 
 The verdict: the mode of largest growth rate sigma = Re(lambda) (frequency f = Im(lambda) / 2 pi); squeals if
 sigma > 0. The margin against the rubber's damping is the loss factor the mode lacks (or has to spare),
@@ -147,13 +148,13 @@ def sweep_map(rows, png, scene_x=None, scene_y=None, title="", si=False):
     return xname, yname, onset, divergent
 
 
-def transient_fit(t, y, f_guess):
-    """Growth rate and frequency of the largest line near f_guess in the second half of y(t) (matrix pencil of
-    scripts/squeal_fit.py on the mean-free signal)."""
+def transient_fit(t, y, f_guess, start=None):
+    """Growth rate and frequency of the line nearest f_guess in y(t) from t = start on (default: the second half)
+    (matrix pencil of scripts/squeal_fit.py, 10 exponentials, on the mean-free signal)."""
     from . import squeal_fit
 
     t, y = np.asarray(t, float), np.asarray(y, float)
-    m = t >= 0.5 * (t[0] + t[-1])
+    m = t >= (0.5 * (t[0] + t[-1]) if start is None else start)
     step = max(1, int(m.sum()) // 400)  # the pencil's SVD is cubic in the samples: at most ~400 of them
     ys = y[m][::step]
     s, a = squeal_fit.pencil(ys - ys.mean(), step * (t[1] - t[0]), p=10)
@@ -193,11 +194,24 @@ def verdict_lines(v):
     return md + [""]
 
 
+def seed_response(j, cols):
+    """The seeded run's columns minus the unseeded run's (transient_base.csv, the same times), or None without it."""
+    if not os.path.exists(j("transient_base.csv")):
+        return None
+    rows = read_rows(j("transient_base.csv"))[1:]
+    base = {k: np.array([num(r[k]) for r in rows]) for k in cols if rows and k in rows[0]}
+    t = cols["t"]
+    if "t" not in base or len(base["t"]) != len(t) or np.max(np.abs(base["t"] - t)) > 1e-9 * max(1.0, abs(t[-1])):
+        return None
+    return {k: cols[k] - base[k] for k in cols if k != "t" and k in base}
+
+
 def transient_lines(j, v, signal, out):
     """The seeded transient's fit, the WAV and the spectrogram; returns the report's lines."""
     rows = read_rows(j("transient.csv"))[1:]  # without row 0: the state before the first contact solve (force 0)
     cols = {k: np.array([num(r[k]) for r in rows]) for k in rows[0] if k == "t" or k in lines.CARRIERS or k == signal}
     t, f0 = cols["t"], v["frequency"]
+    response = seed_response(j, cols)
     f_m = out["mesh_passing"] = lines.mesh_passing(j("transient.h5"))
     raw = heard_column(cols) if signal == "auto" else signal
     loud_raw = sound.loudest_line(cols[raw], 1.0 / (t[1] - t[0]), fmin=0.05 * f0, pad=8)
@@ -205,16 +219,24 @@ def transient_lines(j, v, signal, out):
     clean = {k: lines.notch(t, y, f_m, keep=f0) for k, y in cols.items() if k != "t"}
     signal = heard_column(clean) if signal == "auto" else signal
     out["signal"] = signal
-    column, y = lines.carrier(t, clean, f0, f_m)
-    fit = out["fit"] = dict(transient_fit(t, y, f0), column=column)
+    if response is not None:  # the seed's response: every line the start excites in both runs cancels
+        w = t >= t[0] + 1.0 / f0  # from one period on: the seed's own start (its static part) is left out
+        column, y = lines.carrier(t[w], {k: y[w] for k, y in response.items() if k in lines.CARRIERS}, f0, None)
+        fit = out["fit"] = dict(transient_fit(t[w], y, f0, start=t[w][0]), column=column, response=True)
+    else:
+        column, y = lines.carrier(t, clean, f0, f_m)
+        fit = out["fit"] = dict(transient_fit(t, y, f0), column=column, response=False)
     samples, rate = sound.audio_signal(t, clean[signal], v["seconds_per_unit"])
     sound.write_wav(j("squeal.wav"), samples, rate)
     heard = out["loudest_hz"] = sound.loudest_line(*sound.read_wav(j("squeal.wav")))
     sound.spectrogram_png(j("spectrogram.png"), samples, rate, v["pitch_hz"])
     out["files"] += ["squeal.wav", "spectrogram.png"]
     s = v["seconds_per_unit"]
+    how = ("the seed's response (the seeded run's column minus the unseeded run's, transient_base.csv) from one period "
+           "on" if fit["response"] else "the seeded run's second half (no unseeded run to subtract: transient_base.csv "
+           "missing, so every line the start excites is fitted too)")
     md = ["## Transient", "",
-          f"Seeded with the leading mode, fitted on the {column}: growth {fit['growth_rate']:.4g} (CEA "
+          f"Seeded with the leading mode, fitted on the {column}, {how}: growth {fit['growth_rate']:.4g} (CEA "
           f"{v['growth_rate']:.4g}), frequency {fit['frequency']:.5g} (CEA {f0:.5g}).", ""]
     if f_m:
         heard_at = f"{f_m / s:.1f} Hz" if s == 1 else f"{f_m:.5g} per unit of time, {f_m / s:.1f} Hz on the audio scale"

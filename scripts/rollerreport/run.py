@@ -7,7 +7,8 @@
 3. the seeded transient of the least stable mode (the largest growth rate): `-initial_condition mode` on the CEA's
    modes file (sections 4.2, 4.4), on the CEA's mesh (its /parameters mesh_h, mesh_h_contact, mesh_contact_layer and
    degree are given again: the accurate default mesh follows -ts_max_time), dt and duration from the mode's
-   frequency (--steps-per-period, --periods);
+   frequency (--steps-per-period, --periods); then the same run unseeded (transient_base.csv), so that the report
+   fits the seed's own response;
 4. scene.json from the scene (units, Kelvin-Voigt tau, friction, creep, the audio time scale);
 5. the report (rollerreport.report: report.md, report.json, map.png, squeal.wav, spectrogram.png, zones.gif),
    with every step's command (commands.json) so that each can be run again.
@@ -195,8 +196,31 @@ def transient_command(base, opts, a, extra, out, scene):
     return cmd + extra, what
 
 
+def base_command(cmd):
+    """The seeded transient's command unseeded (-ic_amplitude 0), its monitor into transient_base.csv, no fields: the
+    report fits the seed's own response, the seeded run's columns minus these (the start, the contact law settling
+    from the CEA's steady state, excites the same lines in both: docs/squeal.md 4.4.3)."""
+    out, k = [], 0
+    while k < len(cmd):
+        name = cmd[k]
+        if name in ("-output", "-output_every"):
+            k += 2
+            continue
+        if name in ("-ic_amplitude", "-monitor_csv", "-checkpoint") and k + 1 < len(cmd):
+            d = os.path.dirname(cmd[k + 1])
+            value = {"-ic_amplitude": "0", "-monitor_csv": os.path.join(d, "transient_base.csv"),
+                     "-checkpoint": os.path.join(d, "checkpoint_base.h5")}[name]
+            out += [name, value]
+            k += 2
+            continue
+        out.append(name)
+        k += 1
+    return out, "the same transient unseeded (-ic_amplitude 0): the report fits the seeded run minus this one"
+
+
 # what a run writes into OUTDIR: removed first, so that nothing of an earlier run is reported as this one's
-OUTPUTS = ("modes.csv", "modes.h5", "modes.xmf", "steady.csv", "sweep.csv", "transient.csv", "transient.h5", "transient.xmf",
+OUTPUTS = ("modes.csv", "modes.h5", "modes.xmf", "steady.csv", "sweep.csv", "transient.csv", "transient_base.csv", "transient.h5",
+           "transient.xmf",
            "scene.json", "commands.json", "report.md", "report.json", "map.png", "squeal.wav", "spectrogram.png",
            "zones.gif", "zones.mp4", "zones_strip.png")
 
@@ -252,7 +276,9 @@ def main(argv=None):
     if not a.no_map:
         steps.run("map", *map_command(base, scene, a, extra, out))
     if cea_ok:
-        steps.run("transient", *transient_command(base, opts, a, extra, out, scene))
+        seeded, what = transient_command(base, opts, a, extra, out, scene)
+        if steps.run("transient", seeded, what):
+            steps.run("transient_base", *base_command(seeded))
     with open(j("scene.json"), "w") as fh:
         json.dump(scene, fh, indent=1)
     cmd = ["env", f"PYTHONPATH={os.path.join(src, 'scripts')}", sys.executable, "-m", "rollerreport", out, "--signal", a.signal]

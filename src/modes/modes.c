@@ -11,7 +11,7 @@ PetscErrorCode RollerModesSetFromOptions(Roller ctx)
 {
   PetscFunctionBeginUser;
   ctx->eig.nev             = 20;
-  ctx->eig.slip_difference = ROLLER_SLIP_UPWIND2; /* box converges (docs/squeal.md 4.4.4); the report's fit must confirm it first */
+  ctx->eig.slip_difference = ROLLER_SLIP_BOX; /* the stick CEA converges with h_c (docs/squeal.md 4.4.4) */
   ctx->eig.skew_defect[0] = ctx->eig.skew_defect[1] = -1.0;
   PetscOptionsBegin(ctx->comm, NULL, "Roller: modes (docs/squeal.md); the eigensolver takes -pep_* and -st_* options (SLEPc PEP, TOAR, shift-and-invert about -pep_target 0)", NULL);
   PetscCall(PetscOptionsBool("-modes", "Compute the modes of the scene (the quadratic eigenproblem) instead of stepping", NULL, ctx->eig.on, &ctx->eig.on, NULL));
@@ -23,7 +23,7 @@ PetscErrorCode RollerModesSetFromOptions(Roller ctx)
                              &ctx->eig.stick_eps, NULL));
   PetscCall(PetscOptionsReal("-modes_stick_margin", "With -obstacle: a stick node whose friction is within this fraction of the cone, |T| > (1 - margin) mu N, is linearized as slipping (docs/squeal.md 4.4.2); 0: every stick node stuck", NULL,
                              ctx->eig.stick_margin, &ctx->eig.stick_margin, NULL));
-  PetscCall(PetscOptionsEnum("-modes_slip_difference", "With -obstacle: the steady state's slip along Gamma_C from the displacement at a candidate and its upstream neighbour (docs/squeal.md 3, 4.4.4): box (the slip at their midpoint: the stick CEA converges), upwind (at the candidate) or upwind2 (three points at the candidate: not monotone, fragmented stick zones; the default, for now)", "RollerSlipDifference", RollerSlipDifferences,
+  PetscCall(PetscOptionsEnum("-modes_slip_difference", "With -obstacle: the steady state's slip along Gamma_C from the displacement at a candidate and its upstream neighbour (docs/squeal.md 3, 4.4.4): box (the slip at their midpoint: the stick CEA converges), upwind (at the candidate) or upwind2 (three points at the candidate: not monotone, fragmented stick zones)", "RollerSlipDifference", RollerSlipDifferences,
                              (PetscEnum)ctx->eig.slip_difference, (PetscEnum *)&ctx->eig.slip_difference, NULL));
   PetscCall(PetscOptionsString("-modes_csv", "Eigenvalue CSV: re,im,frequency,growth_rate,order,wave,error", NULL, ctx->eig.csv, ctx->eig.csv, sizeof(ctx->eig.csv), NULL));
   PetscCall(PetscOptionsString("-modes_steady_csv", "With -obstacle: the steady state's contact nodes x,y,normal_force,tangential_force,gap,slip_velocity,mu,state", NULL, ctx->eig.steady_csv, ctx->eig.steady_csv, sizeof(ctx->eig.steady_csv), NULL));
