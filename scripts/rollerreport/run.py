@@ -199,7 +199,7 @@ def transient_command(base, opts, a, extra, out, scene):
 def base_command(cmd):
     """The seeded transient's command unseeded (-ic_amplitude 0), its monitor into transient_base.csv, no fields: the
     report fits the seed's own response, the seeded run's columns minus these (the start, the contact law settling
-    from the CEA's steady state, excites the same lines in both: docs/squeal.md 4.4.3)."""
+    from the CEA's steady state, excites the same lines in both: docs/squeal.md 4.4.1, 4.4.4)."""
     out, k = [], 0
     while k < len(cmd):
         name = cmd[k]
@@ -219,10 +219,9 @@ def base_command(cmd):
 
 
 # what a run writes into OUTDIR: removed first, so that nothing of an earlier run is reported as this one's
-OUTPUTS = ("modes.csv", "modes.h5", "modes.xmf", "steady.csv", "sweep.csv", "transient.csv", "transient_base.csv", "transient.h5",
-           "transient.xmf",
-           "scene.json", "commands.json", "report.md", "report.json", "map.png", "squeal.wav", "spectrogram.png",
-           "zones.gif", "zones.mp4", "zones_strip.png")
+OUTPUTS = ("modes.csv", "modes.h5", "modes.xmf", "steady.csv", "sweep.csv", "transient.csv", "transient_base.csv",
+           "transient.h5", "transient.xmf", "scene.json", "commands.json", "report.md", "report.json", "map.png",
+           "squeal.wav", "spectrogram.png", "zones.gif", "zones.mp4", "zones_strip.png")
 
 
 def parse(argv):
