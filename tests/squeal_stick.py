@@ -80,18 +80,14 @@ def modes_file(xi, hc):
 
 
 def agrees(label, g, w, t, U, windows):
-    """The fits of U on each window against the CEA's (g, w): growth within 20 % (pencil, envelope), frequency 1 %;
-    returns the fits."""
-    fits = []
+    """The fits of U on each window against the CEA's (g, w): growth within 20 % (pencil, envelope), frequency 1 %."""
     for t0, t1 in windows:
         f = fit(t, U, -w, t0, t1)
         gp, wp, ge = f["pencil_growth"], abs(f["pencil_frequency"]), f["envelope_growth"]
-        fits.append((gp, ge, wp))
         print(f"{label}, window {t0}-{t1}: CEA {g:.5f} @ {w:.5f}; pencil {gp:.5f} @ {wp:.5f}, envelope {ge:.5f}")
         c.check(abs(gp - g) < 0.2 * g, f"{label}, window {t0}-{t1}: growth (pencil) {gp:.5f} within 20 % of the CEA's {g:.5f}")
         c.check(abs(ge - g) < 0.2 * g, f"{label}, window {t0}-{t1}: growth (envelope) {ge:.5f} within 20 % of the CEA's {g:.5f}")
         c.check(abs(wp - w) < 0.01 * w, f"{label}, window {t0}-{t1}: frequency {wp:.5f} within 1 % of the CEA's {w:.5f}")
-    return fits
 
 
 def outputs(xi, hc):

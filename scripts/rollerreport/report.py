@@ -195,15 +195,16 @@ def verdict_lines(v):
 
 
 def seed_response(j, cols):
-    """The seeded run's columns minus the unseeded run's (transient_base.csv, the same times), or None without it."""
+    """(the seeded run's columns minus the unseeded run's, None) with transient_base.csv at the same times, else
+    (None, why it is not used)."""
     if not os.path.exists(j("transient_base.csv")):
-        return None
+        return None, "transient_base.csv missing"
     rows = read_rows(j("transient_base.csv"))[1:]
     base = {k: np.array([num(r[k]) for r in rows]) for k in cols if rows and k in rows[0]}
     t = cols["t"]
     if "t" not in base or len(base["t"]) != len(t) or np.max(np.abs(base["t"] - t)) > 1e-9 * max(1.0, abs(t[-1])):
-        return None
-    return {k: cols[k] - base[k] for k in cols if k != "t" and k in base}
+        return None, "transient_base.csv's times differ from transient.csv's"
+    return {k: cols[k] - base[k] for k in cols if k != "t" and k in base}, None
 
 
 def transient_lines(j, v, signal, out):
@@ -211,7 +212,7 @@ def transient_lines(j, v, signal, out):
     rows = read_rows(j("transient.csv"))[1:]  # without row 0: the state before the first contact solve (force 0)
     cols = {k: np.array([num(r[k]) for r in rows]) for k in rows[0] if k == "t" or k in lines.CARRIERS or k == signal}
     t, f0 = cols["t"], v["frequency"]
-    response = seed_response(j, cols)
+    response, unused = seed_response(j, cols)
     f_m = out["mesh_passing"] = lines.mesh_passing(j("transient.h5"))
     raw = heard_column(cols) if signal == "auto" else signal
     loud_raw = sound.loudest_line(cols[raw], 1.0 / (t[1] - t[0]), fmin=0.05 * f0, pad=8)
@@ -233,8 +234,8 @@ def transient_lines(j, v, signal, out):
     out["files"] += ["squeal.wav", "spectrogram.png"]
     s = v["seconds_per_unit"]
     how = ("the seed's response (the seeded run's column minus the unseeded run's, transient_base.csv) from one period "
-           "on" if fit["response"] else "the seeded run's second half (no unseeded run to subtract: transient_base.csv "
-           "missing, so every line the start excites is fitted too)")
+           "on" if fit["response"] else f"the seeded run's second half (no unseeded run to subtract: {unused}, so every "
+           "line the start excites is fitted too)")
     md = ["## Transient", "",
           f"Seeded with the leading mode, fitted on the {column}, {how}: growth {fit['growth_rate']:.4g} (CEA "
           f"{v['growth_rate']:.4g}), frequency {fit['frequency']:.5g} (CEA {f0:.5g}).", ""]

@@ -100,8 +100,7 @@ static PetscErrorCode Candidates(Roller ctx, PetscReal g, PetscReal reach, Rolle
    - upwind2: three points j, j -+ 1, j -+ 2, the parabola's derivative at j: second order but not monotone (the
      third point's weight has the other sign): at the stick/slip boundary, where the slip's derivative jumps, it
      leaves fragmented stick zones (stick, slip, stick, ..., differently on every mesh), and the CEA about them does
-     not converge with the contact mesh (docs/squeal.md 4.4.2, 4.4.4). The default (the reports' transient fit does
-     not yet confirm the mode box makes the feeder's least stable, docs/squeal.md 4.4.4).
+     not converge with the contact mesh (docs/squeal.md 4.4.2, 4.4.4); the default before box.
    The upstream end uses its downstream neighbour (and upwind2 the two points next to it). A central difference
    would leave the stick condition v_j = 0 blind to every other node (odd-even decoupling: the dual matrix of the
    stick zone singular). */
