@@ -70,6 +70,12 @@ typedef struct {
   PetscInt  iterations, fallback;
 } RollerStepFriction;
 
+/* The axle's columns of a step (docs/model.md section 8): the hub's lab-vertical displacement, its lab angular velocity,
+   the drive's torque on it, the sheet's speed. Without -axle: 0, theta'(t), the shaft's torque, -sheet_speed. */
+typedef struct {
+  PetscReal y, hub_rate, drive_torque, sheet_speed;
+} RollerStepAxle;
+
 /* What the diagnostics of one step give (docs/model.md section 6, CSV columns and extras). */
 typedef struct {
   PetscReal R, alpha, energy;
@@ -83,6 +89,7 @@ typedef struct {
   PetscInt           contact_flips, contact_reversals; /* Gamma_C nodes whose state (on the obstacle or not) changed from
                                                  t_{k-1} to t_k; of these, those back in their state of t_{k-2} */
   RollerStepFriction friction;
+  RollerStepAxle     axle;
 } RollerStepInfo;
 
 /* The context, split by lifetime and owner (docs/architecture.md). Each part is filled by the component
@@ -111,9 +118,13 @@ typedef struct {
   PetscReal viscosity; /* tau of Kelvin-Voigt damping sigma = C:(eps + tau eps_t) */
 } RollerMaterial;
 
-/* The driving rotation theta(t) = omega (t - t0) + a cos(b (t - t0)) from t0 = -theta_start on, theta = a before */
+/* The driving rotation theta(t) = omega (t - t0) + a cos(b (t - t0)) from t0 = -theta_start on, theta = a before; with
+   -drive_ramp T the speed rises smoothly from 0 to omega over [t0, t0 + T], and -drive_ripple adds the motor's ripple
+   ripple s(t) sin(2 pi f (t - t0)) (s the ramp's speed fraction) at -drive_ripple_frequency f (model/forcing.c). With -axle
+   this is the motor's angle; without, the hub's. */
 typedef struct {
   PetscReal omega, a, b, start;
+  PetscReal ramp, ripple, ripple_frequency;
 } RollerRotation;
 
 /* The obstacle (the sheet): height g(t) = min(speed t, depth) - r_outer, lab-frame position X(t) = sheet_speed t
@@ -124,6 +135,18 @@ typedef struct {
   PetscReal speed, depth, sheet_speed;
   PetscReal friction, friction_static, friction_decay;
 } RollerObstacle;
+
+/* The axle and drive (-axle, model/axle.c, docs/model.md section 8): the hub a rigid body that translates (mass,
+   vertical spring preloaded to the nip force per unit width, ramped in over nip_ramp, and a stiff horizontal spring: the
+   bracket) and turns (inertia), driven through a torsional spring and damper by the motor, whose angle is the
+   frame's theta(t). Off: the hub is clamped to theta(t), as before. hub: the rigid hub's coupling with the body and its
+   state (model/axle.h), NULL when off. */
+typedef struct {
+  PetscBool            on;
+  PetscReal            mass, inertia, stiffness, stiffness_x, nip_force, nip_ramp;
+  PetscReal            drive_stiffness, drive_damping;
+  struct _n_RollerHub *hub;
+} RollerAxle;
 
 /* The discretization choices (model/fe.c) */
 typedef struct {
@@ -157,10 +180,11 @@ typedef struct {
    makes it non-symmetric: LU), factored once. A scheme has one or a fixed few (integrate/scheme*.c); the contact
    layer keeps its condensation S = E^T A^{-1} E per operator, by id. */
 typedef struct {
-  Mat       A, A0, G; /* A0 = c_M M + c_K K and G: only with the centred Coriolis term (A = A0 - c_G G, re-made when theta' varies) */
-  KSP       ksp;
-  PetscReal c_M, c_K;
-  PetscInt  id;
+  Mat                     A, A0, G; /* A0 = c_M M + c_K K and G: only with the centred Coriolis term (A = A0 - c_G G, re-made when theta' varies) */
+  KSP                     ksp;
+  PetscReal               c_M, c_K;
+  PetscInt                id;
+  struct _n_RollerBorder *border; /* -axle: the hub's unknowns eliminated, A_eff = A - C D^{-1} C^T (model/border.c); NULL otherwise */
 } RollerStepOperator;
 
 /* Time stepping (integrate/timestep.c) */
@@ -245,6 +269,7 @@ struct _n_Roller {
   RollerMaterial       material;
   RollerRotation       rotation;
   RollerObstacle       obstacle;
+  RollerAxle           axle;
   RollerDiscretization disc;
   RollerOperators      ops;
   RollerTimeParams     ts;

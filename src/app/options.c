@@ -85,6 +85,7 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCheck(ctx->obstacle.friction_static == ctx->obstacle.friction || ctx->obstacle.friction_decay > 0, ctx->comm, PETSC_ERR_ARG_INCOMP, "-friction_static %g differs from -friction %g: give the slip speed of the weakening, -friction_decay v_c > 0",
              (double)ctx->obstacle.friction_static, (double)ctx->obstacle.friction);
   PetscCall(RollerMassSetFromOptions(ctx));
+  PetscCall(RollerAxleSetFromOptions(ctx));
 
   PetscCall(RollerTimeStepSetFromOptions(ctx));
   PetscCall(RollerInitialSetFromOptions(ctx));
@@ -133,6 +134,13 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
              RollerFrames[ctx->eig.frame]);
   PetscCheck(!(ctx->eig.on && ctx->disc.contact_mass != ROLLER_CONTACT_MASS_CONSISTENT), ctx->comm, PETSC_ERR_ARG_INCOMP, "-modes takes the consistent mass (-contact_mass consistent), not %s", RollerContactMasses[ctx->disc.contact_mass]);
   PetscCheck(!(ctx->eig.on && (ctx->rotation.a != 0 || ctx->ck.restart[0] || ctx->disc.static_solve)), ctx->comm, PETSC_ERR_ARG_INCOMP, "-modes linearizes about steady rotation: it takes no -theta_a, -restart or -static");
+  if (ctx->axle.on) { /* what the hub's elimination (model/axle.h) carries */
+    PetscCheck(!ctx->eig.on, ctx->comm, PETSC_ERR_SUP, "-axle with -modes: the steady state and the eigenproblem with the hub's unknowns are not built yet (docs/squeal.md section 10)");
+    PetscCheck(!ctx->disc.static_solve && !ctx->ck.restart[0] && ctx->init.mms == ROLLER_MMS_NONE, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes no -static, -restart or -mms");
+    PetscCheck(ctx->disc.coriolis != ROLLER_CORIOLIS_CENTERED, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes -coriolis_velocity backward or extrapolated, not centered");
+    PetscCheck(ctx->disc.contact_mass == ROLLER_CONTACT_MASS_CONSISTENT, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes the consistent mass (-contact_mass consistent), not %s", RollerContactMasses[ctx->disc.contact_mass]);
+    PetscCheck(!ctx->disc.clamp_outer, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle cannot be combined with -clamp_outer");
+  }
   if (ctx->disc.static_solve) { /* one step from rest to t = max_time with A = K: the right-hand side is 0 */
     ctx->ts.dt        = ctx->ts.max_time;
     ctx->ts.dt_set    = PETSC_TRUE; /* not the accurate default's dt */

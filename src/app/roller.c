@@ -13,6 +13,7 @@ PetscErrorCode RollerSetUp(Roller ctx)
   PetscCall(RollerGeometrySetUp(ctx));
   PetscCall(RollerDiscretizationSetUp(ctx));
   PetscCall(RollerOperatorsSetUp(ctx));
+  PetscCall(RollerAxleSetUp(ctx));
   PetscCall(RollerComputeBoundaryFunctionals(ctx));
   if (!ctx->eig.on) PetscCall(RollerCheckRotation(ctx)); /* the time step's limit; -modes maps past the critical speeds */
   PetscCall(RollerInitialState(ctx));
@@ -69,6 +70,7 @@ PetscErrorCode RollerDestroy(Roller *roller)
   PetscCall(RollerContactDestroy(&ctx->contact));
   PetscCall(RollerModesDestroy(ctx));
   PetscCall(RollerSchemesDestroy(ctx));
+  PetscCall(RollerAxleDestroy(ctx));
   PetscCall(MatDestroy(&ctx->ops.M));
   PetscCall(MatDestroy(&ctx->ops.K));
   PetscCall(MatDestroy(&ctx->ops.G));

@@ -99,6 +99,12 @@ static PetscErrorCode ContactSetFromOptions(Roller ctx, RollerContact c, char mo
     }
     SETERRQ(ctx->comm, PETSC_ERR_USER_INPUT, "-contact_solver %s: no such solver; allowed:%s", c->opt.solver, names);
   }
+  {
+    PetscBool match;
+
+    PetscCall(PetscStrcmp(c->opt.solver, "condensed", &match));
+    PetscCheck(!ctx->axle.on || (match && !c->opt.check), ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes -contact_solver condensed (the hub's unknowns are eliminated in its Schur complement), not %s%s", c->opt.solver, c->opt.check ? " or -contact_check" : "");
+  }
   PetscFunctionReturn(0);
 }
 

@@ -167,10 +167,10 @@ static PetscErrorCode FrictionData(Roller ctx, RollerContact c, const PetscReal 
     for (PetscInt b = 0; b < m; ++b) {
       const PetscInt j = cand[b];
 
-      fr->box.G[a + (size_t)b * m2]           = Entry(S, n, nr, nr, i, j);
-      fr->box.G[a + (size_t)(m + b) * m2]     = Entry(S, n, nr, tg, i, j);
-      fr->box.G[m + a + (size_t)b * m2]       = Entry(S, n, tg, nr, i, j);
-      fr->box.G[m + a + (size_t)(m + b) * m2] = Entry(S, n, tg, tg, i, j);
+      fr->box.G[a + (size_t)b * m2]           = Entry(S, n, nr, nr, i, j) + RollerContactBorderEntry(&c->step, nr, nr, i, j, n);
+      fr->box.G[a + (size_t)(m + b) * m2]     = Entry(S, n, nr, tg, i, j) + RollerContactBorderEntry(&c->step, nr, tg, i, j, n);
+      fr->box.G[m + a + (size_t)b * m2]       = Entry(S, n, tg, nr, i, j) + RollerContactBorderEntry(&c->step, tg, nr, i, j, n);
+      fr->box.G[m + a + (size_t)(m + b) * m2] = Entry(S, n, tg, tg, i, j) + RollerContactBorderEntry(&c->step, tg, tg, i, j, n);
     }
   }
   PetscCall(VecRestoreArrayRead(c->nodes.red, &uf));

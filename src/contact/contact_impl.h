@@ -114,7 +114,24 @@ typedef struct {
   PetscBool                *on_obstacle; /* nc: gap^{k-1}_n <= tol, the nodes on the obstacle at the previous level, from
                              xi^{k-1} (checkpointed state, so a restart takes the same decisions) */
   PetscInt                  resolves;
+  const PetscReal          *Yg; /* -axle: the Gamma_C rows of the step matrix's border Y (3 columns of 2 nc), NULL otherwise */
 } RollerContactStep;
+
+/* -axle: the hub's part of S_eff = E^T A_eff^{-1} E = S + Yg W Yg^T between the components u of node i and v of node j
+   (model/axle.h: the step's W); 0 without the hub. */
+static inline PetscReal RollerContactBorderEntry(const RollerContactStep *st, const PetscReal u[2], const PetscReal v[2], PetscInt i, PetscInt j, PetscInt n)
+{
+  PetscReal a[3], b[3], r = 0.0;
+
+  if (!st->Yg) return 0.0;
+  for (PetscInt k = 0; k < 3; ++k) {
+    a[k] = u[0] * st->Yg[k * n + 2 * i] + u[1] * st->Yg[k * n + 2 * i + 1];
+    b[k] = v[0] * st->Yg[k * n + 2 * j] + v[1] * st->Yg[k * n + 2 * j + 1];
+  }
+  for (PetscInt k = 0; k < 3; ++k)
+    for (PetscInt l = 0; l < 3; ++l) r += a[k] * st->op->border->W[3 * k + l] * b[l];
+  return r;
+}
 
 /* The accepted solution of the step: multipliers and iterations, the right-hand side it solved; work vectors
    of its KKT residual */

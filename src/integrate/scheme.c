@@ -82,6 +82,7 @@ PetscErrorCode RollerSchemeAddOperator(RollerScheme s, Roller ctx, PetscReal c_M
   PetscFunctionBeginUser;
   PetscCheck(s->nop < ROLLER_SCHEME_MAX_OPERATORS, ctx->comm, PETSC_ERR_SUP, "Time scheme %s: at most %d step matrices", s->name, ROLLER_SCHEME_MAX_OPERATORS);
   PetscCall(RollerStepOperatorCreate(ctx, c_M, c_K, G, c_G, s->nop, &s->op[s->nop]));
+  if (ctx->axle.on) PetscCall(RollerStepOperatorSetBorder(ctx, &s->op[s->nop])); /* the hub eliminated (model/axle.h) */
   if (ctx->contact) PetscCall(RollerContactPrepare(ctx, ctx->contact, &s->op[s->nop]));
   *op = &s->op[s->nop++];
   PetscFunctionReturn(0);

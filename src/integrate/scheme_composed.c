@@ -224,6 +224,7 @@ static PetscErrorCode ComposedUsable(RollerScheme s, Roller ctx, const char **wh
   PetscCall(PetscOptionsHasName(NULL, NULL, "-coriolis_velocity", &coriolis));
   if (ctx->obstacle.friction > 0) *why = "Coulomb friction cannot change sign in a composition's negative stage (a three-level scheme takes it)";
   else if (ctx->disc.static_solve) *why = "-static is the DMF's one step with A = K";
+  else if (ctx->axle.on) *why = "the hub's unknowns (-axle) are the three-level schemes'";
   else if (coriolis) *why = "-coriolis_velocity is the three-level schemes' (this one splits the Coriolis force off exactly)";
   PetscFunctionReturn(0);
 }

@@ -71,6 +71,16 @@ PETSC_INTERN PetscErrorCode RollerStageWorkCreate(Roller, RollerStageWork *);
 PETSC_INTERN PetscErrorCode RollerStageWorkDestroy(RollerStageWork *);
 PETSC_INTERN PetscErrorCode RollerSchemeStage(Roller, RollerStageWork *, RollerStepOperator *, PetscReal, PetscReal, PetscReal, PetscReal, PetscBool, Vec, Vec, Vec, Vec, Vec, Vec); /* h, t0, t1, delta, refresh M v, x0, M x0, K x0 -> x1, M x1, K x1 */
 
+/* scheme_hub.c: the hub's part of a three-level step (-axle, model/axle.h): after the body's right-hand side (op,
+   beta, t_{k-1}, the Coriolis velocity's coefficients, rhs, load, scratch), after the solve (the new body level), after
+   the levels moved up (the new cur); q's terms of the energy and the balance (beta) */
+PETSC_INTERN PetscErrorCode RollerHubSetUp(Roller);
+PETSC_INTERN PetscErrorCode RollerHubStepBegin(Roller, RollerStepOperator *, PetscReal, PetscReal, const PetscReal[3], Vec, Vec, Vec);
+PETSC_INTERN PetscErrorCode RollerHubStepEnd(Roller, RollerStepOperator *, PetscReal, Vec);
+PETSC_INTERN PetscErrorCode RollerHubShift(Roller, Vec);
+PETSC_INTERN PetscErrorCode RollerHubEnergy(Roller, PetscReal, PetscReal *);
+PETSC_INTERN PetscErrorCode RollerHubBalance(Roller, PetscReal, RollerStepInfo *);
+
 /* The schemes' create functions, for RollerSchemesRegisterAll */
 PETSC_INTERN PetscErrorCode RollerSchemeCreate_DMF(RollerScheme);
 PETSC_INTERN PetscErrorCode RollerSchemeCreate_Trapezoidal(RollerScheme);

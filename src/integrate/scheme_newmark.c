@@ -108,6 +108,16 @@ static PetscErrorCode RightHandSide(Roller ctx, Newmark *nm, Vec b)
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode HubStepBegin(Roller ctx, Newmark *nm, PetscReal t1)
+{
+  PetscReal c[3];
+
+  PetscFunctionBeginUser;
+  CoriolisVelocity(ctx, c);
+  PetscCall(RollerHubStepBegin(ctx, nm->op, nm->beta, t1, c, ctx->state.rhs, ctx->state.load, ctx->state.work));
+  PetscFunctionReturn(0);
+}
+
 /* Without contact (and the centred Coriolis term) the trapezoidal family solves for the second difference
    Delta = xi^k - 2 xi^{k-1} + xi^{k-2} (b - A (2 xi^{k-1} - xi^{k-2}), no scalar of dt in front of M):
      A Delta = F^{k-1} - K xi^{k-1} - tau/dt K (xi^{k-1} - xi^{k-2}) - eta/dt M (xi^{k-1} - xi^{k-2}).
@@ -146,6 +156,7 @@ static PetscErrorCode NewLevel(Roller ctx, Newmark *nm, PetscBool product)
       PetscCall(RollerContactForceVector(ctx->contact, ctx->state.Mcur));
       PetscCall(VecAXPY(ctx->state.Mcur, 1.0, ctx->state.rhs));
     } else PetscCall(VecCopy(ctx->state.rhs, ctx->state.Mcur));
+    if (op->border) PetscCall(VecMAXPY(ctx->state.Mcur, 3, ctx->axle.hub->s.delta, op->border->C)); /* b = b_eff + C Dz b_q, minus C q^k */
     PetscCall(VecAXPBY(ctx->state.Mcur, -op->c_K / op->c_M, 1.0 / op->c_M, ctx->state.Kcur));
   }
   PetscCall(VecWAXPY(ctx->state.velocity, -1.0, ctx->state.prev, ctx->state.cur));
@@ -159,7 +170,7 @@ static PetscErrorCode NewmarkStep(RollerScheme s, Roller ctx)
 {
   Newmark        *nm = (Newmark *)s->data;
   const PetscReal dt = ctx->ts.dt, t1 = ctx->state.step * dt, t = (ctx->state.step + 1) * dt;
-  const PetscBool second = (PetscBool)(nm->beta != 0.5 && !ctx->contact && !nm->op->G && nm->op->c_M != 0);
+  const PetscBool second = (PetscBool)(nm->beta != 0.5 && !ctx->contact && !nm->op->G && nm->op->c_M != 0 && !ctx->axle.on);
   Vec             tmp;
   PetscReal       norm;
 
@@ -180,6 +191,7 @@ static PetscErrorCode NewmarkStep(RollerScheme s, Roller ctx)
     PetscCall(VecAXPY(ctx->state.load, 1.0, ctx->state.next));
   }
   if (second) PetscCall(RightHandSideSecondDifference(ctx, nm, ctx->state.rhs));
+  if (ctx->axle.on) PetscCall(HubStepBegin(ctx, nm, t1)); /* the hub's load, history and elimination (scheme_hub.c) */
   if (ctx->contact) {
     const RollerContactStage stage = {
       nm->op, ctx->state.time, ctx->state.cur, ctx->state.prev, {2.0, -1.0},
@@ -206,6 +218,7 @@ static PetscErrorCode NewmarkStep(RollerScheme s, Roller ctx)
   PetscCall(VecNorm(ctx->state.next, NORM_INFINITY, &norm));
   PetscCheck(!PetscIsInfOrNanReal(norm), ctx->comm, PETSC_ERR_FP, "The solution is not finite at step %" PetscInt_FMT ", t = %g; the last good state (step %" PetscInt_FMT ") is in the checkpoint %s", ctx->state.step + 1, (double)t, ctx->state.step,
              ctx->ck.file);
+  if (ctx->axle.on) PetscCall(RollerHubStepEnd(ctx, nm->op, nm->beta, ctx->state.next));
   tmp               = ctx->state.prev2;
   ctx->state.prev2  = ctx->state.prev;
   ctx->state.prev   = ctx->state.cur;
@@ -216,6 +229,7 @@ static PetscErrorCode NewmarkStep(RollerScheme s, Roller ctx)
   ctx->state.Kprev  = ctx->state.Kcur;
   ctx->state.Kcur   = tmp;
   PetscCall(NewLevel(ctx, nm, second));
+  if (ctx->axle.on) PetscCall(RollerHubShift(ctx, ctx->state.cur));
   ctx->state.step++;
   ctx->state.time = ctx->state.step * dt;
   PetscFunctionReturn(0);
@@ -245,6 +259,7 @@ static PetscErrorCode NewmarkEnergy(RollerScheme s, Roller ctx, PetscReal *energ
   PetscCall(VecDot(ctx->state.prev, ctx->state.Kprev, &pot2));
   if (nm->beta != 0.5) PetscCall(VecDot(ctx->state.cur, ctx->state.Kprev, &cross));
   *energy = 0.5 * ctx->material.density * nm->kinetic / (dt * dt) + 0.5 * nm->beta * PetscRealPart(pot1 + pot2) + 0.5 * (1.0 - 2.0 * nm->beta) * PetscRealPart(cross);
+  if (ctx->axle.on) PetscCall(RollerHubEnergy(ctx, nm->beta, energy)); /* adds q's terms */
   PetscFunctionReturn(0);
 }
 
@@ -274,6 +289,7 @@ static PetscErrorCode NewmarkBalance(RollerScheme s, Roller ctx, RollerStepInfo 
     info->viscous_dissipation = ctx->material.viscosity / (4.0 * dt) * PetscRealPart(dot);
   }
   if (ctx->contact) PetscCall(RollerContactEnergyAdd(ctx, ctx->contact, ctx->state.prev2, ctx->state.time - 2.0 * dt, 0.5, info));
+  if (ctx->axle.on) PetscCall(RollerHubBalance(ctx, nm->beta, info));
   PetscFunctionReturn(0);
 }
 
@@ -318,6 +334,7 @@ static PetscErrorCode NewmarkSetUp(RollerScheme s, Roller ctx)
   PetscCall(VecWAXPY(ctx->state.velocity, -1.0, ctx->state.prev, ctx->state.cur));
   PetscCall(VecScale(ctx->state.velocity, 1.0 / dt));
   nm->kinetic_step = -1;
+  if (ctx->axle.on) PetscCall(RollerHubSetUp(ctx));
   PetscFunctionReturn(0);
 }
 

@@ -14,6 +14,7 @@
 
 #include <roller_impl.h>
 #include "mesh/mesh.h"
+#include "model/axle.h"
 
 /* material.c */
 PETSC_INTERN PetscErrorCode RollerMaterialSetFromOptions(Roller);
@@ -32,6 +33,7 @@ PETSC_INTERN PetscErrorCode RollerApplyRotation(Vec, PetscReal, Vec); /* cos(phi
 PETSC_INTERN PetscErrorCode RollerDiscretizationSetFromOptions(Roller);
 PETSC_INTERN PetscErrorCode RollerDiscretizationSetUp(Roller);
 PETSC_INTERN PetscErrorCode RollerOperatorDMCreate(Roller, PetscFE, DM *); /* a clone of ctx->mesh.dm with an empty DS of its own */
+PETSC_INTERN PetscErrorCode RollerUnconstrainedDMCreate(Roller, DM *);     /* the same space without the Dirichlet boundary (axle.c) */
 
 /* operators.c */
 PETSC_INTERN PetscErrorCode RollerOperatorsSetUp(Roller);
