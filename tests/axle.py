@@ -1,4 +1,4 @@
-"""The axle and the drive (-axle, docs/model.md section 8; issue 36): the hub a rigid body on a vertical spring
+"""The axle and the drive (-axle, docs/model.md section 10; issue 36): the hub a rigid body on a vertical spring
 preloaded to -nip_force and driven through a torsional spring and damper by the motor.
 
 1. Stiff-rubber limit (E = 1000 x the paper's, the body nearly rigid), no obstacle: the drive's torsional frequency

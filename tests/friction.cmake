@@ -19,6 +19,6 @@ roller_test(friction_stickslip friction_stickslip.py LABELS long TIMEOUT 1200)
 # the printer roller's 10 ms transient with its steep velocity weakening (jobs/printer_roller.yaml, SI): feeding and
 # the jam, Newton on >= 98 % of the steps, the rest with mu of the last step (docs/friction.md section 3; about 1 min)
 roller_test(friction_printer friction_printer.py LABELS long TIMEOUT 1200)
-# the axle and the drive (-axle, docs/model.md section 8): torsion and bounce in the stiff-rubber limit, the ripple's
+# the axle and the drive (-axle, docs/model.md section 10): torsion and bounce in the stiff-rubber limit, the ripple's
 # forced response, the nip force against -static, the energy balance of rolling on the axle, 1 and 2 ranks
 roller_test(axle axle.py LABELS quick mpi PROCESSORS 2 TIMEOUT 600)

@@ -66,7 +66,7 @@ PetscErrorCode RollerStepAccumulate(Roller ctx)
   PetscFunctionReturn(0);
 }
 
-/* The axle's columns (docs/model.md section 8). With -axle the motor (the frame's theta) exerts the drive's torque
+/* The axle's columns (docs/model.md section 10). With -axle the motor (the frame's theta) exerts the drive's torque
    -k_d phi - c_d phi' on the hub, which is then the shaft's torque too; the hub turns at theta' + phi'. */
 static PetscErrorCode AxleColumns(Roller ctx, RollerStepInfo *info)
 {

@@ -1,4 +1,4 @@
-/* The hub's part of a three-level step (-axle, docs/model.md section 8; model/axle.h): the bordered system
+/* The hub's part of a three-level step (-axle, docs/model.md section 10; model/axle.h): the bordered system
      [[A, C], [C^T, D_A]] (xi^k, q^k) = (b, b_q) + (E N lambda, reaction),   q^k = Z p (u along the lab's vertical),
    with C = c_M C_M + c_K C_K, D_A = c_M D_M + H/dt^2 + c_K D_K + beta S + c_d/(2 dt) e_phi e_phi^T (H the hub's mass and
    inertia, S its springs, c_d the drive's damper), eliminated: the body's step is the usual one with A_eff = A - C Dz C^T

@@ -1,4 +1,4 @@
-/* The axle and the drive (-axle, docs/model.md section 8): the options, the hub's coupling with the body (the bordered
+/* The axle and the drive (-axle, docs/model.md section 10): the options, the hub's coupling with the body (the bordered
    mass and stiffness of model/axle.h, computed once), its springs and the forces on it. */
 #include "model/model.h"
 #include "model/kernels.h"
@@ -9,7 +9,7 @@ PetscErrorCode RollerAxleSetFromOptions(Roller ctx)
 
   PetscFunctionBeginUser;
   ax->nip_ramp = ctx->obstacle.speed > 0 ? ctx->obstacle.depth / ctx->obstacle.speed : 0.0;
-  PetscOptionsBegin(ctx->comm, NULL, "Roller: the axle and the drive (-axle; docs/model.md section 8)", NULL);
+  PetscOptionsBegin(ctx->comm, NULL, "Roller: the axle and the drive (-axle; docs/model.md section 10)", NULL);
   PetscCall(PetscOptionsBool("-axle", "The hub a rigid body on a vertical spring preloaded to -nip_force, driven through a torsional spring and damper (off: the hub turns exactly at theta(t), the sheet at -obstacle_depth)", NULL, ax->on, &ax->on, NULL));
   PetscCall(PetscOptionsReal("-axle_mass", "Mass of the hub, shaft and bracket per unit width (0: the rubber body's own mass)", NULL, ax->mass, &ax->mass, NULL));
   PetscCall(PetscOptionsReal("-axle_inertia", "Polar inertia per unit width of the hub, shaft, gears and the motor's referred to the roller (0: the rubber body's own)", NULL, ax->inertia, &ax->inertia, NULL));

@@ -1,4 +1,4 @@
-/* The rigid hub on its axle and drive (-axle, docs/model.md section 8), private to the model, integrate and contact
+/* The rigid hub on its axle and drive (-axle, docs/model.md section 10), private to the model, integrate and contact
    layers. The body's displacement xi lives on the free nodes as without -axle (the frame is the motor's, theta(t));
    the hub's motion q = (u1, u2, phi) moves the Gamma_D nodes rigidly, xi = u + phi J x there (J x = (-x2, x1), the
    translation u in the frame's components, phi the hub's rotation against the motor), so the step's unknowns are
