@@ -76,12 +76,12 @@ PetscErrorCode RollerSchemeDestroy(RollerScheme *scheme)
   PetscFunctionReturn(0);
 }
 
-/* A step matrix c_M M + c_K K (- c_G G) of the scheme, factored, and made known to the contact solver. */
-PetscErrorCode RollerSchemeAddOperator(RollerScheme s, Roller ctx, PetscReal c_M, PetscReal c_K, Mat G, PetscReal c_G, RollerStepOperator **op)
+/* A step matrix c_M M + c_K K + c_D K_d (- c_G G) of the scheme, factored, and made known to the contact solver. */
+PetscErrorCode RollerSchemeAddOperator(RollerScheme s, Roller ctx, PetscReal c_M, PetscReal c_K, PetscReal c_D, Mat G, PetscReal c_G, RollerStepOperator **op)
 {
   PetscFunctionBeginUser;
   PetscCheck(s->nop < ROLLER_SCHEME_MAX_OPERATORS, ctx->comm, PETSC_ERR_SUP, "Time scheme %s: at most %d step matrices", s->name, ROLLER_SCHEME_MAX_OPERATORS);
-  PetscCall(RollerStepOperatorCreate(ctx, c_M, c_K, G, c_G, s->nop, &s->op[s->nop]));
+  PetscCall(RollerStepOperatorCreate(ctx, c_M, c_K, c_D, G, c_G, s->nop, &s->op[s->nop]));
   if (ctx->contact) PetscCall(RollerContactPrepare(ctx, ctx->contact, &s->op[s->nop]));
   *op = &s->op[s->nop++];
   PetscFunctionReturn(0);
@@ -214,6 +214,7 @@ PetscErrorCode RollerSchemeChoose(Roller ctx)
     if (!ctx->ts.scheme[0] && !why && (best < 0 || cost[k] < cost[best])) best = k;
   }
   PetscCheck(best >= 0, ctx->comm, PETSC_ERR_ARG_WRONG, "-ts_scheme %s: no such scheme (see -help)", ctx->ts.scheme);
+  PetscCheck(ctx->material.rubber != ROLLER_RUBBER_MAXWELL, ctx->comm, PETSC_ERR_SUP, "-rubber maxwell: the time step does not carry the branches yet");
   ctx->scheme = ctx->ts.schemes[best];
   if (!ctx->ts.dt_set) { /* a whole number of steps to -ts_max_time, none longer than the rule's */
     const PetscReal n = PetscCeilReal(ctx->ts.max_time / dt[best] - 1e-9);
@@ -229,6 +230,12 @@ PetscErrorCode RollerSchemeChoose(Roller ctx)
     if (ctx->scheme->ops->view) PetscCall((*ctx->scheme->ops->view)(ctx->scheme, ctx, PETSC_VIEWER_STDOUT_(ctx->comm)));
     PetscCall(PetscPrintf(ctx->comm, "\nroller: radial modes carrying R: w = %g (%.3f of R), %g (%.3f), %g (%.3f), ...; torsional mode w_t = %g (period %g); end time %g; R's time error, the modes' phase errors (T/dt) phase(w dt) weighted: %.3g (target -ts_phase_error/2 = %g)\n",
                           (double)md.w[0], (double)md.a[0], (double)md.w[1], (double)md.a[1], (double)md.w[2], (double)md.a[2], (double)w_t, (double)(2 * PETSC_PI / w_t), (double)T, (double)e, (double)(0.5 * ctx->ts.phase_error)));
+    {
+      const PetscReal   wm[2]   = {w_t, w_b};
+      const char *const what[2] = {"the torsional mode", "the breathing mode"};
+
+      PetscCall(RollerRubberView(ctx, 2, wm, what));
+    }
     PetscCall(PetscPrintf(ctx->comm, "roller: solves to reach t = %g at the target:", (double)T));
     for (PetscInt k = 0; k < ctx->ts.nschemes; ++k) {
       const char *why;

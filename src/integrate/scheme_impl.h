@@ -55,7 +55,7 @@ PETSC_INTERN PetscFunctionList RollerSchemeList;
 /* scheme.c */
 PETSC_INTERN PetscErrorCode RollerSchemeCreate(const char[], RollerScheme *);
 PETSC_INTERN PetscErrorCode RollerSchemeDestroy(RollerScheme *);
-PETSC_INTERN PetscErrorCode RollerSchemeAddOperator(RollerScheme, Roller, PetscReal, PetscReal, Mat, PetscReal, RollerStepOperator **); /* c_M, c_K, G, c_G */
+PETSC_INTERN PetscErrorCode RollerSchemeAddOperator(RollerScheme, Roller, PetscReal, PetscReal, PetscReal, Mat, PetscReal, RollerStepOperator **); /* c_M, c_K, c_D, G, c_G */
 
 /* scheme_stage.c: a stage of the one-step scheme. Its velocity v and M v (V, MV: the step's working copies, committed
    at the step's end), scratch, the loads at t0 and t1 (L0 at time tL0 is reused when the next stage starts there),

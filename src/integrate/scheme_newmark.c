@@ -302,12 +302,12 @@ static PetscErrorCode NewmarkSetUp(RollerScheme s, Roller ctx)
   const PetscReal dt = ctx->ts.dt, rho = ctx->material.density;
 
   PetscFunctionBeginUser;
-  if (ctx->disc.static_solve) PetscCall(RollerSchemeAddOperator(s, ctx, 0.0, 1.0, NULL, 0.0, &nm->op));
+  if (ctx->disc.static_solve) PetscCall(RollerSchemeAddOperator(s, ctx, 0.0, 1.0, 0.0, NULL, 0.0, &nm->op));
   else {
     PetscReal td0;
 
     RollerTheta(ctx, 0.0, NULL, &td0, NULL); /* centred Coriolis: theta'(0), re-made every step only if theta' varies */
-    PetscCall(RollerSchemeAddOperator(s, ctx, rho / (dt * dt) + ctx->disc.damping / (2.0 * dt), nm->beta + ctx->material.viscosity / (2.0 * dt), ctx->ops.G, rho * td0 / dt, &nm->op));
+    PetscCall(RollerSchemeAddOperator(s, ctx, rho / (dt * dt) + ctx->disc.damping / (2.0 * dt), nm->beta + ctx->material.viscosity / (2.0 * dt), 0.0, ctx->ops.G, rho * td0 / dt, &nm->op));
   }
   PetscCall(VecDuplicate(ctx->state.cur, &nm->Mprev));
   PetscCall(VecDuplicate(ctx->state.cur, &nm->Mprev2));

@@ -50,20 +50,23 @@ static PetscErrorCode LowestRoot(Roller ctx, Determinant det, const char *what, 
 {
   const PetscReal ri = ctx->mesh.r_inner, ro = ctx->mesh.r_outer, L = ro - ri;
   const PetscInt  n = 4000;
-  PetscReal       a = 1e-3 / L, fa = det(a, ri, ro, ctx->material.lambda, ctx->material.mu), b = a, fb = fa;
+  PetscReal       lambda, mu, a, fa, b, fb;
   PetscInt        i;
 
   PetscFunctionBeginUser;
+  RollerRubberInstantaneous(&ctx->material, &lambda, &mu);
+  a = b = 1e-3 / L;
+  fa = fb = det(a, ri, ro, lambda, mu);
   for (i = 1; i <= n; i++) {
     b  = 40.0 * i / (n * L);
-    fb = det(b, ri, ro, ctx->material.lambda, ctx->material.mu);
+    fb = det(b, ri, ro, lambda, mu);
     if ((fa < 0) != (fb < 0)) break;
     a  = b;
     fa = fb;
   }
   PetscCheck(i <= n, ctx->comm, PETSC_ERR_PLIB, "No %s mode found below k = %g for -r_inner %g -r_outer %g", what, (double)(40.0 / L), (double)ri, (double)ro);
   for (i = 0; i < 100 && b - a > 1e-15 * b; i++) {
-    const PetscReal m = 0.5 * (a + b), fm = det(m, ri, ro, ctx->material.lambda, ctx->material.mu);
+    const PetscReal m = 0.5 * (a + b), fm = det(m, ri, ro, lambda, mu);
 
     if ((fa < 0) == (fm < 0)) {
       a  = m;
@@ -75,14 +78,18 @@ static PetscErrorCode LowestRoot(Roller ctx, Determinant det, const char *what, 
 }
 
 /* Angular frequencies of the breathing (P) and torsional (S) modes of the annulus at rest, computed when the
-   radii are not those of the last computation (the material is set once, before either). */
+   radii are not those of the last computation (the material is set once, before either). With -rubber maxwell, of the
+   instantaneous (unrelaxed) solid: the highest the modes reach, at frequencies far above the branches' 1/tau_i (the
+   time step's phase error is that of the fastest mode; docs/model.md section 6.2). */
 PetscErrorCode RollerModeFrequencies(Roller ctx, PetscReal *w_breathing, PetscReal *w_torsion)
 {
-  const PetscReal c_p = PetscSqrtReal((ctx->material.lambda + 2 * ctx->material.mu) / ctx->material.density), c_s = PetscSqrtReal(ctx->material.mu / ctx->material.density);
-  RollerModes    *modes = &ctx->modes;
-  PetscReal       k;
+  RollerModes *modes = &ctx->modes;
+  PetscReal    k, lambda, mu, c_p, c_s;
 
   PetscFunctionBeginUser;
+  RollerRubberInstantaneous(&ctx->material, &lambda, &mu);
+  c_p = PetscSqrtReal((lambda + 2 * mu) / ctx->material.density);
+  c_s = PetscSqrtReal(mu / ctx->material.density);
   if (modes->r_inner != ctx->mesh.r_inner || modes->r_outer != ctx->mesh.r_outer) {
     PetscCall(LowestRoot(ctx, BreathingDeterminant, "radial breathing", &k));
     modes->breathing = k * c_p;
@@ -104,23 +111,25 @@ PetscErrorCode RollerModeFrequencies(Roller ctx, PetscReal *w_breathing, PetscRe
    scheme's error is then set by the second and third modes as much as by the first. */
 PetscErrorCode RollerRadialModes(Roller ctx, PetscInt nmax, PetscReal w[], PetscReal a[], PetscInt *n)
 {
-  const PetscReal ri = ctx->mesh.r_inner, ro = ctx->mesh.r_outer, L = ro - ri, c_p = PetscSqrtReal((ctx->material.lambda + 2 * ctx->material.mu) / ctx->material.density);
+  const PetscReal ri = ctx->mesh.r_inner, ro = ctx->mesh.r_outer, L = ro - ri;
   const PetscInt  nq = 200, nscan = 40000;
-  PetscReal      *xq, *wq, k0 = 1e-3 / L, f0, sum = 0.0;
+  PetscReal      *xq, *wq, k0 = 1e-3 / L, f0, sum = 0.0, lambda, mu, c_p;
 
   PetscFunctionBeginUser;
+  RollerRubberInstantaneous(&ctx->material, &lambda, &mu); /* the unrelaxed solid's, as RollerModeFrequencies */
+  c_p = PetscSqrtReal((lambda + 2 * mu) / ctx->material.density);
   PetscCall(PetscMalloc2(nq, &xq, nq, &wq));
   PetscCall(PetscDTGaussQuadrature(nq, ri, ro, xq, wq));
-  f0 = BreathingDeterminant(k0, ri, ro, ctx->material.lambda, ctx->material.mu);
+  f0 = BreathingDeterminant(k0, ri, ro, lambda, mu);
   *n = 0;
   for (PetscInt i = 1; i <= nscan && *n < nmax; i++) {
-    const PetscReal k1 = (PetscReal)i * 4.0 * nmax / (nscan * L), f1 = BreathingDeterminant(k1, ri, ro, ctx->material.lambda, ctx->material.mu);
+    const PetscReal k1 = (PetscReal)i * 4.0 * nmax / (nscan * L), f1 = BreathingDeterminant(k1, ri, ro, lambda, mu);
 
     if ((f0 < 0) != (f1 < 0)) {
       PetscReal lo = k0, hi = k1, flo = f0, k, B, m = 0.0, F = 0.0;
 
       for (PetscInt it = 0; it < 100 && hi - lo > 1e-14 * hi; it++) {
-        const PetscReal mid = 0.5 * (lo + hi), fm = BreathingDeterminant(mid, ri, ro, ctx->material.lambda, ctx->material.mu);
+        const PetscReal mid = 0.5 * (lo + hi), fm = BreathingDeterminant(mid, ri, ro, lambda, mu);
 
         if ((flo < 0) == (fm < 0)) {
           lo  = mid;
