@@ -208,13 +208,12 @@ PetscErrorCode RollerSchemeChoose(Roller ctx)
     if (named) {
       PetscCheck(!why, ctx->comm, PETSC_ERR_ARG_INCOMP, "-ts_scheme %s: %s", s->name, why);
       best = k;
-      break;
+      continue; /* the others' dt and cost still computed: -ts_view lists them */
     }
     if (!why && s->ops->by_default) PetscCall((*s->ops->by_default)(s, ctx, &why));
     if (!ctx->ts.scheme[0] && !why && (best < 0 || cost[k] < cost[best])) best = k;
   }
   PetscCheck(best >= 0, ctx->comm, PETSC_ERR_ARG_WRONG, "-ts_scheme %s: no such scheme (see -help)", ctx->ts.scheme);
-  PetscCheck(ctx->material.rubber != ROLLER_RUBBER_MAXWELL, ctx->comm, PETSC_ERR_SUP, "-rubber maxwell: the time step does not carry the branches yet");
   ctx->scheme = ctx->ts.schemes[best];
   if (!ctx->ts.dt_set) { /* a whole number of steps to -ts_max_time, none longer than the rule's */
     const PetscReal n = PetscCeilReal(ctx->ts.max_time / dt[best] - 1e-9);
@@ -228,11 +227,12 @@ PetscErrorCode RollerSchemeChoose(Roller ctx)
                           ctx->mesh.file[0] ? "mesh file, not" : (ctx->mesh.h_set ? (ctx->mesh.h_restart ? "from the checkpoint" : "given") : "from -ts_phase_error:"), (double)ctx->mesh.h, ctx->scheme->name, ctx->ts.scheme[0] ? "given" : "the fewest solves",
                           ctx->scheme->order, ctx->scheme->stages, ctx->scheme->stages > 1 ? "s" : "", (double)ctx->ts.dt, ctx->ts.dt_restart ? "from the checkpoint" : (ctx->ts.dt_set ? "given" : "from -ts_phase_error")));
     if (ctx->scheme->ops->view) PetscCall((*ctx->scheme->ops->view)(ctx->scheme, ctx, PETSC_VIEWER_STDOUT_(ctx->comm)));
-    PetscCall(PetscPrintf(ctx->comm, "\nroller: radial modes carrying R: w = %g (%.3f of R), %g (%.3f), %g (%.3f), ...; torsional mode w_t = %g (period %g); end time %g; R's time error, the modes' phase errors (T/dt) phase(w dt) weighted: %.3g (target -ts_phase_error/2 = %g)\n",
-                          (double)md.w[0], (double)md.a[0], (double)md.w[1], (double)md.a[1], (double)md.w[2], (double)md.a[2], (double)w_t, (double)(2 * PETSC_PI / w_t), (double)T, (double)e, (double)(0.5 * ctx->ts.phase_error)));
+    PetscCall(PetscPrintf(ctx->comm, "\nroller: radial modes carrying R%s: w = %g (%.3f of R), %g (%.3f), %g (%.3f), ...; torsional mode w_t = %g (period %g); end time %g; R's time error, the modes' phase errors (T/dt) phase(w dt) weighted: %.3g (target -ts_phase_error/2 = %g)\n",
+                          ctx->material.rubber == ROLLER_RUBBER_MAXWELL ? " (the instantaneous moduli' modes: the fastest the rubber's reach)" : "", (double)md.w[0], (double)md.a[0], (double)md.w[1], (double)md.a[1], (double)md.w[2], (double)md.a[2], (double)w_t, (double)(2 * PETSC_PI / w_t), (double)T, (double)e,
+                          (double)(0.5 * ctx->ts.phase_error)));
     {
       const PetscReal   wm[2]   = {w_t, w_b};
-      const char *const what[2] = {"the torsional mode", "the breathing mode"};
+      const char *const what[2] = {"the (instantaneous) torsional mode", "the (instantaneous) breathing mode"};
 
       PetscCall(RollerRubberView(ctx, 2, wm, what));
     }

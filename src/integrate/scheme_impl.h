@@ -6,6 +6,7 @@
      scheme.c           the registry, the options block, the default (the scheme that meets -ts_phase_error at the
                         least cost), the step count and dt rule, -ts_view, the dispatch
      scheme_newmark.c   the three-level schemes: dmf (Newmark beta = 1/2, the paper's) and trapezoidal (beta = 1/4)
+     scheme_maxwell.c   their generalized Maxwell branches (-rubber maxwell)
      scheme_stage.c     the one-step trapezoidal stage with the rotational terms split off (Strang)
      scheme_composed.c  its symmetric compositions: fourth order (Suzuki, Yoshida) */
 #ifndef ROLLER_SCHEME_IMPL_H
@@ -70,6 +71,18 @@ typedef struct {
 PETSC_INTERN PetscErrorCode RollerStageWorkCreate(Roller, RollerStageWork *);
 PETSC_INTERN PetscErrorCode RollerStageWorkDestroy(RollerStageWork *);
 PETSC_INTERN PetscErrorCode RollerSchemeStage(Roller, RollerStageWork *, RollerStepOperator *, PetscReal, PetscReal, PetscReal, PetscReal, PetscBool, Vec, Vec, Vec, Vec, Vec, Vec); /* h, t0, t1, delta, refresh M v, x0, M x0, K x0 -> x1, M x1, K x1 */
+
+/* scheme_maxwell.c: the Maxwell branches of the three-level schemes (-rubber maxwell; NULL without) */
+typedef struct _n_RollerMaxwell *RollerMaxwell;
+PETSC_INTERN PetscErrorCode RollerMaxwellCreate(Roller, PetscReal, RollerMaxwell *); /* beta */
+PETSC_INTERN PetscReal      RollerMaxwellStiffness(RollerMaxwell);                    /* c_D of the step matrix (0 for NULL) */
+PETSC_INTERN Vec            RollerMaxwellKdCur(RollerMaxwell);                        /* K_d xi^k */
+PETSC_INTERN PetscErrorCode RollerMaxwellRightHandSide(RollerMaxwell, PetscBool, Vec); /* second difference?, b */
+PETSC_INTERN PetscErrorCode RollerMaxwellNewLevel(RollerMaxwell, Roller);
+PETSC_INTERN PetscReal      RollerMaxwellDissipation(RollerMaxwell, Roller);
+PETSC_INTERN PetscErrorCode RollerMaxwellEnergyAdd(RollerMaxwell, Roller, PetscReal *);
+PETSC_INTERN PetscErrorCode RollerMaxwellKept(RollerMaxwell, PetscInt *, Vec[], const char *[]);
+PETSC_INTERN PetscErrorCode RollerMaxwellDestroy(RollerMaxwell *);
 
 /* The schemes' create functions, for RollerSchemesRegisterAll */
 PETSC_INTERN PetscErrorCode RollerSchemeCreate_DMF(RollerScheme);

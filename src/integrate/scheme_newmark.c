@@ -1,18 +1,17 @@
-/* The three-level schemes (docs/model.md sections 2 and 2.1): Newmark with gamma = 1/2 in three-level form,
+/* The three-level schemes (docs/model.md sections 2, 2.1, 2.2): Newmark with gamma = 1/2 in three-level form,
      rho (xi^k - 2 xi^{k-1} + xi^{k-2})/dt^2 + K (beta xi^k + (1 - 2 beta) xi^{k-1} + beta xi^{k-2})
        + eta M (xi^k - xi^{k-2})/(2 dt) + tau K (xi^k - xi^{k-2})/(2 dt) = F^{k-1} (+ the contact force at t_k),
-   each step the minimization of a convex quadratic with the constant SPD matrix
-     A = rho/dt^2 M + (beta + tau/(2 dt)) K + eta/(2 dt) M:
+   (+ the Maxwell branches' forces, scheme_maxwell.c), each step the minimization of a convex quadratic with the
+   constant SPD matrix A = rho/dt^2 M + (beta + tau/(2 dt)) K + eta/(2 dt) M (+ c_D K_d):
      dmf          beta = 1/2, the paper's "Crank-Nicolson" discrete Morse flow (paper (3.1)-(3.2)); bit-identical to
                   Roller's step before the schemes were components (tests/regression.py);
-     trapezoidal  beta = 1/4, the trapezoidal rule (average acceleration): cos(W dt) = (1 - x^2/4)/(1 + x^2/4),
-                  x = w dt, a phase error x^3/12 per step instead of the DMF's 5 x^3/24, the same cost per step.
-   Energy: E^k = rho/2 |xi^k - xi^{k-1}|^2_M/dt^2 + beta/2 (a(xi^k, xi^k) + a(xi^{k-1}, xi^{k-1}))
-                 + (1 - 2 beta)/2 a(xi^k, xi^{k-1});
-   multiplying the step by (xi^k - xi^{k-2})/2 gives the balance of docs/model.md section 2 for any beta (the
-   beta terms telescope). The products M xi of the last three levels are kept (state.Mcur, Mprev, Mprev2; M xi^k from
-   the step's equation), so that the load F^{k-1}, the trapezoidal right-hand side and the angular momentum cost no
-   product with M; the energy costs one, when a row is written. */
+     trapezoidal  beta = 1/4, the trapezoidal rule: cos(W dt) = (1 - x^2/4)/(1 + x^2/4), x = w dt, a phase error x^3/12
+                  per step instead of the DMF's 5 x^3/24, the same cost per step.
+   Energy: E^k = rho/2 |xi^k - xi^{k-1}|^2_M/dt^2 + beta/2 (a(xi^k, xi^k) + a(xi^{k-1}, xi^{k-1})) + (1 - 2 beta)/2
+   a(xi^k, xi^{k-1}) (+ the branches'); the step times (xi^k - xi^{k-2})/2 gives the balance of docs/model.md section 2
+   for any beta (the beta terms telescope). The products M xi of the last three levels are kept (M xi^k from the step's
+   equation), so that the load F^{k-1}, the trapezoidal right-hand side and the angular momentum cost no product with
+   M; the energy costs one, when a row is written. */
 #include "scheme_impl.h"
 #include "model/model.h"
 
@@ -20,31 +19,26 @@ typedef struct {
   PetscReal           beta;
   RollerStepOperator *op;
   Vec                 Mprev, Mprev2, Mv; /* M xi^{k-1}, M xi^{k-2} (state.Mcur = M xi^k); scratch */
+  RollerMaxwell       mx;                /* the Maxwell branches (scheme_maxwell.c), or NULL */
   PetscReal           kinetic;           /* (xi^k - xi^{k-1}) . M (xi^k - xi^{k-1}) of step kinetic_step (made when asked) */
   PetscInt            kinetic_step;
 } Newmark;
 
-/* v^{k-1} of the explicit Coriolis term as c1 xi^{k-1} + c2 xi^{k-2} + c3 xi^{k-3} (docs/model.md section 2);
-   centred: none (it is in A). */
+/* v^{k-1} of the explicit Coriolis term, c1 xi^{k-1} + c2 xi^{k-2} + c3 xi^{k-3} (docs/model.md section 2; centred: in A) */
 static void CoriolisVelocity(Roller ctx, PetscReal c[3])
 {
-  const PetscReal dt = ctx->ts.dt;
+  static const PetscReal coefficients[3][3] = {
+    {1.0, -1.0, 0.0}, /* backward */
+    {1.5, -2.0, 0.5}, /* extrapolated: (3 xi^{k-1} - 4 xi^{k-2} + xi^{k-3})/(2 dt) */
+    {0.0, 0.0,  0.0}  /* centred */
+  };
 
-  c[0] = c[1] = c[2] = 0.0;
-  if (ctx->disc.coriolis == ROLLER_CORIOLIS_BACKWARD) {
-    c[0] = 1.0 / dt;
-    c[1] = -1.0 / dt;
-  } else if (ctx->disc.coriolis == ROLLER_CORIOLIS_EXTRAPOLATED) {
-    c[0] = 3.0 / (2.0 * dt);
-    c[1] = -4.0 / (2.0 * dt);
-    c[2] = 1.0 / (2.0 * dt);
-  }
+  for (PetscInt i = 0; i < 3; ++i) c[i] = coefficients[ctx->disc.coriolis][i] / ctx->ts.dt;
 }
 
-/* rot = R(-pi/2) M (theta'' xi^{k-1} + 2 theta' v^{k-1}) from the kept products (M commutes with R(-pi/2)), and
-   the external load F^{k-1} = rho (rot + theta'^2 M xi^{k-1}) + rho (theta'' L_euler + theta'^2 L_centrifugal)
-   (the manufactured load is added by the caller): its work closes the energy balance. Before the levels move:
-   Mcur = M xi^{k-1}. */
+/* rot = R(-pi/2) M (theta'' xi^{k-1} + 2 theta' v^{k-1}) from the kept products (M commutes with R(-pi/2)), and the
+   external load F^{k-1} = rho (rot + theta'^2 M xi^{k-1}) + rho (theta'' L_euler + theta'^2 L_centrifugal) (the
+   manufactured load: the caller's), whose work closes the energy balance. Before the levels move: Mcur = M xi^{k-1}. */
 static PetscErrorCode LoadFromProducts(Roller ctx, Newmark *nm, PetscReal t1, Vec rot)
 {
   const PetscReal rho = ctx->material.density;
@@ -93,10 +87,9 @@ static PetscErrorCode RightHandSideDMF(Roller ctx, PetscReal t1, Vec b)
   PetscFunctionReturn(0);
 }
 
-/* Any beta, from the kept products (no product with M): with M w = rho 2/dt^2 M xi^{k-1} + (eta/(2 dt) - rho/dt^2)
-   M xi^{k-2} + (F^{k-1} - the rigid loads),
-     b = M w - (1 - 2 beta) K xi^{k-1} - (beta - tau/(2 dt)) K xi^{k-2} + the rigid loads
-       = rho 2/dt^2 M xi^{k-1} + (eta/(2 dt) - rho/dt^2) M xi^{k-2} - (1 - 2 beta) K xi^{k-1} - (beta - tau/(2 dt)) K xi^{k-2} + F^{k-1}. */
+/* Any beta, from the kept products (no product with M): b = M w - (1 - 2 beta) K xi^{k-1} - (beta - tau/(2 dt)) K xi^{k-2}
+   + the rigid loads, i.e. (M w = rho 2/dt^2 M xi^{k-1} + (eta/(2 dt) - rho/dt^2) M xi^{k-2} + F^{k-1} - the rigid loads)
+     b = rho 2/dt^2 M xi^{k-1} + (eta/(2 dt) - rho/dt^2) M xi^{k-2} - (1 - 2 beta) K xi^{k-1} - (beta - tau/(2 dt)) K xi^{k-2} + F^{k-1}. */
 static PetscErrorCode RightHandSide(Roller ctx, Newmark *nm, Vec b)
 {
   const PetscReal rho = ctx->material.density, dt = ctx->ts.dt;
@@ -111,9 +104,8 @@ static PetscErrorCode RightHandSide(Roller ctx, Newmark *nm, Vec b)
 /* Without contact (and the centred Coriolis term) the trapezoidal family solves for the second difference
    Delta = xi^k - 2 xi^{k-1} + xi^{k-2} (b - A (2 xi^{k-1} - xi^{k-2}), no scalar of dt in front of M):
      A Delta = F^{k-1} - K xi^{k-1} - tau/dt K (xi^{k-1} - xi^{k-2}) - eta/dt M (xi^{k-1} - xi^{k-2}).
-   The same scheme; but b's rho/dt^2 M xi terms, rounded once for the run, do not cancel A's rounded entries exactly,
-   and the mismatch, the same every step, drifted the energy linearly (2.8e-17 E a step at dt = 0.0125, 1.8e-18 at
-   dt = 2^-6 where the scalars are exact; 5.2e-12 over 1e5 steps, 1.1e-13 in this form: docs/model.md section 2.1). */
+   The same scheme; but b's rho/dt^2 M xi terms, rounded once for the run, do not cancel A's rounded entries, and the
+   mismatch, the same every step, drifted the energy linearly (docs/model.md section 2.1: 5.2e-12 over 1e5 steps, 1.1e-13 in this form). */
 static PetscErrorCode RightHandSideSecondDifference(Roller ctx, Newmark *nm, Vec r)
 {
   const PetscReal dt = ctx->ts.dt, eta = ctx->disc.damping, tau = ctx->material.viscosity;
@@ -136,6 +128,7 @@ static PetscErrorCode NewLevel(Roller ctx, Newmark *nm, PetscBool product)
 
   PetscFunctionBeginUser;
   PetscCall(MatMult(ctx->ops.K, ctx->state.cur, ctx->state.Kcur));
+  if (nm->mx) PetscCall(RollerMaxwellNewLevel(nm->mx, ctx)); /* K_d xi^k, the branches' update */
   tmp             = nm->Mprev2;
   nm->Mprev2      = nm->Mprev;
   nm->Mprev       = ctx->state.Mcur;
@@ -146,6 +139,7 @@ static PetscErrorCode NewLevel(Roller ctx, Newmark *nm, PetscBool product)
       PetscCall(RollerContactForceVector(ctx->contact, ctx->state.Mcur));
       PetscCall(VecAXPY(ctx->state.Mcur, 1.0, ctx->state.rhs));
     } else PetscCall(VecCopy(ctx->state.rhs, ctx->state.Mcur));
+    if (nm->mx) PetscCall(VecAXPY(ctx->state.Mcur, -op->c_D, RollerMaxwellKdCur(nm->mx)));
     PetscCall(VecAXPBY(ctx->state.Mcur, -op->c_K / op->c_M, 1.0 / op->c_M, ctx->state.Kcur));
   }
   PetscCall(VecWAXPY(ctx->state.velocity, -1.0, ctx->state.prev, ctx->state.cur));
@@ -180,6 +174,7 @@ static PetscErrorCode NewmarkStep(RollerScheme s, Roller ctx)
     PetscCall(VecAXPY(ctx->state.load, 1.0, ctx->state.next));
   }
   if (second) PetscCall(RightHandSideSecondDifference(ctx, nm, ctx->state.rhs));
+  if (nm->mx) PetscCall(RollerMaxwellRightHandSide(nm->mx, second, ctx->state.rhs));
   if (ctx->contact) {
     const RollerContactStage stage = {
       nm->op, ctx->state.time, ctx->state.cur, ctx->state.prev, {2.0, -1.0},
@@ -245,12 +240,13 @@ static PetscErrorCode NewmarkEnergy(RollerScheme s, Roller ctx, PetscReal *energ
   PetscCall(VecDot(ctx->state.prev, ctx->state.Kprev, &pot2));
   if (nm->beta != 0.5) PetscCall(VecDot(ctx->state.cur, ctx->state.Kprev, &cross));
   *energy = 0.5 * ctx->material.density * nm->kinetic / (dt * dt) + 0.5 * nm->beta * PetscRealPart(pot1 + pot2) + 0.5 * (1.0 - 2.0 * nm->beta) * PetscRealPart(cross);
+  if (nm->mx) PetscCall(RollerMaxwellEnergyAdd(nm->mx, ctx, energy));
   PetscFunctionReturn(0);
 }
 
 /* The energy balance of the step from xi^{k-1} to xi^k (docs/model.md section 2): with D = xi^k - xi^{k-2},
      E^k - E^{k-1} = 1/2 F^{k-1} . D + 1/2 (E N lambda^k) . D - eta/(4 dt) D . M D - tau/(4 dt) D . K D,
-   the load's work, the contact's (contact layer), the mass damping's and the Kelvin-Voigt dissipation. */
+   the load's work, the contact's (contact layer), the mass damping's and the Kelvin-Voigt (or Maxwell) dissipation. */
 static PetscErrorCode NewmarkBalance(RollerScheme s, Roller ctx, RollerStepInfo *info)
 {
   Newmark        *nm = (Newmark *)s->data;
@@ -273,24 +269,25 @@ static PetscErrorCode NewmarkBalance(RollerScheme s, Roller ctx, RollerStepInfo 
     PetscCall(VecDot(D, W, &dot));
     info->viscous_dissipation = ctx->material.viscosity / (4.0 * dt) * PetscRealPart(dot);
   }
+  if (nm->mx) info->viscous_dissipation += RollerMaxwellDissipation(nm->mx, ctx);
   if (ctx->contact) PetscCall(RollerContactEnergyAdd(ctx, ctx->contact, ctx->state.prev2, ctx->state.time - 2.0 * dt, 0.5, info));
   PetscFunctionReturn(0);
 }
 
 /* M xi of the three levels: made from the step's equation, a product of the level would differ in its last bits, so a
-   restart reads them from the checkpoint. */
+   restart reads them from the checkpoint; and the Maxwell branches'. */
 static PetscErrorCode NewmarkKept(RollerScheme s, Roller ctx, PetscInt *n, Vec v[], const char *names[])
 {
-  Newmark *nm = (Newmark *)s->data;
+  Newmark          *nm       = (Newmark *)s->data;
+  const Vec         M[3]     = {ctx->state.Mcur, nm->Mprev, nm->Mprev2};
+  const char *const Mname[3] = {"M_xi_k", "M_xi_k1", "M_xi_k2"};
 
   PetscFunctionBeginUser;
-  *n       = 3;
-  v[0]     = ctx->state.Mcur;
-  v[1]     = nm->Mprev;
-  v[2]     = nm->Mprev2;
-  names[0] = "M_xi_k";
-  names[1] = "M_xi_k1";
-  names[2] = "M_xi_k2";
+  for (*n = 0; *n < 3; ++*n) {
+    v[*n]     = M[*n];
+    names[*n] = Mname[*n];
+  }
+  if (nm->mx) PetscCall(RollerMaxwellKept(nm->mx, n, v, names));
   PetscFunctionReturn(0);
 }
 
@@ -302,12 +299,13 @@ static PetscErrorCode NewmarkSetUp(RollerScheme s, Roller ctx)
   const PetscReal dt = ctx->ts.dt, rho = ctx->material.density;
 
   PetscFunctionBeginUser;
+  PetscCall(RollerMaxwellCreate(ctx, nm->beta, &nm->mx));
   if (ctx->disc.static_solve) PetscCall(RollerSchemeAddOperator(s, ctx, 0.0, 1.0, 0.0, NULL, 0.0, &nm->op));
   else {
     PetscReal td0;
 
     RollerTheta(ctx, 0.0, NULL, &td0, NULL); /* centred Coriolis: theta'(0), re-made every step only if theta' varies */
-    PetscCall(RollerSchemeAddOperator(s, ctx, rho / (dt * dt) + ctx->disc.damping / (2.0 * dt), nm->beta + ctx->material.viscosity / (2.0 * dt), 0.0, ctx->ops.G, rho * td0 / dt, &nm->op));
+    PetscCall(RollerSchemeAddOperator(s, ctx, rho / (dt * dt) + ctx->disc.damping / (2.0 * dt), nm->beta + ctx->material.viscosity / (2.0 * dt), RollerMaxwellStiffness(nm->mx), ctx->ops.G, rho * td0 / dt, &nm->op));
   }
   PetscCall(VecDuplicate(ctx->state.cur, &nm->Mprev));
   PetscCall(VecDuplicate(ctx->state.cur, &nm->Mprev2));
@@ -348,6 +346,7 @@ static PetscErrorCode NewmarkDestroy(RollerScheme s)
   PetscCall(VecDestroy(&nm->Mprev));
   PetscCall(VecDestroy(&nm->Mprev2));
   PetscCall(VecDestroy(&nm->Mv));
+  PetscCall(RollerMaxwellDestroy(&nm->mx));
   PetscFunctionReturn(0);
 }
 

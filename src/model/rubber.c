@@ -291,7 +291,7 @@ PetscErrorCode RollerRubberView(Roller ctx, PetscInt nw, const PetscReal w[], co
       PetscReal       re, im;
 
       RollerRubberModulus(m->nbranch, m->tau, m->g, 0.0, wj, &re, &im);
-      PetscCall(PetscPrintf(ctx->comm, "roller:   at %s f = %g (w %g): storage modulus G' = %.4g mu = %g, loss factor %.4g\n", pass == 0 ? (j == 0 ? "the band's low end" : "the band's high end") : what[j], (double)(wj / (2 * PETSC_PI)), (double)wj, (double)re, (double)(re * m->mu), (double)(im / re)));
+      PetscCall(PetscPrintf(ctx->comm, "roller:   at %s f = %g (w %g): shear storage modulus G' = %.4g mu = %g, loss factor G''/G' %.4g\n", pass == 0 ? (j == 0 ? "the band's low end" : "the band's high end") : what[j], (double)(wj / (2 * PETSC_PI)), (double)wj, (double)re, (double)(re * m->mu), (double)(im / re)));
     }
   }
   PetscFunctionReturn(0);
