@@ -74,15 +74,15 @@ PETSC_INTERN PetscErrorCode RollerSchemeStage(Roller, RollerStageWork *, RollerS
 
 /* scheme_maxwell.c: the Maxwell branches of the three-level schemes (-rubber maxwell; NULL without) */
 typedef struct _n_RollerMaxwell *RollerMaxwell;
-PETSC_INTERN PetscErrorCode RollerMaxwellCreate(Roller, PetscReal, RollerMaxwell *); /* beta */
-PETSC_INTERN PetscReal      RollerMaxwellStiffness(RollerMaxwell);                    /* c_D of the step matrix (0 for NULL) */
-PETSC_INTERN Vec            RollerMaxwellKdCur(RollerMaxwell);                        /* K_d xi^k */
-PETSC_INTERN PetscErrorCode RollerMaxwellRightHandSide(RollerMaxwell, PetscBool, Vec); /* second difference?, b */
-PETSC_INTERN PetscErrorCode RollerMaxwellNewLevel(RollerMaxwell, Roller);
-PETSC_INTERN PetscReal      RollerMaxwellDissipation(RollerMaxwell, Roller);
-PETSC_INTERN PetscErrorCode RollerMaxwellEnergyAdd(RollerMaxwell, Roller, PetscReal *);
-PETSC_INTERN PetscErrorCode RollerMaxwellKept(RollerMaxwell, PetscInt *, Vec[], const char *[]);
-PETSC_INTERN PetscErrorCode RollerMaxwellDestroy(RollerMaxwell *);
+PETSC_INTERN PetscErrorCode      RollerMaxwellCreate(Roller, PetscReal, RollerMaxwell *);   /* beta */
+PETSC_INTERN PetscReal           RollerMaxwellStiffness(RollerMaxwell);                     /* c_D of the step matrix (0 for NULL) */
+PETSC_INTERN Vec                 RollerMaxwellKdCur(RollerMaxwell);                         /* K_d xi^k */
+PETSC_INTERN PetscErrorCode      RollerMaxwellRightHandSide(RollerMaxwell, PetscBool, Vec); /* second difference?, b */
+PETSC_INTERN PetscErrorCode      RollerMaxwellNewLevel(RollerMaxwell, Roller);
+PETSC_INTERN PetscReal           RollerMaxwellDissipation(RollerMaxwell, Roller);
+PETSC_INTERN PetscErrorCode      RollerMaxwellEnergyAdd(RollerMaxwell, Roller, PetscReal *);
+PETSC_INTERN PetscErrorCode      RollerMaxwellKept(RollerMaxwell, PetscInt *, Vec[], const char *[]);
+PETSC_INTERN PetscErrorCode      RollerMaxwellDestroy(RollerMaxwell *);
 
 /* The schemes' create functions, for RollerSchemesRegisterAll */
 PETSC_INTERN PetscErrorCode RollerSchemeCreate_DMF(RollerScheme);
