@@ -39,7 +39,7 @@ for scheme in ("dmf", "trapezoidal"):
     losses = (d["contact_dissipation"] + d["damping_dissipation"] + d["viscous_dissipation"])[1:]
     balance = np.abs(np.diff(d["energy"]) - works + losses).max() / emax
     viscous = d["viscous_dissipation"][1:]
-    c.check(balance < 1e-12, f"{scheme}: the energy balance with the branches closes at every step ({len(d["t"]) - 1} steps): max |dE - works + dissipations| / E_max = {balance:.1e} < 1e-12")
+    c.check(balance < 1e-12, f"{scheme}: the energy balance with the branches closes at every step ({len(d['t']) - 1} steps): max |dE - works + dissipations| / E_max = {balance:.1e} < 1e-12")
     c.check(viscous.min() >= -1e-15 * emax and viscous.sum() > 0,
             f"{scheme}: the branches' dissipation >= 0 at every step (min {viscous.min() / emax:.1e} E_max), {viscous.sum() / emax:.3f} E_max in all")
     df, dc = np.diff(d["friction_work"]).min() / emax, d["contact_dissipation"].min() / emax

@@ -124,14 +124,14 @@ PetscErrorCode RollerMaxwellNewLevel(RollerMaxwell mx, Roller ctx)
     const PetscInt old = mx->nlev - 1;
     PetscScalar    d;
 
-    PetscCall(VecWAXPY(mx->m, -1.0, mx->z[old][i], mx->xbar));
-    PetscCall(VecScale(mx->m, 1.0 / (1.0 + mx->a[i])));
+    const PetscReal c = 1.0 / (1.0 + mx->a[i]);
+
+    PetscCall(VecWAXPY(mx->m, -1.0, mx->z[old][i], mx->xbar)); /* (1 + a_i) m_i and K_d of it */
     PetscCall(VecWAXPY(mx->Km, -1.0, mx->P[old][i], mx->Kxbar));
-    PetscCall(VecScale(mx->Km, 1.0 / (1.0 + mx->a[i])));
     PetscCall(VecDot(mx->m, mx->Km, &d));
-    mx->dissipation += mx->g[i] * mx->rate[i] * PetscRealPart(d);
-    PetscCall(VecAXPY(mx->z[old][i], 2.0 * mx->a[i], mx->m)); /* z^old becomes z^new */
-    PetscCall(VecAXPY(mx->P[old][i], 2.0 * mx->a[i], mx->Km));
+    mx->dissipation += mx->g[i] * mx->rate[i] * c * c * PetscRealPart(d);
+    PetscCall(VecAXPY(mx->z[old][i], 2.0 * mx->a[i] * c, mx->m)); /* z^old becomes z^new */
+    PetscCall(VecAXPY(mx->P[old][i], 2.0 * mx->a[i] * c, mx->Km));
     if (mx->nlev == 2) { /* dmf: the new level is k, the other k-1 */
       tmp         = mx->z[1][i];
       mx->z[1][i] = mx->z[0][i];
@@ -151,26 +151,24 @@ PetscReal RollerMaxwellDissipation(RollerMaxwell mx, Roller ctx)
   return mx->dissipation_step == ctx->state.step ? mx->dissipation : 0.0;
 }
 
-/* energy += the branches' stored energy of the newest level (the scheme's: see above). Scratch: mx->m, mx->Km. */
+/* energy += the branches' stored energy of the newest level (the scheme's: see above). Scratch: xbar, Kxbar (y^k and
+   K_d y^k, trapezoidal), m, Km. */
 PetscErrorCode RollerMaxwellEnergyAdd(RollerMaxwell mx, Roller ctx, PetscReal *energy)
 {
   PetscFunctionBeginUser;
+  if (mx->nlev == 1) {
+    PetscCall(VecAXPBYPCZ(mx->xbar, 0.5, 0.5, 0.0, ctx->state.cur, ctx->state.prev));
+    PetscCall(VecAXPBYPCZ(mx->Kxbar, 0.5, 0.5, 0.0, mx->Kd[0], mx->Kd[1]));
+  }
   for (PetscInt i = 0; i < mx->n; ++i) {
-    PetscScalar w[2] = {0.0, 0.0};
+    for (PetscInt l = 0; l < mx->nlev; ++l) { /* dmf: W_i(k), W_i(k-1); trapezoidal: y^k - z_i^k */
+      PetscScalar w;
 
-    for (PetscInt l = 0; l < mx->nlev; ++l) {
-      if (mx->nlev == 2) { /* dmf: W_i(k), W_i(k-1) */
-        PetscCall(VecWAXPY(mx->m, -1.0, mx->z[l][i], l ? ctx->state.prev : ctx->state.cur));
-        PetscCall(VecWAXPY(mx->Km, -1.0, mx->P[l][i], mx->Kd[l]));
-      } else { /* trapezoidal: y^k - z_i^k */
-        PetscCall(VecAXPBYPCZ(mx->m, 0.5, 0.5, 0.0, ctx->state.cur, ctx->state.prev));
-        PetscCall(VecAXPY(mx->m, -1.0, mx->z[0][i]));
-        PetscCall(VecAXPBYPCZ(mx->Km, 0.5, 0.5, 0.0, mx->Kd[0], mx->Kd[1]));
-        PetscCall(VecAXPY(mx->Km, -1.0, mx->P[0][i]));
-      }
-      PetscCall(VecDot(mx->m, mx->Km, &w[l]));
+      PetscCall(VecWAXPY(mx->m, -1.0, mx->z[l][i], mx->nlev == 1 ? mx->xbar : (l ? ctx->state.prev : ctx->state.cur)));
+      PetscCall(VecWAXPY(mx->Km, -1.0, mx->P[l][i], mx->nlev == 1 ? mx->Kxbar : mx->Kd[l]));
+      PetscCall(VecDot(mx->m, mx->Km, &w));
+      *energy += (mx->nlev == 2 ? 0.25 : 0.5) * mx->g[i] * PetscRealPart(w);
     }
-    *energy += mx->nlev == 2 ? 0.25 * mx->g[i] * PetscRealPart(w[0] + w[1]) : 0.5 * mx->g[i] * PetscRealPart(w[0]);
   }
   PetscFunctionReturn(0);
 }
