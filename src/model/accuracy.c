@@ -164,6 +164,24 @@ PetscReal RollerEndTime(Roller ctx, PetscReal w_fast)
   return PetscMax(ctx->ts.max_time, 2 * PETSC_PI / w_fast);
 }
 
+/* The torsional mode's frequency as the rubber runs it: with -rubber maxwell w = w_r sqrt(G'(w)/mu) (a pure shear mode:
+   its frequency scales with the shear modulus, w_r the relaxed solid's), by fixed-point iteration from the
+   instantaneous solid's w_t (G' increases with w: the iterates decrease to the root); w_t itself otherwise. */
+static PetscReal TorsionAtItsFrequency(const RollerMaterial *m, PetscReal w_t)
+{
+  PetscReal sum = 0.0, w = w_t;
+
+  if (m->rubber != ROLLER_RUBBER_MAXWELL) return w_t;
+  for (PetscInt i = 0; i < m->nbranch; ++i) sum += m->g[i];
+  for (PetscInt it = 0; it < 200; ++it) {
+    PetscReal re, im;
+
+    RollerRubberModulus(m->nbranch, m->tau, m->g, 0.0, w, &re, &im);
+    w = w_t * PetscSqrtReal(re / (1.0 + sum));
+  }
+  return w;
+}
+
 /* -mesh_h when not given: C_k w_t T (h/L)^q = 0.7 P. Needs the radii from the options (a mesh file sets its own h). */
 PetscErrorCode RollerChooseMeshSize(Roller ctx)
 {
@@ -177,6 +195,7 @@ PetscErrorCode RollerChooseMeshSize(Roller ctx)
     ctx->mesh.curved = PETSC_TRUE;
   }
   PetscCall(RollerModeFrequencies(ctx, &w_b, &w_t));
+  w_t         = TorsionAtItsFrequency(&ctx->material, w_t); /* the spatial error of the mode alpha swings at */
   T           = RollerEndTime(ctx, PetscMax(w_b, ctx->rotation.b));
   ctx->mesh.h = L * PetscPowReal(0.7 * ctx->ts.phase_error / (calibration_C[ctx->disc.degree] * w_t * T), 1.0 / calibration_q[ctx->disc.degree]);
   ctx->mesh.h = PetscMin(ctx->mesh.h, 0.5 * L); /* at least two elements across the wall */

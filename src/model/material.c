@@ -16,13 +16,13 @@ PetscErrorCode RollerMaterialSetFromOptions(Roller ctx)
 {
   RollerMaterial *m = &ctx->material;
   PetscBool       given[4];
-  PetscReal       tau[ROLLER_MAX_BRANCHES + 1], weight[ROLLER_MAX_BRANCHES + 1];
+  PetscReal       tau[ROLLER_MAX_BRANCHES + 1] = {0.0}, weight[ROLLER_MAX_BRANCHES + 1] = {0.0};
   PetscInt        nband = 2, ntau = ROLLER_MAX_BRANCHES + 1, nweight = ROLLER_MAX_BRANCHES + 1; /* one more than allowed: seen and refused */
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(ctx->comm, NULL, "Roller: material", NULL);
   PetscCall(PetscOptionsReal("-young", "Young's modulus E (with -rubber maxwell the relaxed, static one)", NULL, m->young, &m->young, NULL));
-  PetscCall(PetscOptionsReal("-poisson", "Poisson's ratio nu (relaxed)", NULL, m->poisson, &m->poisson, NULL));
+  PetscCall(PetscOptionsReal("-poisson", "Poisson's ratio nu (with -rubber maxwell the relaxed one)", NULL, m->poisson, &m->poisson, NULL));
   PetscCall(PetscOptionsReal("-density", "Density rho", NULL, m->density, &m->density, NULL));
   PetscCall(PetscOptionsEnum("-rubber", "The rubber's damping: kelvin_voigt (-viscosity) or maxwell, a generalized Maxwell solid of deviatoric branches, fitted (-rubber_loss_factor, -rubber_band) or given (-maxwell_tau, -maxwell_weight) (docs/model.md section 1.1)", "RollerRubber", RollerRubbers,
                              (PetscEnum)m->rubber, (PetscEnum *)&m->rubber, NULL));
