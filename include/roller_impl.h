@@ -112,10 +112,23 @@ typedef struct {
   PetscBool radii_set[2], gmsh_verbose, view_info, h_restart;
 } RollerMesh;
 
-/* Material (set once): plane-strain Lame constants from E, nu */
+/* The rubber's damping (-rubber, docs/model.md section 1.1): Kelvin-Voigt (-viscosity) or a generalized Maxwell solid
+   (Prony series) of deviatoric branches, the bulk elastic (model/rubber.c) */
+typedef enum { ROLLER_RUBBER_KELVIN_VOIGT, ROLLER_RUBBER_MAXWELL } RollerRubber;
+PETSC_EXTERN const char *const RollerRubbers[];
+#define ROLLER_MAX_BRANCHES 16
+
+/* Material (set once): plane-strain Lame constants from E, nu (the relaxed, static moduli); with -rubber maxwell the
+   branches: shear moduli g_i mu (g_i relative to the relaxed shear modulus mu) relaxing with times tau_i, fitted to the
+   loss factor loss_factor over the band [band[0], band[1]] (cycles per unit time; fit_error: the largest relative error
+   of the fitted loss factor over the band) or given (loss_factor 0) */
 typedef struct {
-  PetscReal young, poisson, density, lambda, mu;
-  PetscReal viscosity; /* tau of Kelvin-Voigt damping sigma = C:(eps + tau eps_t) */
+  PetscReal    young, poisson, density, lambda, mu;
+  PetscReal    viscosity; /* tau of Kelvin-Voigt damping sigma = C:(eps + tau eps_t) */
+  RollerRubber rubber;
+  PetscInt     nbranch;
+  PetscReal    tau[ROLLER_MAX_BRANCHES], g[ROLLER_MAX_BRANCHES];
+  PetscReal    band[2], loss_factor, fit_error;
 } RollerMaterial;
 
 /* The driving rotation theta(t) = omega (t - t0) + a cos(b (t - t0)) from t0 = -theta_start on, theta = a before; with
@@ -169,22 +182,24 @@ typedef struct {
    T^T G T and the loads are T^T L (model/mass.c). */
 typedef struct {
   Mat       M, K;
-  Mat       G; /* the gyroscopic matrix int rho N^T R(pi/2) N: only for the centred Coriolis velocity (its step matrix) */
+  Mat       Kd; /* with -rubber maxwell: the deviatoric stiffness at the relaxed shear modulus, int 2 mu dev eps[u] : dev eps[v] (else NULL) */
+  Mat       G;  /* the gyroscopic matrix int rho N^T R(pi/2) N: only for the centred Coriolis velocity (its step matrix) */
   Vec       L_euler, L_centrifugal;
   Vec       coordinates; /* nodal positions x_n of every free dof pair */
   PetscReal I0;          /* x . M x, the rigid body's polar moment over rho (the shaft torque, integrate/diagnostics.c) */
   Vec       w_R, w_alpha;
 } RollerOperators;
 
-/* A step matrix of a time scheme (model/solver.c): A = c_M M + c_K K (- c_G G with the centred Coriolis term, which
-   makes it non-symmetric: LU), factored once. A scheme has one or a fixed few (integrate/scheme*.c); the contact
-   layer keeps its condensation S = E^T A^{-1} E per operator, by id. */
+/* A step matrix of a time scheme (model/solver.c): A = c_M M + c_K K + c_D K_d (- c_G G with the centred Coriolis term,
+   which makes it non-symmetric: LU), factored once; c_D K_d: the Maxwell branches (ops.Kd; 0 without them). A scheme
+   has one or a fixed few (integrate/scheme*.c); the contact layer keeps its condensation S = E^T A^{-1} E per
+   operator, by id. */
 typedef struct {
-  Mat                     A, A0, G; /* A0 = c_M M + c_K K and G: only with the centred Coriolis term (A = A0 - c_G G, re-made when theta' varies) */
+  Mat                     A, A0, G; /* A0 = c_M M + c_K K + c_D K_d and G: only with the centred Coriolis term (A = A0 - c_G G, re-made when theta' varies) */
   KSP                     ksp;
-  PetscReal               c_M, c_K;
+  PetscReal               c_M, c_K, c_D;
   PetscInt                id;
-  struct _n_RollerBorder *border; /* -axle: the hub's unknowns eliminated, A_eff = A - C D^{-1} C^T (model/border.c); NULL otherwise */
+  struct _n_RollerBorder *border; /* -axle: the hub's unknowns eliminated, A_eff = A - C Dz C^T (model/axle.h); NULL otherwise */
 } RollerStepOperator;
 
 /* Time stepping (integrate/timestep.c) */

@@ -75,6 +75,20 @@ cases = [
     (["-obstacle", "-contact_solver", "foo"], "-contact_solver", "condensed"),
     (["-ts_dt", "100", "-ts_max_time", "20"], "-ts_dt", "no step"),
     (["-monitor_csv", "unused.csv", "-modes"], "-monitor_csv", "not used"),
+    # the generalized Maxwell rubber (issue 35)
+    (["-rubber", "foo"], "-rubber", "maxwell"),
+    (["-rubber_loss_factor", "0.1"], "-rubber_loss_factor", "-rubber maxwell"),
+    (["-rubber", "maxwell"], "-rubber maxwell", "-rubber_loss_factor"),
+    (["-rubber", "maxwell", "-rubber_loss_factor", "0.1"], "-rubber_band", "missing"),
+    (["-rubber", "maxwell", "-rubber_loss_factor", "2", "-rubber_band", "1,10"], "-rubber_loss_factor", "(0, 1]"),
+    (["-rubber", "maxwell", "-rubber_loss_factor", "0.1", "-rubber_band", "10,1"], "-rubber_band", ">= F1"),
+    (["-rubber", "maxwell", "-rubber_loss_factor", "0.1", "-rubber_band", "10"], "-rubber_band", "two frequencies"),
+    (["-rubber", "maxwell", "-maxwell_tau", "1,2", "-maxwell_weight", "0.5"], "-maxwell_weight", "one per -maxwell_tau"),
+    (["-rubber", "maxwell", "-maxwell_tau", "-1", "-maxwell_weight", "0.5"], "-maxwell_tau", "-1"),
+    (["-rubber", "maxwell", "-maxwell_tau", "1", "-maxwell_weight", "0"], "-maxwell_weight", "> 0"),
+    (["-rubber", "maxwell", "-maxwell_tau", "1", "-maxwell_weight", "0.5", "-rubber_loss_factor", "0.1"], "-rubber maxwell", "not both"),
+    (["-rubber", "maxwell", "-maxwell_tau", "1", "-maxwell_weight", "0.5", "-viscosity", "0.01"], "-viscosity", "-rubber maxwell"),
+    (["-rubber", "maxwell", "-maxwell_tau", "1", "-maxwell_weight", "0.5", "-ts_scheme", "composed"], "-ts_scheme composed", "-rubber maxwell"),
 ]
 for args, name, value in cases:
     code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet"] + args if args[0] != "-mesh_h" else args + ["-ts_max_steps", "2"], check=False)

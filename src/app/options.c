@@ -134,12 +134,16 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
              RollerFrames[ctx->eig.frame]);
   PetscCheck(!(ctx->eig.on && ctx->disc.contact_mass != ROLLER_CONTACT_MASS_CONSISTENT), ctx->comm, PETSC_ERR_ARG_INCOMP, "-modes takes the consistent mass (-contact_mass consistent), not %s", RollerContactMasses[ctx->disc.contact_mass]);
   PetscCheck(!(ctx->eig.on && (ctx->rotation.a != 0 || ctx->ck.restart[0] || ctx->disc.static_solve)), ctx->comm, PETSC_ERR_ARG_INCOMP, "-modes linearizes about steady rotation: it takes no -theta_a, -restart or -static");
+  PetscCheck(!(ctx->eig.on && ctx->material.rubber == ROLLER_RUBBER_MAXWELL), ctx->comm, PETSC_ERR_SUP, "-modes does not carry -rubber maxwell yet (its branches are in the time step only): use -rubber kelvin_voigt");
+  PetscCheck(!(ctx->init.mms != ROLLER_MMS_NONE && ctx->material.rubber == ROLLER_RUBBER_MAXWELL), ctx->comm, PETSC_ERR_ARG_INCOMP, "-mms %s: the manufactured solutions' loads are those of the elastic or Kelvin-Voigt solid, not of -rubber maxwell",
+             RollerMMSTypes[ctx->init.mms]);
   if (ctx->axle.on) { /* what the hub's elimination (model/axle.h) carries */
     PetscCheck(!ctx->eig.on, ctx->comm, PETSC_ERR_SUP, "-axle with -modes: the steady state and the eigenproblem with the hub's unknowns are not built yet (docs/squeal.md section 10)");
     PetscCheck(!ctx->disc.static_solve && !ctx->ck.restart[0] && ctx->init.mms == ROLLER_MMS_NONE, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes no -static, -restart or -mms");
     PetscCheck(ctx->disc.coriolis != ROLLER_CORIOLIS_CENTERED, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes -coriolis_velocity backward or extrapolated, not centered");
     PetscCheck(ctx->disc.contact_mass == ROLLER_CONTACT_MASS_CONSISTENT, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes the consistent mass (-contact_mass consistent), not %s", RollerContactMasses[ctx->disc.contact_mass]);
     PetscCheck(!ctx->disc.clamp_outer, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle cannot be combined with -clamp_outer");
+    PetscCheck(ctx->material.rubber != ROLLER_RUBBER_MAXWELL, ctx->comm, PETSC_ERR_SUP, "-axle with -rubber maxwell: the branches' coupling with the hub is not built yet");
   }
   if (ctx->disc.static_solve) { /* one step from rest to t = max_time with A = K: the right-hand side is 0 */
     ctx->ts.dt        = ctx->ts.max_time;

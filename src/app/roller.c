@@ -73,6 +73,7 @@ PetscErrorCode RollerDestroy(Roller *roller)
   PetscCall(RollerAxleDestroy(ctx));
   PetscCall(MatDestroy(&ctx->ops.M));
   PetscCall(MatDestroy(&ctx->ops.K));
+  PetscCall(MatDestroy(&ctx->ops.Kd));
   PetscCall(MatDestroy(&ctx->ops.G));
   PetscCall(VecDestroy(&ctx->ops.L_euler));
   PetscCall(VecDestroy(&ctx->ops.L_centrifugal));

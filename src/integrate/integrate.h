@@ -36,7 +36,7 @@ PETSC_INTERN PetscErrorCode RollerSchemeSetUp(Roller);  /* its step matrices (af
 PETSC_INTERN PetscErrorCode RollerSchemeStep(Roller);
 PETSC_INTERN PetscErrorCode RollerSchemeEnergy(Roller, PetscReal *);
 PETSC_INTERN PetscErrorCode RollerSchemeBalance(Roller, RollerStepInfo *);
-#define ROLLER_SCHEME_KEPT 8
+#define ROLLER_SCHEME_KEPT (3 + 4 * ROLLER_MAX_BRANCHES)                                 /* M xi of three levels; z_i and K_d z_i of two levels per Maxwell branch */
 PETSC_INTERN PetscErrorCode RollerSchemeKept(Roller, PetscInt *, Vec[], const char *[]); /* at most ROLLER_SCHEME_KEPT */
 PETSC_INTERN const char    *RollerSchemeName(Roller);
 PETSC_INTERN PetscErrorCode RollerSchemesDestroy(Roller);

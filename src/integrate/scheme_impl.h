@@ -6,6 +6,7 @@
      scheme.c           the registry, the options block, the default (the scheme that meets -ts_phase_error at the
                         least cost), the step count and dt rule, -ts_view, the dispatch
      scheme_newmark.c   the three-level schemes: dmf (Newmark beta = 1/2, the paper's) and trapezoidal (beta = 1/4)
+     scheme_maxwell.c   their generalized Maxwell branches (-rubber maxwell)
      scheme_stage.c     the one-step trapezoidal stage with the rotational terms split off (Strang)
      scheme_composed.c  its symmetric compositions: fourth order (Suzuki, Yoshida) */
 #ifndef ROLLER_SCHEME_IMPL_H
@@ -55,7 +56,7 @@ PETSC_INTERN PetscFunctionList RollerSchemeList;
 /* scheme.c */
 PETSC_INTERN PetscErrorCode RollerSchemeCreate(const char[], RollerScheme *);
 PETSC_INTERN PetscErrorCode RollerSchemeDestroy(RollerScheme *);
-PETSC_INTERN PetscErrorCode RollerSchemeAddOperator(RollerScheme, Roller, PetscReal, PetscReal, Mat, PetscReal, RollerStepOperator **); /* c_M, c_K, G, c_G */
+PETSC_INTERN PetscErrorCode RollerSchemeAddOperator(RollerScheme, Roller, PetscReal, PetscReal, PetscReal, Mat, PetscReal, RollerStepOperator **); /* c_M, c_K, c_D, G, c_G */
 
 /* scheme_stage.c: a stage of the one-step scheme. Its velocity v and M v (V, MV: the step's working copies, committed
    at the step's end), scratch, the loads at t0 and t1 (L0 at time tL0 is reused when the next stage starts there),
@@ -80,6 +81,17 @@ PETSC_INTERN PetscErrorCode RollerHubStepEnd(Roller, RollerStepOperator *, Petsc
 PETSC_INTERN PetscErrorCode RollerHubShift(Roller, Vec);
 PETSC_INTERN PetscErrorCode RollerHubEnergy(Roller, PetscReal, PetscReal *);
 PETSC_INTERN PetscErrorCode RollerHubBalance(Roller, PetscReal, RollerStepInfo *);
+/* scheme_maxwell.c: the Maxwell branches of the three-level schemes (-rubber maxwell; NULL without) */
+typedef struct _n_RollerMaxwell *RollerMaxwell;
+PETSC_INTERN PetscErrorCode      RollerMaxwellCreate(Roller, PetscReal, RollerMaxwell *);   /* beta */
+PETSC_INTERN PetscReal           RollerMaxwellStiffness(RollerMaxwell);                     /* c_D of the step matrix (0 for NULL) */
+PETSC_INTERN Vec                 RollerMaxwellKdCur(RollerMaxwell);                         /* K_d xi^k */
+PETSC_INTERN PetscErrorCode      RollerMaxwellRightHandSide(RollerMaxwell, PetscBool, Vec); /* second difference?, b */
+PETSC_INTERN PetscErrorCode      RollerMaxwellNewLevel(RollerMaxwell, Roller);
+PETSC_INTERN PetscReal           RollerMaxwellDissipation(RollerMaxwell, Roller);
+PETSC_INTERN PetscErrorCode      RollerMaxwellEnergyAdd(RollerMaxwell, Roller, PetscReal *);
+PETSC_INTERN PetscErrorCode      RollerMaxwellKept(RollerMaxwell, PetscInt *, Vec[], const char *[]);
+PETSC_INTERN PetscErrorCode      RollerMaxwellDestroy(RollerMaxwell *);
 
 /* The schemes' create functions, for RollerSchemesRegisterAll */
 PETSC_INTERN PetscErrorCode RollerSchemeCreate_DMF(RollerScheme);

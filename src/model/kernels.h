@@ -53,6 +53,22 @@ static inline void g3_elastic(ROLLER_KERNEL_ARGS, PetscReal u_tShift, const Pets
   }
 }
 
+/* K_d: the Maxwell branches' deviatoric stiffness at the relaxed shear modulus (docs/model.md section 1.1),
+   int 2 mu dev eps[u] : dev eps[v], dev the 3-D deviator of the plane strain (eps_zz = 0): the elastic kernel with
+   (lambda, mu) -> (-2/3 mu, mu), 2 mu (eps : eps - tr(eps)^2/3) > 0 for every eps != 0. Constants: the material's (mu). */
+static inline void g3_deviatoric(ROLLER_KERNEL_ARGS, PetscReal u_tShift, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar g3[])
+{
+  const PetscReal mu = PetscRealPart(constants[ROLLER_C_MU]), lambda = -2.0 * mu / 3.0;
+
+  for (PetscInt c = 0; c < dim; ++c) {
+    for (PetscInt d = 0; d < dim; ++d) {
+      g3[((c * dim + c) * dim + d) * dim + d] += mu;
+      g3[((c * dim + d) * dim + d) * dim + c] += mu;
+      g3[((c * dim + d) * dim + c) * dim + d] += lambda;
+    }
+  }
+}
+
 /* M: the L2 inner product (u, v) (no density; A carries rho). No constants. */
 static inline void g0_mass(ROLLER_KERNEL_ARGS, PetscReal u_tShift, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar g0[])
 {

@@ -1,5 +1,6 @@
 /* The model layer (docs/model.md sections 1-4, 6.2):
-     material.c     -young, -poisson, -density, the Lame constants, the material constants of the kernels
+     material.c     -young, -poisson, -density, -rubber, -viscosity, the Lame constants, the material constants of the kernels
+     rubber.c       -rubber maxwell: the branches (fitted to a loss factor over a band, or given), G*(w), -ts_view
      forcing.c      the rotation theta(t) (-omega, -theta_a, -theta_b), the obstacle height g(t), R(-pi/2)
      fe.c           the discretization options, the PetscFE space and Dirichlet boundary, one DM per operator
      operators.c    M, K, G, the rigid-body loads, the load assembly, the nodal positions
@@ -20,6 +21,13 @@
 PETSC_INTERN PetscErrorCode RollerMaterialSetFromOptions(Roller);
 PETSC_INTERN PetscErrorCode RollerLameFromYoung(PetscReal, PetscReal, PetscReal *, PetscReal *);
 PETSC_INTERN PetscErrorCode RollerMaterialSetConstants(Roller, PetscDS); /* (lambda, mu), set once */
+
+/* rubber.c: the generalized Maxwell solid (-rubber maxwell, docs/model.md section 1.1) */
+PETSC_INTERN void           RollerRubberModulus(PetscInt, const PetscReal[], const PetscReal[], PetscReal, PetscReal, PetscReal *, PetscReal *);      /* n, tau, g, s = sr + i si -> G*(s)/mu */
+PETSC_INTERN void           RollerRubberInstantaneous(const RollerMaterial *, PetscReal *, PetscReal *);                                              /* lambda, mu of the unrelaxed solid */
+PETSC_INTERN PetscErrorCode RollerRubberFit(PetscReal, PetscReal, PetscReal, PetscReal, PetscInt, PetscInt *, PetscReal[], PetscReal[], PetscReal *); /* eta, f1, f2, tol, nmax -> n, tau, g, err */
+PETSC_INTERN PetscErrorCode RollerRubberSetUp(Roller, const PetscBool[4], PetscInt, PetscInt, const PetscReal[], PetscInt, const PetscReal[]);
+PETSC_INTERN PetscErrorCode RollerRubberView(Roller, PetscInt, const PetscReal[], const char *const[]); /* -ts_view, with G', eta at nw angular frequencies */
 
 /* forcing.c: theta and its derivatives, the obstacle height, R(-pi/2) */
 PETSC_INTERN PetscErrorCode RollerRotationSetFromOptions(Roller);
@@ -50,7 +58,7 @@ PETSC_INTERN PetscErrorCode RollerMassReduceLoad(Mat, Vec);           /* L <- T^
 PETSC_INTERN PetscErrorCode RollerMassReducePattern(Mat, Mat, Mat *); /* G <- T^T G T (skew) on A's pattern, widened */
 
 /* solver.c: the step matrices of the time schemes */
-PETSC_INTERN PetscErrorCode RollerStepOperatorCreate(Roller, PetscReal, PetscReal, Mat, PetscReal, PetscInt, RollerStepOperator *); /* c_M, c_K, G or NULL, c_G, id */
+PETSC_INTERN PetscErrorCode RollerStepOperatorCreate(Roller, PetscReal, PetscReal, PetscReal, Mat, PetscReal, PetscInt, RollerStepOperator *); /* c_M, c_K, c_D, G or NULL, c_G, id */
 PETSC_INTERN PetscErrorCode RollerStepOperatorUpdateGyroscopic(RollerStepOperator *, PetscReal);
 PETSC_INTERN PetscErrorCode RollerStepOperatorSolve(Roller, const RollerStepOperator *, Vec, Vec, PetscReal); /* b, x, t (for the message) */
 PETSC_INTERN PetscErrorCode RollerStepOperatorDestroy(RollerStepOperator *);

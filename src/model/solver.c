@@ -1,4 +1,4 @@
-/* The step solvers: a step matrix A = c_M M + c_K K of a time scheme (RollerStepOperator), assembled and
+/* The step solvers: a step matrix A = c_M M + c_K K (+ c_D K_d) of a time scheme (RollerStepOperator), assembled and
    factored once and reused by every step, and the defaults of every factorization Roller makes. */
 #include "model/model.h"
 
@@ -90,19 +90,23 @@ static PetscErrorCode StepSolverSetUp(Roller ctx, RollerStepOperator *op)
 }
 
 /*
-  RollerStepOperatorCreate - A = c_M M + c_K K (M, K of ctx->ops), factored: the matrix of a step (or a stage) of a
-  time scheme. With G (the gyroscopic matrix of the centred Coriolis term, or NULL), A = A0 - c_G G, A0 = c_M M + c_K K:
+  RollerStepOperatorCreate - A = c_M M + c_K K + c_D K_d (M, K, K_d of ctx->ops; c_D != 0 only with the Maxwell
+  branches, whose K_d has K's pattern), factored: the matrix of a step (or a stage) of a time scheme. With G (the
+  gyroscopic matrix of the centred Coriolis term, or NULL), A = A0 - c_G G, A0 = c_M M + c_K K + c_D K_d:
   non-symmetric, factored by LU (RollerStepOperatorUpdateGyroscopic changes c_G).
 */
-PetscErrorCode RollerStepOperatorCreate(Roller ctx, PetscReal c_M, PetscReal c_K, Mat G, PetscReal c_G, PetscInt id, RollerStepOperator *op)
+PetscErrorCode RollerStepOperatorCreate(Roller ctx, PetscReal c_M, PetscReal c_K, PetscReal c_D, Mat G, PetscReal c_G, PetscInt id, RollerStepOperator *op)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(op, sizeof(*op)));
   op->c_M = c_M;
   op->c_K = c_K;
+  op->c_D = c_D;
   op->id  = id;
+  PetscCheck(c_D == 0 || ctx->ops.Kd, ctx->comm, PETSC_ERR_PLIB, "A step matrix with the Maxwell branches needs K_d (-rubber maxwell)");
   PetscCall(MatDuplicate(ctx->ops.K, MAT_COPY_VALUES, &op->A));
   PetscCall(MatScale(op->A, c_K));
+  if (c_D != 0) PetscCall(MatAXPY(op->A, c_D, ctx->ops.Kd, SAME_NONZERO_PATTERN));
   if (c_M != 0) PetscCall(MatAXPY(op->A, c_M, ctx->ops.M, UNKNOWN_NONZERO_PATTERN)); /* T^T M T (massless contact nodes) couples more nodes than K */
   if (G) {
     PetscCall(PetscObjectReference((PetscObject)G));
