@@ -258,10 +258,17 @@ PetscErrorCode RollerSchemeChoose(Roller ctx)
 }
 
 /* The chosen scheme's step matrices (after M and K) and its start. */
+/* The scheme's step matrices, and the vectors it keeps beyond the levels registered with the checkpoint. */
 PetscErrorCode RollerSchemeSetUp(Roller ctx)
 {
+  Vec        *kept[ROLLER_SCHEME_KEPT];
+  const char *names[ROLLER_SCHEME_KEPT];
+  PetscInt    n = 0;
+
   PetscFunctionBeginUser;
   if (ctx->scheme->ops->setup) PetscCall((*ctx->scheme->ops->setup)(ctx->scheme, ctx));
+  if (ctx->scheme->ops->kept) PetscCall((*ctx->scheme->ops->kept)(ctx->scheme, ctx, &n, kept, names));
+  for (PetscInt i = 0; i < n; ++i) PetscCall(RollerCheckpointAddVec(ctx, names[i], kept[i], NULL, NULL));
   PetscFunctionReturn(0);
 }
 
@@ -283,15 +290,6 @@ PetscErrorCode RollerSchemeBalance(Roller ctx, RollerStepInfo *info)
 {
   PetscFunctionBeginUser;
   PetscCall((*ctx->scheme->ops->balance)(ctx->scheme, ctx, info));
-  PetscFunctionReturn(0);
-}
-
-/* The vectors the run's scheme keeps beyond the levels (the checkpoint writes and reads them). */
-PetscErrorCode RollerSchemeKept(Roller ctx, PetscInt *n, Vec v[], const char *names[])
-{
-  PetscFunctionBeginUser;
-  *n = 0;
-  if (ctx->scheme && ctx->scheme->ops->kept) PetscCall((*ctx->scheme->ops->kept)(ctx->scheme, ctx, n, v, names));
   PetscFunctionReturn(0);
 }
 

@@ -279,15 +279,15 @@ static PetscErrorCode NewmarkBalance(RollerScheme s, Roller ctx, RollerStepInfo 
 
 /* M xi of the three levels: made from the step's equation, a product of the level would differ in its last bits, so a
    restart reads them from the checkpoint. */
-static PetscErrorCode NewmarkKept(RollerScheme s, Roller ctx, PetscInt *n, Vec v[], const char *names[])
+static PetscErrorCode NewmarkKept(RollerScheme s, Roller ctx, PetscInt *n, Vec *v[], const char *names[])
 {
   Newmark *nm = (Newmark *)s->data;
 
   PetscFunctionBeginUser;
   *n       = 3;
-  v[0]     = ctx->state.Mcur;
-  v[1]     = nm->Mprev;
-  v[2]     = nm->Mprev2;
+  v[0]     = &ctx->state.Mcur;
+  v[1]     = &nm->Mprev;
+  v[2]     = &nm->Mprev2;
   names[0] = "M_xi_k";
   names[1] = "M_xi_k1";
   names[2] = "M_xi_k2";
