@@ -166,10 +166,10 @@ typedef struct {
 /* Time stepping (integrate/timestep.c) */
 typedef struct {
   PetscReal      dt, max_time;
-  PetscBool      dt_set;      /* -ts_dt given (or from the checkpoint); otherwise chosen from -ts_phase_error (model/accuracy.c) */
-  PetscBool      dt_restart;  /* dt from the -restart checkpoint (integrate/checkpoint.c) */
-  PetscReal      phase_error; /* -ts_phase_error: the accuracy target that sets the default dt and h */
-  PetscBool      view;        /* -ts_view: print the chosen discretization and why */
+  PetscBool      dt_set;                     /* -ts_dt given (or from the checkpoint); otherwise chosen from -ts_phase_error (model/accuracy.c) */
+  PetscBool      dt_restart, scheme_restart; /* dt, the scheme from the -restart checkpoint (integrate/checkpoint.c) */
+  PetscReal      phase_error;                /* -ts_phase_error: the accuracy target that sets the default dt and h */
+  PetscBool      view;                       /* -ts_view: print the chosen discretization and why */
   PetscInt       max_steps;
   PetscReal      max_wall;       /* -ts_max_wall: stop with a checkpoint before this many seconds of the process (0: none) */
   PetscLogDouble wall_start;     /* the process's start (integrate/timestep.c) */

@@ -13,8 +13,8 @@
 #include <signal.h>
 #include <stdio.h>
 
-/* The checkpoint's layout: 2 restarts on any number of ranks (the nodes' positions, the identity attributes). Files
-   without it (before) were read in the writer's global order and are refused. */
+/* The checkpoint's format: 2 since a checkpoint holds its nodes' positions and what it was written for (it restarts
+   on any number of ranks). Format 1 files (no format attribute) were read in the writer's numbering: refused. */
 #define ROLLER_CHECKPOINT_FORMAT 2
 
 static volatile sig_atomic_t roller_signal = 0;
@@ -51,7 +51,7 @@ PetscErrorCode RollerCheckpointSetFromOptions(Roller ctx)
 
 /* A component's state in the checkpoint, registered at its set-up (before the restart reads it, after the scheme's
    set-up: RollerCheckpointReadItems): *v by name (the address of the component's field: a step that swaps its vectors
-   is followed), its points at the positions where (x, y per point, v having bs
+   is followed), its points at the positions where ((x, y) per point; v has the same number of points, any number of
    entries per point), a dataset where_name shared by the vectors of the same points; where NULL: the displacement's
    free nodes (where_name "nodes"). Written at every checkpoint, read at a restart (any number of ranks). */
 PetscErrorCode RollerCheckpointAddVec(Roller ctx, const char name[], Vec *v, const char where_name[], Vec where)
@@ -60,7 +60,8 @@ PetscErrorCode RollerCheckpointAddVec(Roller ctx, const char name[], Vec *v, con
 
   PetscFunctionBeginUser;
   PetscCheck(ctx->ck.nitems < ROLLER_CHECKPOINT_ITEMS, ctx->comm, PETSC_ERR_SUP, "Checkpoint item %s: at most %d (ROLLER_CHECKPOINT_ITEMS)", name, ROLLER_CHECKPOINT_ITEMS);
-  for (PetscInt i = 0; i < ctx->ck.nitems; ++i) PetscCheck(strcmp(ctx->ck.items[i].name, name), ctx->comm, PETSC_ERR_ARG_WRONG, "Checkpoint item %s registered twice", name);
+  for (PetscInt i = 0; i < ctx->ck.nitems; ++i) PetscCheck(strcmp(ctx->ck.items[i].name, name) && strcmp(ctx->ck.items[i].where_name, name), ctx->comm, PETSC_ERR_ARG_WRONG, "Checkpoint item %s registered twice", name);
+  for (PetscInt i = 0; i < 3; ++i) PetscCheck(strcmp(history_names[i], name) && strcmp(nodes_name, name), ctx->comm, PETSC_ERR_ARG_WRONG, "Checkpoint item %s: the name of a dataset of the state", name);
   PetscCall(PetscStrncpy(item->name, name, sizeof(item->name)));
   PetscCall(PetscStrncpy(item->where_name, where ? where_name : nodes_name, sizeof(item->where_name)));
   item->v     = v;
@@ -190,6 +191,7 @@ PetscErrorCode RollerCheckpointDiscretization(Roller ctx, const char *path)
     PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "scheme", PETSC_STRING, NULL, &scheme));
     PetscCall(PetscStrncpy(ctx->ts.scheme, scheme, sizeof(ctx->ts.scheme)));
     PetscCall(PetscFree(scheme));
+    ctx->ts.scheme_restart = PETSC_TRUE;
   }
   if (!ctx->disc.degree_set) { /* the degree (P3 is the default only when -mesh_h comes from -ts_phase_error) */
     PetscBool curved_set;

@@ -224,8 +224,9 @@ PetscErrorCode RollerSchemeChoose(Roller ctx)
   PetscCall(PetscInfo(NULL, "-ts_scheme %s, -ts_dt %g: time error of R by T = %g estimated %g, target %g/2\n", ctx->scheme->name, (double)ctx->ts.dt, (double)T, (double)e, (double)ctx->ts.phase_error));
   if (ctx->ts.view) {
     PetscCall(PetscPrintf(ctx->comm, "roller: P%" PetscInt_FMT "%s, %s -mesh_h %g, -ts_scheme %s (%s; order %" PetscInt_FMT ", %" PetscInt_FMT " solve%s a step), -ts_dt %g (%s)", ctx->disc.degree, ctx->mesh.curved ? " curved" : "",
-                          ctx->mesh.file[0] ? "mesh file, not" : (ctx->mesh.h_set ? (ctx->mesh.h_restart ? "from the checkpoint" : "given") : "from -ts_phase_error:"), (double)ctx->mesh.h, ctx->scheme->name, ctx->ts.scheme[0] ? "given" : "the fewest solves",
-                          ctx->scheme->order, ctx->scheme->stages, ctx->scheme->stages > 1 ? "s" : "", (double)ctx->ts.dt, ctx->ts.dt_restart ? "from the checkpoint" : (ctx->ts.dt_set ? "given" : "from -ts_phase_error")));
+                          ctx->mesh.file[0] ? "mesh file, not" : (ctx->mesh.h_set ? (ctx->mesh.h_restart ? "from the checkpoint" : "given") : "from -ts_phase_error:"), (double)ctx->mesh.h, ctx->scheme->name,
+                          ctx->ts.scheme_restart ? "from the checkpoint" : (ctx->ts.scheme[0] ? "given" : "the fewest solves"), ctx->scheme->order, ctx->scheme->stages, ctx->scheme->stages > 1 ? "s" : "", (double)ctx->ts.dt,
+                          ctx->ts.dt_restart ? "from the checkpoint" : (ctx->ts.dt_set ? "given" : "from -ts_phase_error")));
     if (ctx->scheme->ops->view) PetscCall((*ctx->scheme->ops->view)(ctx->scheme, ctx, PETSC_VIEWER_STDOUT_(ctx->comm)));
     PetscCall(PetscPrintf(ctx->comm, "\nroller: radial modes carrying R: w = %g (%.3f of R), %g (%.3f), %g (%.3f), ...; torsional mode w_t = %g (period %g); end time %g; R's time error, the modes' phase errors (T/dt) phase(w dt) weighted: %.3g (target -ts_phase_error/2 = %g)\n",
                           (double)md.w[0], (double)md.a[0], (double)md.w[1], (double)md.a[1], (double)md.w[2], (double)md.a[2], (double)w_t, (double)(2 * PETSC_PI / w_t), (double)T, (double)e, (double)(0.5 * ctx->ts.phase_error)));

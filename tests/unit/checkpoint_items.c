@@ -55,39 +55,37 @@ static PetscErrorCode ItemsRegister(Roller ctx, Items *it)
   PetscFunctionReturn(0);
 }
 
+/* v (bs values per point of where) filled with f of the positions, or checked against it: the largest difference. */
+static PetscErrorCode PointValues(Vec where, Vec v, PetscInt bs, void (*f)(PetscReal, PetscReal, PetscScalar[]), PetscBool check, PetscReal *err)
+{
+  const PetscScalar *x;
+  PetscScalar       *a, fx[3];
+  PetscInt           n;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(where, &n));
+  PetscCall(VecGetArrayRead(where, &x));
+  PetscCall(VecGetArray(v, &a));
+  for (PetscInt p = 0; p < n / 2; ++p) {
+    f(PetscRealPart(x[2 * p]), PetscRealPart(x[2 * p + 1]), fx);
+    for (PetscInt k = 0; k < bs; ++k) {
+      if (check) *err = PetscMax(*err, PetscAbsScalar(a[bs * p + k] - fx[k]));
+      else a[bs * p + k] = fx[k];
+    }
+  }
+  PetscCall(VecRestoreArray(v, &a));
+  PetscCall(VecRestoreArrayRead(where, &x));
+  PetscFunctionReturn(0);
+}
+
 /* Fill (check == FALSE) or check the values against their positions. */
 static PetscErrorCode ItemsValues(Roller ctx, Items *it, PetscBool check)
 {
-  const PetscScalar *x;
-  PetscScalar       *v, f[3];
-  PetscInt           n;
-  PetscReal          err = 0, max;
+  PetscReal err = 0, max;
 
   PetscFunctionBeginUser;
-  PetscCall(VecGetLocalSize(it->centroids, &n));
-  PetscCall(VecGetArrayRead(it->centroids, &x));
-  PetscCall(VecGetArray(it->q, &v));
-  for (PetscInt p = 0; p < n / 2; ++p) {
-    CellValues(PetscRealPart(x[2 * p]), PetscRealPart(x[2 * p + 1]), f);
-    for (PetscInt k = 0; k < 3; ++k) {
-      if (check) err = PetscMax(err, PetscAbsScalar(v[3 * p + k] - f[k]));
-      else v[3 * p + k] = f[k];
-    }
-  }
-  PetscCall(VecRestoreArray(it->q, &v));
-  PetscCall(VecRestoreArrayRead(it->centroids, &x));
-  PetscCall(VecGetLocalSize(ctx->ops.coordinates, &n));
-  PetscCall(VecGetArrayRead(ctx->ops.coordinates, &x));
-  PetscCall(VecGetArray(it->u, &v));
-  for (PetscInt p = 0; p < n / 2; ++p) {
-    NodeValues(PetscRealPart(x[2 * p]), PetscRealPart(x[2 * p + 1]), f);
-    for (PetscInt k = 0; k < 2; ++k) {
-      if (check) err = PetscMax(err, PetscAbsScalar(v[2 * p + k] - f[k]));
-      else v[2 * p + k] = f[k];
-    }
-  }
-  PetscCall(VecRestoreArray(it->u, &v));
-  PetscCall(VecRestoreArrayRead(ctx->ops.coordinates, &x));
+  PetscCall(PointValues(it->centroids, it->q, 3, CellValues, check, &err));
+  PetscCall(PointValues(ctx->ops.coordinates, it->u, 2, NodeValues, check, &err));
   for (PetscInt k = 0; k < 3; ++k) {
     if (check) PetscCheck(it->axle[k] == axle_written[k], PETSC_COMM_SELF, PETSC_ERR_PLIB, "axle[%" PetscInt_FMT "]: read %.17g, written %.17g", k, (double)it->axle[k], (double)axle_written[k]);
     else it->axle[k] = axle_written[k];
