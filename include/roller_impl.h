@@ -204,16 +204,18 @@ typedef struct {
 
 /* Time stepping (integrate/timestep.c) */
 typedef struct {
-  PetscReal     dt, max_time;
-  PetscBool     dt_set;      /* -ts_dt given (or from the checkpoint); otherwise chosen from -ts_phase_error (model/accuracy.c) */
-  PetscBool     dt_restart;  /* dt from the -restart checkpoint (integrate/checkpoint.c) */
-  PetscReal     phase_error; /* -ts_phase_error: the accuracy target that sets the default dt and h */
-  PetscBool     view;        /* -ts_view: print the chosen discretization and why */
-  PetscInt      max_steps;
-  PetscBool     quiet, monitor; /* -quiet: no progress line; -ts_monitor: a line every step */
-  char          scheme[64];     /* -ts_scheme (empty: the one that meets -ts_phase_error with the fewest solves) */
-  RollerScheme *schemes;        /* every registered scheme, set from options; the run's is chosen at set-up */
-  PetscInt      nschemes;
+  PetscReal      dt, max_time;
+  PetscBool      dt_set;                     /* -ts_dt given (or from the checkpoint); otherwise chosen from -ts_phase_error (model/accuracy.c) */
+  PetscBool      dt_restart, scheme_restart; /* dt, the scheme from the -restart checkpoint (integrate/checkpoint.c) */
+  PetscReal      phase_error;                /* -ts_phase_error: the accuracy target that sets the default dt and h */
+  PetscBool      view;                       /* -ts_view: print the chosen discretization and why */
+  PetscInt       max_steps;
+  PetscReal      max_wall;       /* -ts_max_wall: stop with a checkpoint before this many seconds of the process (0: none) */
+  PetscLogDouble wall_start;     /* the process's start (integrate/timestep.c) */
+  PetscBool      quiet, monitor; /* -quiet: no progress line; -ts_monitor: a line every step */
+  char           scheme[64];     /* -ts_scheme (empty: the one that meets -ts_phase_error with the fewest solves) */
+  RollerScheme  *schemes;        /* every registered scheme, set from options; the run's is chosen at set-up */
+  PetscInt       nschemes;
 } RollerTimeParams;
 
 /* The lowest radial breathing and torsional angular frequencies of the annulus (model/accuracy.c) and the radii
@@ -260,10 +262,25 @@ typedef struct {
   PetscReal  skew_defect[2]; /* the damped lab frame's ||A + A^T||/||A|| of A_L and B_L (-1: not built) */
 } RollerEigen;
 
-/* Checkpoint and restart (integrate/checkpoint.c) */
+/* A component's own state in the checkpoint (RollerCheckpointAddVec, RollerCheckpointAddReals in
+   integrate/checkpoint.c): a vector whose points have positions (restarted on any number of ranks by matching
+   them), or n reals that every rank holds */
+#define ROLLER_CHECKPOINT_ITEMS 16
 typedef struct {
-  char     file[PETSC_MAX_PATH_LEN], restart[PETSC_MAX_PATH_LEN];
-  PetscInt every;
+  char       name[64];
+  Vec       *v;              /* the address of a vector (followed when a step swaps it), or NULL: the reals below */
+  Vec        where;          /* the positions of v's points, (x, y) per point, v having the same number of points */
+  char       where_name[64]; /* its dataset ("nodes": the displacement's free nodes, ops.coordinates) */
+  PetscInt   n;
+  PetscReal *values;
+} RollerCheckpointItem;
+
+/* Checkpoint and restart (integrate/checkpoint*.c) */
+typedef struct {
+  char                 file[PETSC_MAX_PATH_LEN], restart[PETSC_MAX_PATH_LEN];
+  PetscInt             every;
+  PetscInt             nitems;
+  RollerCheckpointItem items[ROLLER_CHECKPOINT_ITEMS];
 } RollerCheckpoint;
 
 /* Initial state and verification (integrate/initial.c, verify/mms.c) */

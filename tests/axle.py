@@ -9,10 +9,12 @@ preloaded to -nip_force and driven through a torsional spring and damper by the 
 3. -nip_force F on the sheet at rest (damped): the mean contact force F within 0.5 %, and the hub's indentation that
    of -static at it: the static contact force at that depth within 0.5 % of F.
 4. Rolling with friction on the axle (press, start from rest, drive ripple): the energy balance E^k - E^0 = shaft_work +
-   sheet_work - friction_work - the dissipations within 1e-10 of max E at every step, every dissipation >= 0, and 1
-   and 2 ranks agree (1e-8).
+   sheet_work - friction_work - the dissipations within 1e-10 of max E at every step, every dissipation >= 0, 1 and 2
+   ranks agree (1e-8), and a checkpoint of 1 rank after the spring's anchoring restarted on 2 ranks gives the
+   uninterrupted rows (1e-8): the hub's levels and anchor are in the checkpoint.
 quick: coarse meshes, a few thousand steps (about 20 s)."""
 import math
+import shutil
 
 import numpy as np
 
@@ -92,4 +94,10 @@ c.check(d["slip_nodes"].max() > 0 and np.abs(d["hub_rate"] - math.pi / 10).max()
 d2 = read_csv("roll2.csv")
 worst = max(float(np.abs(d[q] - d2[q]).max() / np.abs(d[q]).max()) for q in ("contact_force", "friction_force", "hub_rate", "axle_y", "drive_torque", "energy"))
 c.check(worst < 1e-8, f"1 and 2 ranks agree: {worst:.2e} (< 1e-8)")
+run(roll + ["-monitor_csv", "part.csv", "-ts_max_steps", 900, "-checkpoint", "roll.h5", "-checkpoint_every", 900])
+shutil.copyfile("part.csv", "restart.csv")
+run(roll + ["-monitor_csv", "restart.csv", "-restart", "roll.h5"], nproc=2)
+d3 = read_csv("restart.csv")
+worst = max(float(np.abs(d[q] - d3[q]).max() / np.abs(d[q]).max()) for q in ("contact_force", "friction_force", "hub_rate", "axle_y", "drive_torque", "energy"))
+c.check(len(d3["t"]) == len(d["t"]) and worst < 1e-8, f"restart at step 900 (t = 18, the spring anchored at 5) from 1 rank on 2: {worst:.2e} (< 1e-8)")
 c.close()

@@ -31,6 +31,7 @@ VALID = {
     ("-ts_max_time", "0"): "the initial state only", ("-ts_max_steps", "-1"): "no cap", ("-ts_max_steps", "0"): "the initial state only",
     ("-solver_redundant_max", "0"): "MUMPS for the non-symmetric step matrices on several ranks (one rank: unused)",
     ("-ic_amplitude", "0"): "zero amplitude", ("-checkpoint_every", "0"): "only on a signal",
+    ("-ts_max_wall", "0"): "no limit", ("-ts_max_wall", "1e300"): "never reached",
     ("-sheet_speed", "-1"): "the sheet backwards", ("-sheet_speed", "0"): "a still sheet",
     ("-obstacle_depth", "0"): "touching only", ("-friction", "0"): "frictionless",
     ("-friction_decay", "0"): "no weakening (needs -friction_static = -friction: refused here)",

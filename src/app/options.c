@@ -139,7 +139,7 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
              RollerMMSTypes[ctx->init.mms]);
   if (ctx->axle.on) { /* what the hub's elimination (model/axle.h) carries */
     PetscCheck(!ctx->eig.on, ctx->comm, PETSC_ERR_SUP, "-axle with -modes: the steady state and the eigenproblem with the hub's unknowns are not built yet (docs/squeal.md section 10)");
-    PetscCheck(!ctx->disc.static_solve && !ctx->ck.restart[0] && ctx->init.mms == ROLLER_MMS_NONE, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes no -static, -restart or -mms");
+    PetscCheck(!ctx->disc.static_solve && ctx->init.mms == ROLLER_MMS_NONE, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes no -static or -mms");
     PetscCheck(ctx->disc.coriolis != ROLLER_CORIOLIS_CENTERED, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes -coriolis_velocity backward or extrapolated, not centered");
     PetscCheck(ctx->disc.contact_mass == ROLLER_CONTACT_MASS_CONSISTENT, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes the consistent mass (-contact_mass consistent), not %s", RollerContactMasses[ctx->disc.contact_mass]);
     PetscCheck(!ctx->disc.clamp_outer, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle cannot be combined with -clamp_outer");

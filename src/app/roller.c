@@ -25,9 +25,9 @@ PetscErrorCode RollerSetUp(Roller ctx)
     PetscCall(PetscOptionsHasHelp(NULL, &help));
     if (help) PetscCall(RollerContactHelp(ctx)); /* -help lists every option, the contact ones too */
   }
-  if (!ctx->eig.on) { /* the step matrices (the contact's condensation with them), and what the scheme keeps */
+  if (!ctx->eig.on) { /* the step matrices (the contact's condensation with them), and what the scheme and the components keep */
     PetscCall(RollerSchemeSetUp(ctx));
-    if (ctx->ck.restart[0]) PetscCall(RollerCheckpointReadKept(ctx, ctx->ck.restart));
+    if (ctx->ck.restart[0]) PetscCall(RollerCheckpointReadItems(ctx, ctx->ck.restart));
   }
   /* The observers, in the order they see every state: the console lines, the outputs (CSV, fields), the
      periodic checkpoint (after the outputs: a restart continues after the CSV row of its step), the MMS errors */

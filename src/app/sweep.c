@@ -224,6 +224,12 @@ PetscErrorCode RollerSweepSetFromOptions(MPI_Comm comm, RollerSweepPlan *plan)
     SETERRQ(comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_slice %s: allowed i,k with k >= 1 and 0 <= i < k (the cases c with c %% k == i)", given);
   }
   PetscCall(CheckUnknown(comm));
+  { /* each case would stop at the limit with its own checkpoint: a sweep stops on SIGTERM and resumes from its journal */
+    PetscBool wall;
+
+    PetscCall(PetscOptionsHasName(NULL, NULL, "-ts_max_wall", &wall));
+    PetscCheck(!wall, comm, PETSC_ERR_ARG_INCOMP, "-ts_max_wall: not with -sweep (a sweep stops on SIGTERM and resumes from its journal, docs/squeal.md section 6)");
+  }
   plan->ncases = plan->nparams ? 1 : 0;
   for (PetscInt q = 0; q < plan->nparams; ++q) {
     PetscCheck(plan->ncases * plan->count[q] <= 10000000, comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep: more than 1e7 cases");

@@ -187,15 +187,15 @@ static PetscErrorCode ComposedSetUp(RollerScheme s, Roller ctx)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode ComposedKept(RollerScheme s, Roller ctx, PetscInt *n, Vec v[], const char *names[])
+static PetscErrorCode ComposedKept(RollerScheme s, Roller ctx, PetscInt *n, Vec *v[], const char *names[])
 {
   Composed *cp = (Composed *)s->data;
 
   PetscFunctionBeginUser;
   *n       = 3;
-  v[0]     = ctx->state.velocity;
-  v[1]     = ctx->state.Mcur;
-  v[2]     = cp->Mv;
+  v[0]     = &ctx->state.velocity;
+  v[1]     = &ctx->state.Mcur;
+  v[2]     = &cp->Mv;
   names[0] = "v_k";
   names[1] = "M_xi_k";
   names[2] = "M_v_k";

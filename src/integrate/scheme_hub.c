@@ -25,12 +25,17 @@ static PetscErrorCode Products(RollerHub *hub, Vec x, PetscReal P[9])
   PetscFunctionReturn(0);
 }
 
-/* The levels at the start of a run (or a restart): q at rest on every level (or the checkpoint's), their products. */
+/* The levels at the start of a run: q at rest on every level (a restart reads them and the anchor after: the checkpoint's
+   items), the products of the body's levels (the checkpoint's already). */
 PetscErrorCode RollerHubSetUp(Roller ctx)
 {
   RollerHub *hub = ctx->axle.hub;
 
   PetscFunctionBeginUser;
+  PetscCall(RollerCheckpointAddReals(ctx, "hub_q_k", 3, hub->s.cur));
+  PetscCall(RollerCheckpointAddReals(ctx, "hub_q_k1", 3, hub->s.prev));
+  PetscCall(RollerCheckpointAddReals(ctx, "hub_q_k2", 3, hub->s.prev2));
+  PetscCall(RollerCheckpointAddReals(ctx, "hub_anchor", 2, hub->s.anchor));
   PetscCall(Products(hub, ctx->state.cur, hub->s.P[0]));
   PetscCall(Products(hub, ctx->state.prev, hub->s.P[1]));
   PetscCall(Products(hub, ctx->state.prev2, hub->s.P[2]));
@@ -165,13 +170,13 @@ PetscErrorCode RollerHubShift(Roller ctx, Vec x)
   PetscCall(PetscArraycpy(s->P[2], s->P[1], 9));
   PetscCall(PetscArraycpy(s->P[1], s->P[0], 9));
   PetscCall(Products(hub, x, s->P[0]));
-  if (!s->anchored && t >= ctx->axle.nip_ramp) {
+  if (s->anchor[0] == 0 && t >= ctx->axle.nip_ramp) {
     PetscReal n[2];
 
     RollerAxleFrame(ctx, t, n);
-    s->anchored = PETSC_TRUE;
-    s->anchor   = n[0] * s->cur[0] + n[1] * s->cur[1];
-    s->jump     = PETSC_TRUE;
+    s->anchor[0] = 1.0;
+    s->anchor[1] = n[0] * s->cur[0] + n[1] * s->cur[1];
+    s->jump      = PETSC_TRUE;
   }
   PetscFunctionReturn(0);
 }

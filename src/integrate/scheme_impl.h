@@ -25,8 +25,9 @@
    (ctx->state.step, .time and the levels cur, prev, prev2 move up one; state.Mcur = M xi^k and state.velocity
    follow); energy: E^k of the newest level; balance: the terms of E^k - E^{k-1} of the last step (docs/model.md
    section 2), added to info; 
-   level (NULL: (xi^k - xi^{k-1})/dt); kept: the vectors the scheme keeps beyond the levels (for the checkpoint,
-   so that a restart repeats the run to the last bit), at most ROLLER_SCHEME_KEPT. */
+   level (NULL: (xi^k - xi^{k-1})/dt); kept: the addresses of the vectors the scheme keeps beyond the levels (the
+   checkpoint's, so that a restart repeats the run to the last bit; addresses because a step swaps the vectors), at
+   most ROLLER_SCHEME_KEPT. */
 typedef struct {
   PetscErrorCode (*setfromoptions)(RollerScheme, Roller, PetscOptionItems *);
   PetscErrorCode (*phase)(RollerScheme, PetscReal, PetscReal *);
@@ -36,7 +37,7 @@ typedef struct {
   PetscErrorCode (*step)(RollerScheme, Roller);
   PetscErrorCode (*energy)(RollerScheme, Roller, PetscReal *);
   PetscErrorCode (*balance)(RollerScheme, Roller, RollerStepInfo *);
-  PetscErrorCode (*kept)(RollerScheme, Roller, PetscInt *, Vec[], const char *[]);
+  PetscErrorCode (*kept)(RollerScheme, Roller, PetscInt *, Vec *[], const char *[]); /* the fields' addresses: the levels swap */
   PetscErrorCode (*view)(RollerScheme, Roller, PetscViewer);
   PetscErrorCode (*destroy)(RollerScheme);
 } RollerSchemeOps;
@@ -90,7 +91,7 @@ PETSC_INTERN PetscErrorCode      RollerMaxwellRightHandSide(RollerMaxwell, Petsc
 PETSC_INTERN PetscErrorCode      RollerMaxwellNewLevel(RollerMaxwell, Roller);
 PETSC_INTERN PetscReal           RollerMaxwellDissipation(RollerMaxwell, Roller);
 PETSC_INTERN PetscErrorCode      RollerMaxwellEnergyAdd(RollerMaxwell, Roller, PetscReal *);
-PETSC_INTERN PetscErrorCode      RollerMaxwellKept(RollerMaxwell, PetscInt *, Vec[], const char *[]);
+PETSC_INTERN PetscErrorCode      RollerMaxwellKept(RollerMaxwell, PetscInt *, Vec *[], const char *[]);
 PETSC_INTERN PetscErrorCode      RollerMaxwellDestroy(RollerMaxwell *);
 
 /* The schemes' create functions, for RollerSchemesRegisterAll */

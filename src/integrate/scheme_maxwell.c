@@ -173,18 +173,19 @@ PetscErrorCode RollerMaxwellEnergyAdd(RollerMaxwell mx, Roller ctx, PetscReal *e
   PetscFunctionReturn(0);
 }
 
-/* The z_i and P_i = K_d z_i of the kept levels, appended to v[*n], names[*n] (the checkpoint's). */
-PetscErrorCode RollerMaxwellKept(RollerMaxwell mx, PetscInt *n, Vec v[], const char *names[])
+/* The addresses of the z_i and P_i = K_d z_i of the kept levels (the levels swap), appended to v[*n], names[*n] (the
+   checkpoint's). */
+PetscErrorCode RollerMaxwellKept(RollerMaxwell mx, PetscInt *n, Vec *v[], const char *names[])
 {
   PetscFunctionBeginUser;
   for (PetscInt l = 0; l < mx->nlev; ++l)
     for (PetscInt i = 0; i < mx->n; ++i) {
       const PetscInt k = 2 * (l * mx->n + i);
 
-      v[*n]     = mx->z[l][i];
+      v[*n]     = &mx->z[l][i];
       names[*n] = mx->names[k];
       (*n)++;
-      v[*n]     = mx->P[l][i];
+      v[*n]     = &mx->P[l][i];
       names[*n] = mx->names[k + 1];
       (*n)++;
     }

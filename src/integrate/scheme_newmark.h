@@ -16,6 +16,6 @@ typedef struct {
 
 PETSC_INTERN PetscErrorCode RollerNewmarkEnergy(RollerScheme, Roller, PetscReal *);
 PETSC_INTERN PetscErrorCode RollerNewmarkBalance(RollerScheme, Roller, RollerStepInfo *);
-PETSC_INTERN PetscErrorCode RollerNewmarkKept(RollerScheme, Roller, PetscInt *, Vec[], const char *[]);
+PETSC_INTERN PetscErrorCode RollerNewmarkKept(RollerScheme, Roller, PetscInt *, Vec *[], const char *[]);
 
 #endif

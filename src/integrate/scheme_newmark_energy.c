@@ -65,10 +65,10 @@ PetscErrorCode RollerNewmarkBalance(RollerScheme s, Roller ctx, RollerStepInfo *
 
 /* M xi of the three levels: made from the step's equation, a product of the level would differ in its last bits, so a
    restart reads them from the checkpoint; and the Maxwell branches'. */
-PetscErrorCode RollerNewmarkKept(RollerScheme s, Roller ctx, PetscInt *n, Vec v[], const char *names[])
+PetscErrorCode RollerNewmarkKept(RollerScheme s, Roller ctx, PetscInt *n, Vec *v[], const char *names[])
 {
   Newmark          *nm       = (Newmark *)s->data;
-  const Vec         M[3]     = {ctx->state.Mcur, nm->Mprev, nm->Mprev2};
+  Vec              *M[3]     = {&ctx->state.Mcur, &nm->Mprev, &nm->Mprev2}; /* the levels swap: their fields' addresses */
   const char *const Mname[3] = {"M_xi_k", "M_xi_k1", "M_xi_k2"};
 
   PetscFunctionBeginUser;

@@ -58,7 +58,7 @@ void RollerAxleFrame(Roller ctx, PetscReal t, PetscReal n[2])
 void RollerAxleSprings(Roller ctx, PetscReal S[9])
 {
   const RollerAxle *ax = &ctx->axle;
-  const PetscReal   k  = ax->hub && ax->hub->s.anchored ? ax->stiffness : 0.0;
+  const PetscReal   k  = ax->hub && ax->hub->s.anchor[0] != 0 ? ax->stiffness : 0.0;
 
   for (PetscInt i = 0; i < 9; ++i) S[i] = 0.0;
   S[0] = S[4] = k;
@@ -81,7 +81,7 @@ void RollerAxleForce(Roller ctx, PetscReal t, PetscReal f[3])
   PetscReal        n[2], a;
 
   RollerAxleFrame(ctx, t, n);
-  a    = -RollerAxleNipForce(ctx, t) + (hub->s.anchored ? ctx->axle.stiffness * hub->s.anchor : 0.0);
+  a    = -RollerAxleNipForce(ctx, t) + (hub->s.anchor[0] != 0 ? ctx->axle.stiffness * hub->s.anchor[1] : 0.0);
   f[0] = a * n[0];
   f[1] = a * n[1];
   f[2] = 0.0;

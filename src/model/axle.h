@@ -34,9 +34,8 @@ typedef struct {
   PetscReal load[3];      /* the q rows of the step's load F^{k-1} (rotation, preload, anchor) */
   PetscReal reaction[3];  /* the guide's reaction on q of the last step (the constraint's force) */
   PetscReal delta[3];     /* Dz b_q - q^k: C delta completes the body's equation for M xi^k */
-  PetscReal anchor;       /* Y at which the spring was anchored (the end of -nip_ramp) */
-  PetscBool anchored;
-  PetscBool jump; /* anchored at the last step: its balance adds the spring's quadratic energy */
+  PetscReal anchor[2];    /* 1 once the spring is anchored (the end of -nip_ramp), and Y there (checkpointed) */
+  PetscBool jump;         /* anchored at the last step: its balance adds the spring's quadratic energy */
 } RollerHubState;
 
 typedef struct _n_RollerHub RollerHub;
