@@ -265,7 +265,7 @@ typedef struct {
 /* A component's own state in the checkpoint (RollerCheckpointAddVec, RollerCheckpointAddReals in
    integrate/checkpoint.c): a vector whose points have positions (restarted on any number of ranks by matching
    them), or n reals that every rank holds */
-#define ROLLER_CHECKPOINT_ITEMS 16
+#define ROLLER_CHECKPOINT_ITEMS (3 + 4 * ROLLER_MAX_BRANCHES + 16) /* the scheme's kept vectors (Maxwell: 4 a branch) and the components' state */
 typedef struct {
   char       name[64];
   Vec       *v;              /* the address of a vector (followed when a step swaps it), or NULL: the reals below */

@@ -27,6 +27,7 @@ PetscErrorCode RollerSetUp(Roller ctx)
   }
   if (!ctx->eig.on) { /* the step matrices (the contact's condensation with them), and what the scheme and the components keep */
     PetscCall(RollerSchemeSetUp(ctx));
+    PetscCall(RollerCheckpointRegister(ctx));
     if (ctx->ck.restart[0]) PetscCall(RollerCheckpointReadItems(ctx, ctx->ck.restart));
   }
   /* The observers, in the order they see every state: the console lines, the outputs (CSV, fields), the

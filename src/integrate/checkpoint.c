@@ -70,6 +70,28 @@ PetscErrorCode RollerCheckpointAddVec(Roller ctx, const char name[], Vec *v, con
   PetscFunctionReturn(0);
 }
 
+/* What the run keeps beyond the levels: the scheme's vectors (its kept products and internal fields, by address: the
+   levels swap) and, with -axle, the hub's levels and its spring's anchor (model/axle.h). After the scheme's set-up. */
+PetscErrorCode RollerCheckpointRegister(Roller ctx)
+{
+  Vec        *kept[ROLLER_SCHEME_KEPT];
+  const char *names[ROLLER_SCHEME_KEPT];
+  PetscInt    n;
+
+  PetscFunctionBeginUser;
+  PetscCall(RollerSchemeKept(ctx, &n, kept, names));
+  for (PetscInt i = 0; i < n; ++i) PetscCall(RollerCheckpointAddVec(ctx, names[i], kept[i], NULL, NULL));
+  if (ctx->axle.hub) {
+    RollerHubState *s = &ctx->axle.hub->s;
+
+    PetscCall(RollerCheckpointAddReals(ctx, "hub_q_k", 3, s->cur));
+    PetscCall(RollerCheckpointAddReals(ctx, "hub_q_k1", 3, s->prev));
+    PetscCall(RollerCheckpointAddReals(ctx, "hub_q_k2", 3, s->prev2));
+    PetscCall(RollerCheckpointAddReals(ctx, "hub_anchor", 2, s->anchor));
+  }
+  PetscFunctionReturn(0);
+}
+
 /* n reals by name, the same on every rank (rank 0's are written; a restart gives them to every rank). */
 PetscErrorCode RollerCheckpointAddReals(Roller ctx, const char name[], PetscInt n, PetscReal values[])
 {

@@ -267,17 +267,20 @@ PetscErrorCode RollerSchemeChoose(Roller ctx)
 }
 
 /* The chosen scheme's step matrices (after M and K) and its start. */
-/* The scheme's step matrices, and the vectors it keeps beyond the levels registered with the checkpoint. */
+/* The scheme's step matrices and what it keeps (RollerSchemeKept: the checkpoint registers them). */
 PetscErrorCode RollerSchemeSetUp(Roller ctx)
 {
-  Vec        *kept[ROLLER_SCHEME_KEPT];
-  const char *names[ROLLER_SCHEME_KEPT];
-  PetscInt    n = 0;
-
   PetscFunctionBeginUser;
   if (ctx->scheme->ops->setup) PetscCall((*ctx->scheme->ops->setup)(ctx->scheme, ctx));
-  if (ctx->scheme->ops->kept) PetscCall((*ctx->scheme->ops->kept)(ctx->scheme, ctx, &n, kept, names));
-  for (PetscInt i = 0; i < n; ++i) PetscCall(RollerCheckpointAddVec(ctx, names[i], kept[i], NULL, NULL));
+  PetscFunctionReturn(0);
+}
+
+/* The addresses of the vectors the scheme keeps beyond the levels (at most ROLLER_SCHEME_KEPT) and their names. */
+PetscErrorCode RollerSchemeKept(Roller ctx, PetscInt *n, Vec *kept[], const char *names[])
+{
+  PetscFunctionBeginUser;
+  *n = 0;
+  if (ctx->scheme->ops->kept) PetscCall((*ctx->scheme->ops->kept)(ctx->scheme, ctx, n, kept, names));
   PetscFunctionReturn(0);
 }
 

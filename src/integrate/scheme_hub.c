@@ -26,16 +26,12 @@ static PetscErrorCode Products(RollerHub *hub, Vec x, PetscReal P[9])
 }
 
 /* The levels at the start of a run: q at rest on every level (a restart reads them and the anchor after: the checkpoint's
-   items), the products of the body's levels (the checkpoint's already). */
+   items, RollerCheckpointRegister), the products of the body's levels (the checkpoint's already). */
 PetscErrorCode RollerHubSetUp(Roller ctx)
 {
   RollerHub *hub = ctx->axle.hub;
 
   PetscFunctionBeginUser;
-  PetscCall(RollerCheckpointAddReals(ctx, "hub_q_k", 3, hub->s.cur));
-  PetscCall(RollerCheckpointAddReals(ctx, "hub_q_k1", 3, hub->s.prev));
-  PetscCall(RollerCheckpointAddReals(ctx, "hub_q_k2", 3, hub->s.prev2));
-  PetscCall(RollerCheckpointAddReals(ctx, "hub_anchor", 2, hub->s.anchor));
   PetscCall(Products(hub, ctx->state.cur, hub->s.P[0]));
   PetscCall(Products(hub, ctx->state.prev, hub->s.P[1]));
   PetscCall(Products(hub, ctx->state.prev2, hub->s.P[2]));
