@@ -1,6 +1,6 @@
 /* The generalized Maxwell solid in the three-level schemes (-rubber maxwell, docs/model.md section 2.2). Branch i: a
-   nodal displacement-like field z_i (the branch's viscous strain is eps[z_i], exactly: the strain is linear in the
-   displacement and the flow rule is linear), stored energy 1/2 g_i (xi - z_i) . K_d (xi - z_i), flow rule
+   nodal displacement-like field z_i (the branch's viscous strain is dev eps[z_i], exactly: the strain is linear in the
+   displacement and the flow rule is linear; docs/model.md section 1.1), stored energy 1/2 g_i (xi - z_i) . K_d (xi - z_i), flow rule
    tau_i z_i' = xi - z_i. In the step's stiffness term K xbar, xbar = beta xi^k + (1 - 2 beta) xi^{k-1} + beta xi^{k-2},
    the branches add sum_i g_i K_d m_i, the flow rule by the midpoint rule,
      z_i^new - z_i^old = 2 a_i m_i,   m_i = xbar - (z_i^new + z_i^old)/2 = (xbar - z_i^old)/(1 + a_i),
@@ -12,7 +12,8 @@
                                branch energy 1/2 sum_i g_i (y^k - z_i^k) . K_d (y^k - z_i^k).
    Paired with D/2 = (xi^k - xi^{k-2})/2, the branch forces' work is the change of their energy plus the dissipation
    g_i (dt/tau_i) m_i . K_d m_i >= 0: the scheme's balance stays exact. No product with K_d but K_d xi^k a step: the
-   products P_i = K_d z_i follow the z_i (P_i^new = P_i^old + 2 a_i K_d m_i, K_d m_i from K_d xbar and P_i^old) and the
+   products P_i = K_d z_i follow the z_i (P_i^new = P_i^old + 2 a_i K_d m_i, K_d m_i from K_d xbar and P_i^old; their
+   round-off against K_d z_i does not accumulate: the update contracts it by (1 - a_i)/(1 + a_i) a step) and the
    checkpoint keeps them with the z_i (scheme's kept vectors), so that a restart repeats the run to the last bit. */
 #include "scheme_impl.h"
 
