@@ -143,7 +143,6 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
     PetscCheck(ctx->disc.coriolis != ROLLER_CORIOLIS_CENTERED, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes -coriolis_velocity backward or extrapolated, not centered");
     PetscCheck(ctx->disc.contact_mass == ROLLER_CONTACT_MASS_CONSISTENT, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes the consistent mass (-contact_mass consistent), not %s", RollerContactMasses[ctx->disc.contact_mass]);
     PetscCheck(!ctx->disc.clamp_outer, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle cannot be combined with -clamp_outer");
-    PetscCheck(ctx->material.rubber != ROLLER_RUBBER_MAXWELL, ctx->comm, PETSC_ERR_SUP, "-axle with -rubber maxwell: the branches' coupling with the hub is not built yet");
   }
   if (ctx->disc.static_solve) { /* one step from rest to t = max_time with A = K: the right-hand side is 0 */
     ctx->ts.dt        = ctx->ts.max_time;

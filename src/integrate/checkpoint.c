@@ -88,6 +88,7 @@ PetscErrorCode RollerCheckpointRegister(Roller ctx)
     PetscCall(RollerCheckpointAddReals(ctx, "hub_q_k1", 3, s->prev));
     PetscCall(RollerCheckpointAddReals(ctx, "hub_q_k2", 3, s->prev2));
     PetscCall(RollerCheckpointAddReals(ctx, "hub_anchor", 2, s->anchor));
+    if (ctx->material.rubber == ROLLER_RUBBER_MAXWELL) PetscCall(RollerCheckpointAddReals(ctx, "hub_zeta", 2 * ROLLER_MAX_BRANCHES * 3, &s->zeta[0][0][0]));
   }
   PetscFunctionReturn(0);
 }

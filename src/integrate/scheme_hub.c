@@ -8,20 +8,22 @@
 #include "scheme_impl.h"
 #include "model/model.h"
 
-/* The products P = (C_M . x, C_K . x, R C_M . x) of a body level. */
-static PetscErrorCode Products(RollerHub *hub, Vec x, PetscReal P[9])
+/* The products P = (C_M . x, C_K . x, R C_M . x, C_D . x) of a body level (C_D: with the Maxwell branches, else 0). */
+static PetscErrorCode Products(RollerHub *hub, Vec x, PetscReal P[12])
 {
-  Vec         v[9];
-  PetscScalar d[9];
+  const PetscInt n = hub->c.CD[0] ? 12 : 9;
+  Vec            v[12];
+  PetscScalar    d[12];
 
   PetscFunctionBeginUser;
   for (PetscInt j = 0; j < 3; ++j) {
     v[j]     = hub->c.CM[j];
     v[3 + j] = hub->c.CK[j];
     v[6 + j] = hub->c.RCM[j];
+    v[9 + j] = hub->c.CD[j];
   }
-  PetscCall(VecMDot(x, 9, v, d));
-  for (PetscInt j = 0; j < 9; ++j) P[j] = PetscRealPart(d[j]);
+  PetscCall(VecMDot(x, n, v, d));
+  for (PetscInt j = 0; j < 12; ++j) P[j] = j < n ? PetscRealPart(d[j]) : 0.0;
   PetscFunctionReturn(0);
 }
 
@@ -38,7 +40,7 @@ PetscErrorCode RollerHubSetUp(Roller ctx)
   PetscFunctionReturn(0);
 }
 
-/* D_A of the step matrix op (scheme coefficient beta, drive damper c_d/(2 dt)). */
+/* D_A of the step matrix op (scheme coefficient beta, drive damper c_d/(2 dt), the Maxwell branches' c_D). */
 static void StepD(Roller ctx, const RollerStepOperator *op, PetscReal beta, PetscReal DA[9])
 {
   const RollerHub *hub = ctx->axle.hub;
@@ -46,7 +48,7 @@ static void StepD(Roller ctx, const RollerStepOperator *op, PetscReal beta, Pets
   PetscReal        S[9];
 
   RollerAxleSprings(ctx, S);
-  for (PetscInt i = 0; i < 9; ++i) DA[i] = op->c_M * hub->c.DM[i] + op->c_K * hub->c.DK[i] + beta * S[i];
+  for (PetscInt i = 0; i < 9; ++i) DA[i] = op->c_M * hub->c.DM[i] + op->c_K * hub->c.DK[i] + op->c_D * hub->c.DD[i] + beta * S[i];
   for (PetscInt i = 0; i < 3; ++i) DA[4 * i] += H[i] / (dt * dt);
   DA[8] += ctx->axle.drive_damping / (2.0 * dt);
 }
@@ -62,7 +64,7 @@ static void StepD(Roller ctx, const RollerStepOperator *op, PetscReal beta, Pets
   -RCM . a), D_M, d_x, the rigid loads' rows l_e, l_c, the hub's own mass (m (R a_u + theta'^2 u)) and inertia
   (-I theta''), the preload and the anchor.
 */
-PetscErrorCode RollerHubStepBegin(Roller ctx, RollerStepOperator *op, PetscReal beta, PetscReal t1, const PetscReal c[3], Vec rhs, Vec load, Vec work)
+PetscErrorCode RollerHubStepBegin(Roller ctx, RollerStepOperator *op, RollerMaxwell mx, PetscReal beta, PetscReal t1, const PetscReal c[3], Vec rhs, Vec load, Vec work)
 {
   RollerHub      *hub = ctx->axle.hub;
   RollerHubState *s   = &hub->s;
@@ -121,6 +123,7 @@ PetscErrorCode RollerHubStepBegin(Roller ctx, RollerStepOperator *op, PetscReal 
   s->bq[0] += m / (dt * dt) * (2.0 * s->cur[0] - s->prev[0]);
   s->bq[1] += m / (dt * dt) * (2.0 * s->cur[1] - s->prev[1]);
   s->bq[2] += ctx->axle.inertia / (dt * dt) * (2.0 * s->cur[2] - s->prev[2]) + ctx->axle.drive_damping / (2.0 * dt) * s->prev[2];
+  if (mx) PetscCall(RollerMaxwellHubRightHandSide(mx, ctx, rhs, s->bq)); /* the branches' known forces on both */
   /* the elimination at the new level's time t1 + dt */
   StepD(ctx, op, beta, DA);
   RollerAxleProject(ctx, t1 + dt, DA, s->Dz);

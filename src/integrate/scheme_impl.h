@@ -77,7 +77,7 @@ PETSC_INTERN PetscErrorCode RollerSchemeStage(Roller, RollerStageWork *, RollerS
    beta, t_{k-1}, the Coriolis velocity's coefficients, rhs, load, scratch), after the solve (the new body level), after
    the levels moved up (the new cur); q's terms of the energy and the balance (beta) */
 PETSC_INTERN PetscErrorCode RollerHubSetUp(Roller);
-PETSC_INTERN PetscErrorCode RollerHubStepBegin(Roller, RollerStepOperator *, PetscReal, PetscReal, const PetscReal[3], Vec, Vec, Vec);
+
 PETSC_INTERN PetscErrorCode RollerHubStepEnd(Roller, RollerStepOperator *, PetscReal, Vec);
 PETSC_INTERN PetscErrorCode RollerHubShift(Roller, Vec);
 PETSC_INTERN PetscErrorCode RollerHubEnergy(Roller, PetscReal, PetscReal *);
@@ -93,6 +93,8 @@ PETSC_INTERN PetscReal           RollerMaxwellDissipation(RollerMaxwell, Roller)
 PETSC_INTERN PetscErrorCode      RollerMaxwellEnergyAdd(RollerMaxwell, Roller, PetscReal *);
 PETSC_INTERN PetscErrorCode      RollerMaxwellKept(RollerMaxwell, PetscInt *, Vec *[], const char *[]);
 PETSC_INTERN PetscErrorCode      RollerMaxwellDestroy(RollerMaxwell *);
+PETSC_INTERN PetscErrorCode      RollerMaxwellHubRightHandSide(RollerMaxwell, Roller, Vec, PetscReal[3]); /* -axle: b, b_q */
+PETSC_INTERN PetscErrorCode      RollerHubStepBegin(Roller, RollerStepOperator *, RollerMaxwell, PetscReal, PetscReal, const PetscReal[3], Vec, Vec, Vec);
 
 /* The schemes' create functions, for RollerSchemesRegisterAll */
 PETSC_INTERN PetscErrorCode RollerSchemeCreate_DMF(RollerScheme);

@@ -98,7 +98,7 @@ static PetscErrorCode HubStepBegin(Roller ctx, Newmark *nm, PetscReal t1)
 
   PetscFunctionBeginUser;
   CoriolisVelocity(ctx, c);
-  PetscCall(RollerHubStepBegin(ctx, nm->op, nm->beta, t1, c, ctx->state.rhs, ctx->state.load, ctx->state.work));
+  PetscCall(RollerHubStepBegin(ctx, nm->op, nm->mx, nm->beta, t1, c, ctx->state.rhs, ctx->state.load, ctx->state.work));
   PetscFunctionReturn(0);
 }
 
@@ -214,8 +214,8 @@ static PetscErrorCode NewmarkStep(RollerScheme s, Roller ctx)
   ctx->state.Kprev2 = ctx->state.Kprev;
   ctx->state.Kprev  = ctx->state.Kcur;
   ctx->state.Kcur   = tmp;
+  if (ctx->axle.on) PetscCall(RollerHubShift(ctx, ctx->state.cur)); /* before NewLevel: the branches' update reads q^k */
   PetscCall(NewLevel(ctx, nm, second));
-  if (ctx->axle.on) PetscCall(RollerHubShift(ctx, ctx->state.cur));
   ctx->state.step++;
   ctx->state.time = ctx->state.step * dt;
   PetscFunctionReturn(0);

@@ -264,12 +264,24 @@ PetscErrorCode RollerAxleSetUp(Roller ctx)
       c->DM[3 * i + j] = c->DM[3 * j + i] = 0.5 * (c->DM[3 * i + j] + c->DM[3 * j + i]);
       c->DK[3 * i + j] = c->DK[3 * j + i] = 0.5 * (c->DK[3 * i + j] + c->DK[3 * j + i]);
     }
+  if (ctx->ops.Kd) { /* the Maxwell branches' deviatoric stiffness annihilates the rigid fields too */
+    for (PetscInt j = 0; j < 3; ++j) {
+      PetscCall(VecDuplicate(r[0], &c->CD[j]));
+      PetscCall(MatMult(ctx->ops.Kd, r[j], c->CD[j]));
+      PetscCall(VecScale(c->CD[j], -1.0));
+    }
+    for (PetscInt i = 0; i < 3; ++i)
+      for (PetscInt j = 0; j < 3; ++j) c->DD[3 * i + j] = -Dot(r[i], c->CD[j]);
+    for (PetscInt i = 0; i < 3; ++i)
+      for (PetscInt j = 0; j < i; ++j) c->DD[3 * i + j] = c->DD[3 * j + i] = 0.5 * (c->DD[3 * i + j] + c->DD[3 * j + i]);
+    for (PetscInt j = 0; j < 3; ++j) c->RF[j] = r[j]; /* kept: the branches' products r_f . K_d z_i */
+  }
   c->mass    = T[0];
   c->inertia = T[8];
   if (ctx->axle.mass == 0) ctx->axle.mass = ctx->material.density * c->mass;
   if (ctx->axle.inertia == 0) ctx->axle.inertia = ctx->material.density * c->inertia;
   for (PetscInt j = 0; j < 3; ++j) {
-    PetscCall(VecDestroy(&r[j]));
+    if (!c->RF[j]) PetscCall(VecDestroy(&r[j]));
     PetscCall(VecDestroy(&L[j]));
   }
   PetscCall(VecDestroy(&Mr));
@@ -290,6 +302,8 @@ PetscErrorCode RollerAxleDestroy(Roller ctx)
     PetscCall(VecDestroy(&hub->c.CM[j]));
     PetscCall(VecDestroy(&hub->c.CK[j]));
     PetscCall(VecDestroy(&hub->c.RCM[j]));
+    PetscCall(VecDestroy(&hub->c.CD[j]));
+    PetscCall(VecDestroy(&hub->c.RF[j]));
   }
   PetscCall(VecDestroy(&hub->c.cx));
   PetscCall(PetscFree(ctx->axle.hub));

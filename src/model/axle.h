@@ -23,10 +23,14 @@ typedef struct {
   PetscReal dx[3];         /* r_G^T M_GG x_G */
   PetscReal le[3], lc[3];  /* r_G^T (M R(-pi/2) x)_G, r_G^T (M x)_G: the rigid loads on the hub's rows */
   PetscReal mass, inertia; /* the body's mass int 1 and polar moment int |x|^2 (per unit density) */
+  Vec       CD[3], RF[3];  /* -rubber maxwell: K_d,fG r_G = -K_d r_f, and the rigid fields r_f themselves (NULL otherwise) */
+  PetscReal DD[9];         /* r_G^T K_d,GG r_G */
 } RollerHubCoupling;
 
 /* The hub's levels (like ctx->state's: cur = q^{k-1} during a step, then q^k), the products P = (CM . xi, CK . xi,
-   RCM . xi) of the body's levels, and what a step keeps for its diagnostics. */
+   RCM . xi, CD . xi) of the body's levels, the Maxwell branches' hub parts zeta_i (the branch field z_i on Gamma_D is the
+   rigid field of zeta_i: tau_i zeta_i' = q - zeta_i; indexed like the branches' levels, integrate/scheme_maxwell.c),
+   and what a step keeps for its diagnostics. */
 typedef struct {
   PetscReal next[3], cur[3], prev[3], prev2[3];
   PetscReal P[3][9];      /* the products of the levels cur, prev, prev2 */

@@ -156,7 +156,7 @@ PetscErrorCode RollerStepOperatorSolve(Roller ctx, const RollerStepOperator *op,
   PetscFunctionReturn(0);
 }
 
-/* The hub's border of a step matrix (-axle): C = c_M C_M + c_K C_K (the step matrix's own coefficients on
+/* The hub's border of a step matrix (-axle): C = c_M C_M + c_K C_K + c_D C_D (the step matrix's own coefficients on
    the couplings), Y = A^{-1} C (three solves, once) and C^T Y. Its W follows the step (RollerStepOperatorUpdateBorder). */
 PetscErrorCode RollerStepOperatorSetBorder(Roller ctx, RollerStepOperator *op)
 {
@@ -168,6 +168,7 @@ PetscErrorCode RollerStepOperatorSetBorder(Roller ctx, RollerStepOperator *op)
   for (PetscInt j = 0; j < 3; ++j) {
     PetscCall(VecDuplicate(hub->c.CM[j], &bd->C[j]));
     PetscCall(VecAXPBYPCZ(bd->C[j], op->c_M, op->c_K, 0.0, hub->c.CM[j], hub->c.CK[j]));
+    if (op->c_D != 0) PetscCall(VecAXPY(bd->C[j], op->c_D, hub->c.CD[j])); /* the Maxwell branches' instantaneous stiffness */
     PetscCall(VecDuplicate(hub->c.CM[j], &bd->Y[j]));
     PetscCall(VecZeroEntries(bd->Y[j]));
     PetscCall(RollerStepOperatorSolve(ctx, op, bd->C[j], bd->Y[j], 0.0)); /* op->border not set yet: A^{-1} C */
