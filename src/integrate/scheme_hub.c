@@ -166,8 +166,8 @@ PetscErrorCode RollerHubShift(Roller ctx, Vec x)
   PetscCall(PetscArraycpy(s->prev2, s->prev, 3));
   PetscCall(PetscArraycpy(s->prev, s->cur, 3));
   PetscCall(PetscArraycpy(s->cur, s->next, 3));
-  PetscCall(PetscArraycpy(s->P[2], s->P[1], 9));
-  PetscCall(PetscArraycpy(s->P[1], s->P[0], 9));
+  PetscCall(PetscArraycpy(s->P[2], s->P[1], 12));
+  PetscCall(PetscArraycpy(s->P[1], s->P[0], 12));
   PetscCall(Products(hub, x, s->P[0]));
   if (s->anchor[0] == 0 && t >= ctx->axle.nip_ramp) {
     PetscReal n[2];

@@ -266,7 +266,7 @@ PetscErrorCode RollerMaxwellEnergyAdd(RollerMaxwell mx, Roller ctx, PetscReal *e
       PetscCall(VecDot(mx->m, mx->Km, &w));
       *energy += (mx->nlev == 2 ? 0.25 : 0.5) * mx->g[i] * PetscRealPart(w);
       if (ctx->axle.hub) {
-        PetscReal e;
+        PetscReal e = 0.0;
 
         PetscCall(HubBranchEnergy(mx, ctx, i, l, &e));
         *energy += (mx->nlev == 2 ? 0.25 : 0.5) * mx->g[i] * e;

@@ -33,7 +33,8 @@ typedef struct {
    and what a step keeps for its diagnostics. */
 typedef struct {
   PetscReal next[3], cur[3], prev[3], prev2[3];
-  PetscReal P[3][9];      /* the products of the levels cur, prev, prev2 */
+  PetscReal P[3][12]; /* the products of the levels cur, prev, prev2 */
+  PetscReal zeta[2][ROLLER_MAX_BRANCHES][3];
   PetscReal bq[3], Dz[9]; /* the step's q right-hand side and Z (Z^T D_A Z)^-1 Z^T */
   PetscReal load[3];      /* the q rows of the step's load F^{k-1} (rotation, preload, anchor) */
   PetscReal reaction[3];  /* the guide's reaction on q of the last step (the constraint's force) */
