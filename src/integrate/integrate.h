@@ -32,8 +32,8 @@ PETSC_INTERN PetscErrorCode RollerInitialMonitorSetUp(Roller);
 PETSC_INTERN PetscErrorCode RollerSchemeRegister(const char[], PetscErrorCode (*)(RollerScheme));
 PETSC_INTERN PetscErrorCode RollerSchemesRegisterAll(void);
 PETSC_INTERN PetscErrorCode RollerSchemeSetFromOptions(Roller);
-PETSC_INTERN PetscErrorCode RollerSchemeChoose(Roller); /* the scheme and the default dt (after the mesh is read) */
-PETSC_INTERN PetscErrorCode RollerSchemeSetUp(Roller);  /* its step matrices (after M, K and the contact) */
+PETSC_INTERN PetscErrorCode RollerSchemeChoose(Roller);                                    /* the scheme and the default dt (after the mesh is read) */
+PETSC_INTERN PetscErrorCode RollerSchemeSetUp(Roller);                                     /* its step matrices (after M, K and the contact) */
 PETSC_INTERN PetscErrorCode RollerSchemeKept(Roller, PetscInt *, Vec *[], const char *[]); /* the addresses of what it keeps beyond the levels */
 PETSC_INTERN PetscErrorCode RollerSchemeStep(Roller);
 PETSC_INTERN PetscErrorCode RollerSchemeEnergy(Roller, PetscReal *);
@@ -51,7 +51,7 @@ PETSC_INTERN PetscErrorCode RollerCheckpointSetFromOptions(Roller);
 PETSC_INTERN PetscErrorCode RollerCheckpointMonitorSetUp(Roller);
 PETSC_INTERN PetscErrorCode RollerCheckpointAddVec(Roller, const char[], Vec *, const char[], Vec); /* name, &v, where_name, where (NULL, NULL: the nodes) */
 PETSC_INTERN PetscErrorCode RollerCheckpointAddReals(Roller, const char[], PetscInt, PetscReal[]);  /* the same on every rank */
-PETSC_INTERN PetscErrorCode RollerCheckpointRegister(Roller); /* the scheme's kept vectors and the hub's state (after the scheme's set-up) */
+PETSC_INTERN PetscErrorCode RollerCheckpointRegister(Roller);                                       /* the scheme's kept vectors and the hub's state (after the scheme's set-up) */
 PETSC_INTERN PetscErrorCode RollerCheckpointWrite(Roller, const char *);
 PETSC_INTERN PetscErrorCode RollerCheckpointRead(Roller, const char *);
 PETSC_INTERN PetscErrorCode RollerCheckpointReadItems(Roller, const char *); /* after the scheme's set-up */
