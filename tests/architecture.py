@@ -9,7 +9,7 @@ import sys
 
 from rollertest import SOURCE
 
-LAYERS = ["mesh", "model", "verify", "contact", "io", "integrate", "modes", "app"]  # low to high
+LAYERS = ["mesh", "model", "verify", "friction", "contact", "io", "integrate", "modes", "app"]  # low to high
 MAX_LINES, MAX_FIELDS = 400, 20
 src = os.path.join(SOURCE, "src")
 failures = []
@@ -72,6 +72,68 @@ for path, text in files.items():
         owner = defined.get(name)
         if owner and LAYERS.index(owner) > LAYERS.index(layer):
             failures.append(f"{path} (layer {layer}) calls {name} of the higher layer {owner}")
+
+# calls between the files of a folder: B -> A when a function body of B calls a function A defines (not a static one of
+# a .c file, which only its own file sees); a circle means no file of it can be read, tested or changed alone
+DEFINITION = re.compile(r"^(static\s+)?(?:inline\s+)?(?:const\s+)?[A-Za-z_][\w\s\*]*?\b([A-Za-z_]\w*)\s*\(([^;{}]*?)\)\s*\{", re.M)
+
+
+def code(text):
+    """text without comments and string literals"""
+    text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
+    text = re.sub(r"//[^\n]*", " ", text)
+    return re.sub(r'"(?:\\.|[^"\\])*"', '""', text)
+
+
+def functions(text):
+    """(static, name, body) of every function defined in text (code only)"""
+    for m in DEFINITION.finditer(text):
+        depth, i = 1, m.end()
+        while depth:
+            depth += {"{": 1, "}": -1}.get(text[i], 0)
+            i += 1
+        yield bool(m.group(1)), m.group(2), text[m.end():i - 1]
+
+
+for folder in LAYERS:
+    members = {p: code(t) for p, t in files.items() if p.split("/")[0] == folder}
+    owner, own = {}, {p: set() for p in members}
+    for p, t in members.items():
+        for static, name, _ in functions(t):
+            if static and p.endswith(".c"):
+                own[p].add(name)
+            else:
+                owner.setdefault(name, p)
+    calls = {p: {} for p in members}
+    for p, t in members.items():
+        body = " ".join(b for _, _, b in functions(t))
+        for name in set(re.findall(r"\b([A-Za-z_]\w*)\s*\(", body)) - own[p]:
+            if owner.get(name, p) != p:
+                calls[p].setdefault(owner[name], name)
+    # the strongly connected sets of files (Tarjan): every set of more than one file is a circle
+    index, low, stack, sets = {}, {}, [], []
+
+    def connect(v):
+        index[v] = low[v] = len(index)
+        stack.append(v)
+        for w in sorted(calls[v]):
+            if w not in index:
+                connect(w)
+                low[v] = min(low[v], low[w])
+            elif w in stack:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            members_of = stack[stack.index(v):]
+            del stack[stack.index(v):]
+            if len(members_of) > 1:
+                sets.append(sorted(members_of))
+
+    for node in sorted(members):
+        if node not in index:
+            connect(node)
+    for circle in sets:
+        edges = [f"{a} -> {b} ({calls[a][b]})" for a in circle for b in sorted(calls[a]) if b in circle]
+        failures.append(f"circle of calls in src/{folder}/ between {', '.join(circle)}: " + "; ".join(edges))
 
 for path, text in files.items():
     n = text.count("\n")

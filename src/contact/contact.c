@@ -1,7 +1,7 @@
 /* The obstacle QP of one step (docs/model.md section 2): the contact context's life (options, create,
-   destroy) and the dispatch of a step: its candidate set, the solver of -contact_solver through its ops, and the
-   one re-solve loop that makes every solver's answer free of penetration. Which solvers exist is the
-   registry's business (contact_registry.c); nothing here names one. */
+   destroy) and the dispatch of a step: its candidate set and the solver of -contact_solver with the re-solve loop
+   that makes its answer free of penetration (RollerContactSolveWith, contact_registry.c). Which solvers exist is the
+   registry's business; nothing here names one. */
 #include "contact_impl.h"
 
 /* The bool values -contact_monitor took before it was a viewer (-contact_monitor false/0/no/off, true/1/...). */
@@ -151,32 +151,6 @@ PetscErrorCode RollerContactCreate(Roller ctx, RollerContact *contact)
   if (ctx->obstacle.friction > 0) PetscCall(RollerContactFrictionCreate(ctx, c)); /* none at -friction 0 */
   PetscCall(PetscInfo(NULL, "Contact: %" PetscInt_FMT " Gamma_C nodes (%" PetscInt_FMT " on this rank), solver %s\n", nc, c->nodes.nown, c->solver->name));
   *contact = c;
-  PetscFunctionReturn(0);
-}
-
-/* Solve with one solver on the step's candidate set; then check ALL Gamma_C nodes, add every non-candidate
-   that penetrates, re-solve. res->its sums the iterations of all passes. */
-PetscErrorCode RollerContactSolveWith(Roller ctx, RollerContact c, RollerContactSolver s, Vec b, Vec xi, RollerContactResult *res)
-{
-  PetscInt its = 0;
-
-  PetscFunctionBeginUser;
-  PetscCall(RollerContactSolverSetUp(s, ctx, c));
-  for (PetscInt pass = 0;; ++pass) {
-    PetscInt  added;
-    PetscReal gap_min;
-
-    PetscCall((*s->ops->solve)(s, ctx, c, b, xi, res));
-    its += res->its;
-    PetscCall(RollerContactGather(c, xi, c->nodes.red));
-    PetscCall(RollerContactGaps(c, c->nodes.red, c->step.gap, &gap_min));
-    PetscCall(RollerContactAddPenetrating(ctx, c, &added));
-    if (!added) break;
-    c->step.resolves++;
-    PetscCall(PetscInfo(NULL, "Contact %s: %" PetscInt_FMT " nodes outside the candidate set penetrate (gap %g), re-solving with %" PetscInt_FMT " candidates\n", s->name, added, (double)gap_min, c->step.ncand));
-    PetscCheck(pass < c->opt.max_resolves, ctx->comm, PETSC_ERR_CONV_FAILED, "Contact at t = %g: nodes outside the candidate set still penetrate after %" PetscInt_FMT " re-solves (-contact_max_resolves)", (double)c->step.t, c->opt.max_resolves);
-  }
-  res->its = its;
   PetscFunctionReturn(0);
 }
 

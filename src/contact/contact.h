@@ -35,11 +35,10 @@ PETSC_INTERN PetscBool      RollerContactWantsRow(RollerContact);
 /* Dense pieces the steady state of -modes (modes/steady*.c) shares with the step's contact solvers:
    contact_lemke.c: the LCP w = M z + q >= 0, z >= 0, z . w = 0 (M n x n column-major) by Lemke's method;
    *solved false on a secondary ray (no solution found);
-   contact_lcp.c: y = G_FF^-1 r on an index set F of a column-major G (m, F, nf, spd: Cholesky else LU, scratch, r, y);
-   contact_friction.c: mu(|v|) = mu + (mu_s - mu) exp(-|v| / v_c) (mu, mu_s, v_c, v; its derivative in |v|, or NULL). */
+   contact_lcp.c: y = G_FF^-1 r on an index set F of a column-major G (m, F, nf, spd: Cholesky else LU, scratch, r, y).
+   (The friction law mu(v) they share is the friction layer's, friction/friction.h.) */
 PETSC_INTERN PetscErrorCode RollerContactLemke(PetscInt, const PetscReal[], const PetscReal[], PetscReal[], PetscInt *, PetscBool *);
 PETSC_INTERN PetscErrorCode RollerContactDenseSolve(const PetscReal[], PetscInt, const PetscInt[], PetscInt, PetscBool, PetscReal[], PetscReal[], PetscReal[]);
-PETSC_INTERN PetscReal      RollerFrictionLaw(PetscReal, PetscReal, PetscReal, PetscReal, PetscReal *);
 PETSC_INTERN PetscErrorCode RollerContactDestroy(RollerContact *);
 
 /* The registry of the per-step QP solvers (-contact_solver NAME, contact_registry.c): a solver is made by

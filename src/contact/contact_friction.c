@@ -5,7 +5,7 @@
    With the normal forces fixed (Tresca) the step is min J^k(xi) + sum_n g_n |Delta s_n(xi)| under the obstacle
    bound; condensed on the candidates (contact_condensed.c) its dual is the box QP of contact_boxqp.c in
    x = (lambda_N, lambda_T): G = B^T S B, d = (gaps, slips of the free solution), lambda_N >= 0,
-   |lambda_T| <= g. Coulomb is solved first directly by the semismooth Newton method (contact_coulomb.c), with
+   |lambda_T| <= g. Coulomb is solved first directly by the semismooth Newton method (friction/coulomb.c), with
    the velocity weakening mu(v) (v = |Delta s|/(2 dt) the slip speed) inside it, its first iterate at mu of the last
    step's slip speeds; where that fails, with mu frozen per Newton solve and iterated about them (Anderson's
    acceleration, contact_anderson.c). Without weakening, if Newton fails: the fixed point g = mu lambda_N of Tresca
@@ -15,16 +15,6 @@
    Newton fails both ways, mu at the last step's slip speeds is used for the step. Each fallback is counted: the
    CSV's coulomb_fallback (1 Tresca passes, 2 Lemke, 3 mu of the last step), one line at the end of the run. */
 #include "contact_impl.h"
-
-/* mu(|v|) = mu + (mu_s - mu) exp(-|v| / v_c), constant mu without -friction_decay (v_c = 0); *dmu its derivative
-   in |v| (if dmu) */
-PetscReal RollerFrictionLaw(PetscReal mu, PetscReal mu_s, PetscReal v_c, PetscReal v, PetscReal *dmu)
-{
-  const PetscReal e = v_c > 0 ? PetscExpReal(-PetscAbsReal(v) / v_c) : 0.0;
-
-  if (dmu) *dmu = v_c > 0 ? -(mu_s - mu) / v_c * e : 0.0;
-  return mu + (mu_s - mu) * e;
-}
 
 static PetscReal FrictionCoefficient(RollerContactFriction fr, PetscReal v)
 {
@@ -193,7 +183,7 @@ static PetscErrorCode LaggedSolve(Roller ctx, RollerContact c, PetscInt m, const
   fr->fallback = 3;
   PetscCall(RollerContactFrictionLaggedMu(ctx, c, m));
   RollerContactFrictionStart(m, lam, fr->x);
-  PetscCall(RollerContactCoulombNewton(&fr->box, m, frozen, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
+  PetscCall(RollerFrictionCoulombNewton(m, fr->box.G, fr->box.d, frozen, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
   fr->its += its;
   if (!converged) PetscCall(CoulombLemke(fr, m, c->step.t, fr->x));
   PetscFunctionReturn(0);

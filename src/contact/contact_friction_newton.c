@@ -68,7 +68,7 @@ PetscErrorCode RollerContactFrictionLaggedMu(Roller ctx, RollerContact c, PetscI
   PetscFunctionReturn(0);
 }
 
-/* Coulomb by the semismooth Newton method (contact_coulomb.c) from the frictionless multipliers, with mu(v) of the
+/* Coulomb by the semismooth Newton method (friction/coulomb.c) from the frictionless multipliers, with mu(v) of the
    velocity weakening linearized inside it. Where that fails (the weakening's slope makes the iteration stall at
    a small slip: docs/friction.md section 3), mu is frozen in each Newton solve and iterated about them, accelerated
    (RollerContactFrictionNext). *done false if both fail (fr->x, lam_n, mu_n are then reset for the fixed point). */
@@ -85,7 +85,7 @@ PetscErrorCode RollerContactFrictionNewton(Roller ctx, RollerContact c, PetscInt
   *done = PETSC_FALSE;
   RollerContactFrictionStart(m, fr->lam_n, fr->x);
   if (fr->v_c > 0.0) PetscCall(RollerContactFrictionLaggedMu(ctx, c, m)); /* the first iterate's mu: of the last step's slip speeds */
-  PetscCall(RollerContactCoulombNewton(&fr->box, m, law, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
+  PetscCall(RollerFrictionCoulombNewton(m, fr->box.G, fr->box.d, law, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
   fr->its += its;
   if (converged) {
     RollerContactFrictionUpdate(fr, m, ctx->ts.dt, &change, &lmax, &dmu);
@@ -100,7 +100,7 @@ PetscErrorCode RollerContactFrictionNewton(Roller ctx, RollerContact c, PetscInt
     PetscCall(RollerContactFrictionLaggedMu(ctx, c, m));
     RollerContactFrictionStart(m, fr->lam_n, fr->x);
     for (PetscInt pass = 0; pass < c->opt.friction_max_it; ++pass) {
-      PetscCall(RollerContactCoulombNewton(&fr->box, m, frozen, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
+      PetscCall(RollerFrictionCoulombNewton(m, fr->box.G, fr->box.d, frozen, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
       fr->its += its;
       if (!converged) break;
       RollerContactFrictionUpdate(fr, m, ctx->ts.dt, &change, &lmax, &dmu);

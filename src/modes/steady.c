@@ -16,7 +16,7 @@
    weakening; mu_s where a node sticks) is repeated until it settles. */
 #include "modes/modes.h"
 
-/* mu(|v|) and its derivative: the law of the step (contact/contact_friction.c) */
+/* mu(|v|) and its derivative: the law of the step (friction/law.c) */
 static void FrictionLaw(Roller ctx, PetscReal v, PetscReal *mu, PetscReal *dmu)
 {
   const RollerObstacle *o = &ctx->obstacle;

@@ -1,7 +1,7 @@
 /* Coulomb friction of one step solved directly (docs/friction.md section 3): the primal-dual active-set method
    of Hueber, Stadler & Wohlmuth (SIAM J. Sci. Comput. 30, 2008), a semismooth Newton method on the
    complementarity functions of Signorini's and Coulomb's laws, on the condensed problem of the friction's box QP
-   (G, d of contact_friction.c: gap = (G x + d)_N, slip = (G x + d)_T, x = (lambda_N, lambda_T)). Each node is
+   (G, d built by contact/contact_friction.c: gap = (G x + d)_N, slip = (G x + d)_T, x = (lambda_N, lambda_T)). Each node is
    inactive (lambda = 0), sticking (gap = 0, slip = 0) or slipping (gap = 0, lambda_T = s mu lambda_N, s = +-1); the
    states follow from the last iterate with c = 1/G_aa:
      in contact   iff  lambda_N - c_N gap > 0,
@@ -15,7 +15,16 @@
    solution satisfies the laws (lambda_N >= 0, gap >= 0, |lambda_T| <= mu lambda_N, a slipping node moving against
    its force); otherwise *converged is false and the caller falls back on the fixed point of Tresca steps. A few
    dense LU solves instead of the fixed point's tens of QPs. */
-#include "contact_impl.h"
+#include "friction/friction.h"
+
+/* w = G x + d (G n x n, column-major), skipping the zero entries of x (the same sums as the contact's LCP slack). */
+static void Slack(PetscInt n, const PetscReal G[], const PetscReal d[], const PetscReal x[], PetscReal w[])
+{
+  for (PetscInt a = 0; a < n; ++a) w[a] = d[a];
+  for (PetscInt b = 0; b < n; ++b)
+    if (x[b] != 0.0)
+      for (PetscInt a = 0; a < n; ++a) w[a] += G[a + (size_t)b * n] * x[b];
+}
 
 typedef struct {
   PetscInt  *idx_n, *idx_t, *state;              /* unknown numbers in the reduced system (-1: none); state 0 off, 1 stick, 2 slip */
@@ -132,9 +141,6 @@ static PetscReal Merit(PetscInt m, const PetscReal G[], const PetscReal law[], c
   return phi;
 }
 
-/* On the friction's box QP data box (G, d of size 2m; its residual w = G x + d is RollerContactLCPSlack's):
-   x (2m: lambda_N, lambda_T) in: the initial guess (the frictionless multipliers), out: the solution if
-   *converged. Up to maxit iterations (*its). */
 /* mu(|v|) at the slips w (law = mu, mu_s, v_c, 2 dt): mu into mu[], the linearization of the slip law at the
    nodes in contact into kv (kv[a] = lambda_N mu'(v) sign(w_T)/(2 dt), kv[m + a] = -lambda_N mu'(v) |v|); the largest
    change of mu. */
@@ -154,14 +160,15 @@ static PetscReal WeakeningMu(PetscInt m, const PetscReal law[], const PetscReal 
   return change;
 }
 
-PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *box, PetscInt m, const PetscReal law[], PetscReal mu[], PetscReal x[], PetscInt maxit, PetscInt *its, PetscBool *converged)
+/* On the box QP's data G, d (2m; the residual w = G x + d): x (2m: lambda_N, lambda_T) in: the initial guess (the
+   frictionless multipliers), out: the solution if *converged. Up to maxit iterations (*its). */
+PetscErrorCode RollerFrictionCoulombNewton(PetscInt m, const PetscReal G[], const PetscReal d[], const PetscReal law[], PetscReal mu[], PetscReal x[], PetscInt maxit, PetscInt *its, PetscBool *converged)
 {
-  const PetscReal *G = box->G, *d = box->d;
-  CoulombWork      cw;
-  PetscReal       *kv = NULL, dmu = 0.0;
-  PetscBool        full    = PETSC_TRUE;              /* the last step was the whole Newton step */
-  PetscReal        best    = PETSC_MAX_REAL, hist[4]; /* hist: the merits of the last four iterates */
-  PetscInt         stalled = 0;                       /* the least merit so far, iterations since it decreased */
+  CoulombWork cw;
+  PetscReal  *kv = NULL, dmu = 0.0;
+  PetscBool   full    = PETSC_TRUE;              /* the last step was the whole Newton step */
+  PetscReal   best    = PETSC_MAX_REAL, hist[4]; /* hist: the merits of the last four iterates */
+  PetscInt    stalled = 0;                       /* the least merit so far, iterations since it decreased */
 
   PetscFunctionBeginUser;
   *converged = PETSC_FALSE;
@@ -173,7 +180,7 @@ PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *box, PetscInt m, con
     cw.sign[a]  = 0.0;
   }
   if (law && law[2] > 0.0) PetscCall(PetscMalloc1(2 * m, &kv));
-  RollerContactLCPSlack(box, 2 * m, x, cw.w);
+  Slack(2 * m, G, d, x, cw.w);
   for (*its = 1; *its <= maxit; ++*its) {
     PetscReal phi0, ref = 0.0, alpha = 1.0;
 
@@ -181,7 +188,7 @@ PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *box, PetscInt m, con
     if (!States(m, G, mu, x, cw.w, &cw) && full && (!kv || (*its > 1 && dmu <= 1e-10 * law[1]))) {
       for (PetscInt a = 0; a < m; ++a)
         if (cw.state[a] == 2) x[m + a] = cw.sign[a] * mu[a] * x[a];
-      RollerContactLCPSlack(box, 2 * m, x, cw.w);
+      Slack(2 * m, G, d, x, cw.w);
       *converged = LawsHold(m, mu, x, cw.w, d, &cw);
       break;
     }
@@ -193,18 +200,18 @@ PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *box, PetscInt m, con
     PetscCall(PetscArraycpy(cw.x0, x, 2 * m));
     PetscCall(SolveStates(m, G, d, mu, *its > 1 ? kv : NULL, &cw, x));
     PetscCall(PetscArraycpy(cw.x1, x, 2 * m));
-    RollerContactLCPSlack(box, 2 * m, x, cw.w);
+    Slack(2 * m, G, d, x, cw.w);
     /* non-monotone Armijo backtracking against the largest of the last four merits (Grippo, Lampariello & Lucidi,
        SIAM J. Numer. Anal. 23, 1986: the active-set iteration's own full steps are kept while it makes progress
        over a few iterations); without a decrease in 10 halvings the full step */
     while (Merit(m, G, law, mu, x, cw.w) > ref - 1e-4 * alpha * phi0 && alpha > 1e-3) {
       alpha *= 0.5;
       for (PetscInt a = 0; a < 2 * m; ++a) x[a] = cw.x0[a] + 0.5 * (x[a] - cw.x0[a]);
-      RollerContactLCPSlack(box, 2 * m, x, cw.w);
+      Slack(2 * m, G, d, x, cw.w);
     }
     if (alpha <= 1e-3) {
       PetscCall(PetscArraycpy(x, cw.x1, 2 * m));
-      RollerContactLCPSlack(box, 2 * m, x, cw.w);
+      Slack(2 * m, G, d, x, cw.w);
       alpha = 1.0;
     }
     full = (PetscBool)(alpha == 1.0);
