@@ -75,6 +75,17 @@ cases = [
     (["-obstacle", "-contact_solver", "foo"], "-contact_solver", "condensed"),
     (["-ts_dt", "100", "-ts_max_time", "20"], "-ts_dt", "no step"),
     (["-monitor_csv", "unused.csv", "-modes"], "-monitor_csv", "not used"),
+    # issue 36: -friction_table, each error naming the option and the offending entry
+    (["-obstacle", "-friction_table", "0:1"], "-friction_table", "1 point"),
+    (["-obstacle", "-friction_table", "0:1,0.1:x"], "-friction_table", "entry 2 '0.1:x'"),
+    (["-obstacle", "-friction_table", "0:1,0.2:0.8,0.1:0.7"], "-friction_table", "entry 3 '0.1:0.7'"),
+    (["-obstacle", "-friction_table", "0:1,0.1:0"], "-friction_table", "must be > 0"),
+    (["-obstacle", "-friction_table", "-0.1:1,0.1:0.5"], "-friction_table", "entry 1 '-0.1:1'"),
+    (["-obstacle", "-friction_table", "0:1,0.1:0.5,"], "-friction_table", "entry 3 ''"),
+    (["-obstacle", "-friction", "0.5", "-friction_table", "0:1,0.1:0.5"], "-friction_table", "without -friction"),
+    (["-obstacle", "-friction_decay", "0.1", "-friction_table", "0:1,0.1:0.5"], "-friction_table", "without -friction_decay"),
+    (["-friction_table", "0:1,0.1:0.5"], "-friction_table", "-obstacle"),
+    (["-obstacle", "-sweep", "bad_sweep.csv", "-sweep_friction", "0.3,0.8", "-friction_table", "0:1,0.1:0.5"], "-sweep_friction", "-friction_table"),
 ]
 for args, name, value in cases:
     code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet"] + args if args[0] != "-mesh_h" else args + ["-ts_max_steps", "2"], check=False)

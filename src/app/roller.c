@@ -68,6 +68,7 @@ PetscErrorCode RollerDestroy(Roller *roller)
   PetscCall(PetscViewerDestroy(&ctx->init.mms_view));
   PetscCall(RollerContactDestroy(&ctx->contact));
   PetscCall(RollerModesDestroy(ctx));
+  PetscCall(RollerFrictionTableDestroy(&ctx->obstacle.table));
   PetscCall(RollerSchemesDestroy(ctx));
   PetscCall(MatDestroy(&ctx->ops.M));
   PetscCall(MatDestroy(&ctx->ops.K));
