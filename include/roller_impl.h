@@ -140,13 +140,22 @@ typedef struct {
   PetscReal ramp, ripple, ripple_frequency;
 } RollerRotation;
 
+/* -friction_table (friction/law.c): n points (v_i, mu_i) of the friction coefficient mu(|v|), 0 <= v_1 < ... < v_n,
+   and the slopes s_i of their monotone cubic interpolant; n = 0 without it */
+typedef struct {
+  PetscInt   n;
+  PetscReal *v, *mu, *s;
+} RollerFrictionTable;
+
 /* The obstacle (the sheet): height g(t) = min(speed t, depth) - r_outer, lab-frame position X(t) = sheet_speed t
    along e1, and Coulomb friction mu(v) = mu + (mu_s - mu) exp(-|v|/v_c) (friction = 0: frictionless; decay = 0:
-   constant mu) */
+   constant mu), or the interpolant of a table (then friction = mu_n, its value beyond the last speed, and
+   friction_static = mu_1, its value at rest; decay 0) */
 typedef struct {
-  PetscBool on;
-  PetscReal speed, depth, sheet_speed;
-  PetscReal friction, friction_static, friction_decay;
+  PetscBool           on;
+  PetscReal           speed, depth, sheet_speed;
+  PetscReal           friction, friction_static, friction_decay;
+  RollerFrictionTable table;
 } RollerObstacle;
 
 /* The axle and drive (-axle, model/axle.c, docs/model.md section 8): the hub a rigid body that translates (mass,

@@ -3,6 +3,9 @@
 # solvers agree, -friction 0 is the frictionless code bit for bit, and 1 and 2 ranks agree.
 roller_test(friction_law friction_law.py LABELS quick TIMEOUT 600)
 roller_test(friction_mpi friction_mpi.py LABELS mpi PROCESSORS 2 TIMEOUT 300)
+# -friction_table (docs/friction.md section 1): the sampled exponential law reproduces its transient and its complex
+# eigenvalues within tolerances from the interpolation error; the slope's sign of a rise-then-fall table in the CEA
+roller_test(friction_table friction_table.py LABELS quick TIMEOUT 600)
 # Cattaneo-Mindlin (docs/friction.md 5.1): pressed frictionless, the shaft turned with the sheet held: the stick
 # zone c/a = sqrt(1 - Q/(mu P)) within a mesh spacing, Cattaneo's traction, full sliding at Q = mu P, the
 # reversal's b/a = sqrt(1 - (Q* - Q)/(2 mu P)); twice slower, Q within 0.03 (not the quasi-static limit: the mass

@@ -70,6 +70,7 @@ PetscErrorCode RollerDestroy(Roller *roller)
   PetscCall(PetscViewerDestroy(&ctx->init.mms_view));
   PetscCall(RollerContactDestroy(&ctx->contact));
   PetscCall(RollerModesDestroy(ctx));
+  PetscCall(RollerFrictionTableDestroy(&ctx->obstacle.table));
   PetscCall(RollerSchemesDestroy(ctx));
   PetscCall(RollerAxleDestroy(ctx));
   PetscCall(MatDestroy(&ctx->ops.M));

@@ -215,6 +215,13 @@ PetscErrorCode RollerSweepSetFromOptions(MPI_Comm comm, RollerSweepPlan *plan)
   plan->fit = ROLLER_SWEEP_FIT_CONTACT_FORCE;
   PetscCall(PetscOptionsEnum("-sweep_fit", "Transient map: the column whose growth rate and frequency are fitted over the window", "RollerSweepFit", RollerSweepFits, (PetscEnum)plan->fit, (PetscEnum *)&plan->fit, NULL));
   PetscOptionsEnd();
+  for (PetscInt q = 0; q < plan->nparams; ++q) {
+    PetscBool friction, table;
+
+    PetscCall(PetscStrcmp(plan->name[q], "friction", &friction));
+    PetscCall(PetscOptionsHasName(NULL, NULL, "-friction_table", &table));
+    PetscCheck(!(friction && table), comm, PETSC_ERR_ARG_INCOMP, "-sweep_friction sweeps mu of the exponential law; -friction_table is the whole law mu(v): sweep without it");
+  }
   RollerCheckOption(comm, "-sweep_window", plan->window, plan->window > 0 && plan->window <= 1, "in (0, 1] (the last fraction of each run's time)");
   PetscCheck(plan->nsub >= 1 && plan->nsub <= size, comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep_subcomms %" PetscInt_FMT ": allowed 1 to the number of ranks, %d", plan->nsub, size);
   if (slice_set && !(nslice == 2 && plan->slice[1] >= 1 && plan->slice[0] >= 0 && plan->slice[0] < plan->slice[1])) {

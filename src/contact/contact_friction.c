@@ -18,7 +18,7 @@
 
 static PetscReal FrictionCoefficient(RollerContactFriction fr, PetscReal v)
 {
-  return RollerFrictionLaw(fr->mu, fr->mu_s, fr->v_c, v, NULL);
+  return RollerFrictionMu(fr->law, v, NULL);
 }
 
 PetscErrorCode RollerContactFrictionCreate(Roller ctx, RollerContact c)
@@ -29,12 +29,13 @@ PetscErrorCode RollerContactFrictionCreate(Roller ctx, RollerContact c)
 
   PetscFunctionBeginUser;
   PetscCall(PetscStrcmp(c->solver->name, "condensed", &condensed));
-  PetscCheck(condensed, ctx->comm, PETSC_ERR_ARG_INCOMP, "-friction %g needs -contact_solver condensed (given: %s); its Tresca QP solver is -contact_friction_qp activeset, tao, vi or lemke", (double)ctx->obstacle.friction, c->solver->name);
+  PetscCheck(condensed, ctx->comm, PETSC_ERR_ARG_INCOMP, "%s %g needs -contact_solver condensed (given: %s); its Tresca QP solver is -contact_friction_qp activeset, tao, vi or lemke", ctx->obstacle.table.n ? "-friction_table, mu at its end" : "-friction",
+             (double)ctx->obstacle.friction, c->solver->name);
   PetscCheck(!c->opt.check, ctx->comm, PETSC_ERR_ARG_INCOMP, "-contact_check compares the frictionless solvers; with -friction compare runs with -contact_friction_qp activeset, tao, vi and lemke");
   PetscCall(PetscNew(&fr));
-  fr->mu   = ctx->obstacle.friction;
-  fr->mu_s = ctx->obstacle.friction_static;
-  fr->v_c  = ctx->obstacle.friction_decay;
+  fr->law    = &ctx->obstacle;
+  fr->varies = RollerFrictionVaries(fr->law);
+  RollerFrictionRange(fr->law, fr->range);
   PetscCall(RollerContactBoxQPCreate(2 * nc, &fr->box));
   PetscCall(PetscMalloc7(2 * nc, &fr->state, nc, &fr->lam_n, nc, &fr->mu_n, 2 * nc, &fr->x, nc, &fr->node_state, 2 * nc, &fr->g, 2 * nc, &fr->y));
   PetscCall(RollerContactAndersonCreate(2 * nc, 5, &fr->aa));
@@ -172,8 +173,7 @@ static PetscErrorCode FrictionData(Roller ctx, RollerContact c, const PetscReal 
    Newton method, else by one Lemke solve (fallback 3). */
 static PetscErrorCode LaggedSolve(Roller ctx, RollerContact c, PetscInt m, const PetscReal lam[])
 {
-  RollerContactFriction fr        = c->friction;
-  const PetscReal       frozen[4] = {fr->mu, fr->mu_s, 0.0, 2.0 * ctx->ts.dt};
+  RollerContactFriction fr = c->friction;
   PetscInt              its;
   PetscBool             converged;
 
@@ -183,7 +183,7 @@ static PetscErrorCode LaggedSolve(Roller ctx, RollerContact c, PetscInt m, const
   fr->fallback = 3;
   PetscCall(RollerContactFrictionLaggedMu(ctx, c, m));
   RollerContactFrictionStart(m, lam, fr->x);
-  PetscCall(RollerFrictionCoulombNewton(m, fr->box.G, fr->box.d, frozen, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
+  PetscCall(RollerFrictionCoulombNewton(m, fr->box.G, fr->box.d, NULL, 2.0 * ctx->ts.dt, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
   fr->its += its;
   if (!converged) PetscCall(CoulombLemke(fr, m, c->step.t, fr->x));
   PetscFunctionReturn(0);
@@ -221,7 +221,7 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
 
     PetscCall(RollerContactFrictionNewton(ctx, c, m, &done));
     if (done) goto accept;
-    if (fr->v_c > 0.0) { /* the fixed point on mu(v) failed inside Newton: the passes would meet the same map */
+    if (fr->varies) { /* the fixed point on mu(v) failed inside Newton: the passes would meet the same map */
       PetscCall(LaggedSolve(ctx, c, m, lcp->lam));
       goto accept;
     }
@@ -245,7 +245,7 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
     res->its += its;
     RollerContactFrictionUpdate(fr, m, dt, &change, &lmax, &dmu);
     PetscCall(PetscInfo(NULL, "Friction at t = %g: iterate %" PetscInt_FMT " (%" PetscInt_FMT " QP its): change of lambda_N %g of %g, of mu %g\n", (double)t, it, its, (double)change, (double)lmax, (double)dmu));
-    if (change <= c->opt.friction_rtol * lmax && dmu <= c->opt.friction_rtol * fr->mu_s) {
+    if (change <= c->opt.friction_rtol * lmax && dmu <= c->opt.friction_rtol * fr->range[1]) {
       PetscCall(PetscArraycpy(fr->lam_n, fr->x, m));
       PetscCall(PetscArraycpy(fr->mu_n, fr->g + m, m));
       break;

@@ -272,7 +272,9 @@ PETSC_INTERN PetscErrorCode RollerContactAndersonDestroy(RollerContactAnderson *
 
 /* contact_friction.c: the friction part of the condensed solver (created only with -friction > 0) */
 struct _n_RollerContactFriction {
-  PetscReal             mu, mu_s, v_c;
+  const RollerObstacle *law;                      /* mu(v) (friction/law.c) */
+  PetscBool             varies;                   /* mu depends on the slip speed */
+  PetscReal             range[2];                 /* the least and the largest mu(v) */
   RollerContactLCP      box;                      /* the Tresca dual, sized 2 nc */
   PetscInt             *state;                    /* 2 nc: its active bounds, warm start of the next Tresca step */
   PetscReal            *lam_n;                    /* nc: lambda_N of the last iterate */

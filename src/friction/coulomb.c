@@ -126,14 +126,14 @@ static PetscBool LawsHold(PetscInt m, const PetscReal mu[], const PetscReal x[],
 /* ||F(x)||^2, F the complementarity functions of the states' rule at x (w = G x + d), with c = 1/G_aa:
      F_N = lambda_N - max(0, lambda_N - c_N gap),  F_T = lambda_T - P(lambda_T - c_T slip),
    P the projection onto [-mu l, mu l], l = max(0, lambda_N - c_N gap); mu = mu(|slip|/(2 dt)) with velocity weakening
-   (law[2] > 0), else mu[] as given. */
-static PetscReal Merit(PetscInt m, const PetscReal G[], const PetscReal law[], const PetscReal mu[], const PetscReal x[], const PetscReal w[])
+   (law given; two_dt = 2 dt), else mu[] as given. */
+static PetscReal Merit(PetscInt m, const PetscReal G[], const RollerObstacle *law, PetscReal two_dt, const PetscReal mu[], const PetscReal x[], const PetscReal w[])
 {
   PetscReal phi = 0.0;
 
   for (PetscInt a = 0; a < m; ++a) {
     const PetscReal l = PetscMax(0.0, x[a] - w[a] / G[a + (size_t)a * 2 * m]), z = x[m + a] - w[m + a] / G[m + a + (size_t)(m + a) * 2 * m];
-    const PetscReal mv = law && law[2] > 0.0 ? RollerFrictionLaw(law[0], law[1], law[2], PetscAbsReal(w[m + a]) / law[3], NULL) : mu[a];
+    const PetscReal mv = law ? RollerFrictionMu(law, PetscAbsReal(w[m + a]) / two_dt, NULL) : mu[a];
     const PetscReal fn = x[a] - l, ft = x[m + a] - PetscMin(PetscMax(z, -mv * l), mv * l);
 
     phi += fn * fn + ft * ft;
@@ -141,20 +141,20 @@ static PetscReal Merit(PetscInt m, const PetscReal G[], const PetscReal law[], c
   return phi;
 }
 
-/* mu(|v|) at the slips w (law = mu, mu_s, v_c, 2 dt): mu into mu[], the linearization of the slip law at the
+/* mu(|v|) at the slips w (v = |w_T|/two_dt): mu into mu[], the linearization of the slip law at the
    nodes in contact into kv (kv[a] = lambda_N mu'(v) sign(w_T)/(2 dt), kv[m + a] = -lambda_N mu'(v) |v|); the largest
    change of mu. */
-static PetscReal WeakeningMu(PetscInt m, const PetscReal law[], const PetscReal x[], const PetscReal w[], const CoulombWork *cw, PetscReal mu[], PetscReal kv[])
+static PetscReal WeakeningMu(PetscInt m, const RollerObstacle *law, PetscReal two_dt, const PetscReal x[], const PetscReal w[], const CoulombWork *cw, PetscReal mu[], PetscReal kv[])
 {
   PetscReal change = 0.0;
 
   for (PetscInt a = 0; a < m; ++a) {
-    const PetscReal v = PetscAbsReal(w[m + a]) / law[3], sw = w[m + a] != 0.0 ? PetscSign(w[m + a]) : -cw->sign[a];
-    PetscReal       dmu, mun                                = RollerFrictionLaw(law[0], law[1], law[2], v, &dmu);
+    const PetscReal v = PetscAbsReal(w[m + a]) / two_dt, sw = w[m + a] != 0.0 ? PetscSign(w[m + a]) : -cw->sign[a];
+    PetscReal       dmu, mun                                = RollerFrictionMu(law, v, &dmu);
 
     change    = PetscMax(change, PetscAbsReal(mun - mu[a]));
     mu[a]     = mun;
-    kv[a]     = PetscMax(x[a], 0.0) * dmu * sw / law[3];
+    kv[a]     = PetscMax(x[a], 0.0) * dmu * sw / two_dt;
     kv[m + a] = -PetscMax(x[a], 0.0) * dmu * v;
   }
   return change;
@@ -162,13 +162,13 @@ static PetscReal WeakeningMu(PetscInt m, const PetscReal law[], const PetscReal 
 
 /* On the box QP's data G, d (2m; the residual w = G x + d): x (2m: lambda_N, lambda_T) in: the initial guess (the
    frictionless multipliers), out: the solution if *converged. Up to maxit iterations (*its). */
-PetscErrorCode RollerFrictionCoulombNewton(PetscInt m, const PetscReal G[], const PetscReal d[], const PetscReal law[], PetscReal mu[], PetscReal x[], PetscInt maxit, PetscInt *its, PetscBool *converged)
+PetscErrorCode RollerFrictionCoulombNewton(PetscInt m, const PetscReal G[], const PetscReal d[], const RollerObstacle *law, PetscReal two_dt, PetscReal mu[], PetscReal x[], PetscInt maxit, PetscInt *its, PetscBool *converged)
 {
   CoulombWork cw;
-  PetscReal  *kv = NULL, dmu = 0.0;
-  PetscBool   full    = PETSC_TRUE;              /* the last step was the whole Newton step */
-  PetscReal   best    = PETSC_MAX_REAL, hist[4]; /* hist: the merits of the last four iterates */
-  PetscInt    stalled = 0;                       /* the least merit so far, iterations since it decreased */
+  PetscReal  *kv = NULL, dmu = 0.0, range[2] = {0.0, 0.0}; /* of mu(v): its largest the scale of mu's change */
+  PetscBool   full    = PETSC_TRUE;                        /* the last step was the whole Newton step */
+  PetscReal   best    = PETSC_MAX_REAL, hist[4];           /* hist: the merits of the last four iterates */
+  PetscInt    stalled = 0;                                 /* the least merit so far, iterations since it decreased */
 
   PetscFunctionBeginUser;
   *converged = PETSC_FALSE;
@@ -179,20 +179,23 @@ PetscErrorCode RollerFrictionCoulombNewton(PetscInt m, const PetscReal G[], cons
     cw.state[a] = -1; /* no state yet: the first pass counts as a change */
     cw.sign[a]  = 0.0;
   }
-  if (law && law[2] > 0.0) PetscCall(PetscMalloc1(2 * m, &kv));
+  if (law) {
+    RollerFrictionRange(law, range);
+    PetscCall(PetscMalloc1(2 * m, &kv));
+  }
   Slack(2 * m, G, d, x, cw.w);
   for (*its = 1; *its <= maxit; ++*its) {
     PetscReal phi0, ref = 0.0, alpha = 1.0;
 
-    if (kv && *its > 1) dmu = WeakeningMu(m, law, x, cw.w, &cw, mu, kv); /* the first iterate takes mu as given */
-    if (!States(m, G, mu, x, cw.w, &cw) && full && (!kv || (*its > 1 && dmu <= 1e-10 * law[1]))) {
+    if (kv && *its > 1) dmu = WeakeningMu(m, law, two_dt, x, cw.w, &cw, mu, kv); /* the first iterate takes mu as given */
+    if (!States(m, G, mu, x, cw.w, &cw) && full && (!kv || (*its > 1 && dmu <= 1e-10 * range[1]))) {
       for (PetscInt a = 0; a < m; ++a)
         if (cw.state[a] == 2) x[m + a] = cw.sign[a] * mu[a] * x[a];
       Slack(2 * m, G, d, x, cw.w);
       *converged = LawsHold(m, mu, x, cw.w, d, &cw);
       break;
     }
-    phi0                 = Merit(m, G, law, mu, x, cw.w);
+    phi0                 = Merit(m, G, law, two_dt, mu, x, cw.w);
     hist[(*its - 1) % 4] = phi0;
     for (PetscInt h = 0; h < PetscMin(*its, 4); ++h) ref = h ? PetscMax(ref, hist[h]) : hist[h];
     if (phi0 < (1.0 - 1e-4) * best) best = phi0, stalled = 0;
@@ -204,7 +207,7 @@ PetscErrorCode RollerFrictionCoulombNewton(PetscInt m, const PetscReal G[], cons
     /* non-monotone Armijo backtracking against the largest of the last four merits (Grippo, Lampariello & Lucidi,
        SIAM J. Numer. Anal. 23, 1986: the active-set iteration's own full steps are kept while it makes progress
        over a few iterations); without a decrease in 10 halvings the full step */
-    while (Merit(m, G, law, mu, x, cw.w) > ref - 1e-4 * alpha * phi0 && alpha > 1e-3) {
+    while (Merit(m, G, law, two_dt, mu, x, cw.w) > ref - 1e-4 * alpha * phi0 && alpha > 1e-3) {
       alpha *= 0.5;
       for (PetscInt a = 0; a < 2 * m; ++a) x[a] = cw.x0[a] + 0.5 * (x[a] - cw.x0[a]);
       Slack(2 * m, G, d, x, cw.w);
