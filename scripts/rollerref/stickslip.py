@@ -438,3 +438,22 @@ def propose(N=0.01, w_n=1.0, I_hub=0.1, I_rubber=0.092, r=0.5, xi=0.05, v0=0.5, 
         out["ramp_threshold_linear"] = ramp_threshold(p)
     out["bistable"] = bool(lin["stable"] and cyc["exists"])
     return out
+
+
+def basin_stability(p: Torsion, x_range=(-2.0, 2.0), v_range=(0.0, 2.0), n=(12, 6)):
+    """Stender et al.'s basin stability on a grid (their Monte Carlo sampling replaced by an n[0] x n[1] grid of
+    cell centres): the fraction of initial states that settle into the stick-slip cycle. The states are theirs,
+    (x, x') in units of angle_scale r N / k_d and velocity_scale / r about the motor's angle and speed at t = 0
+    (for stender(): th and th' themselves). Returns the fraction, the counts and the undecided."""
+    nd = to_nondimensional(p)
+    ang, vel = nd["angle_scale"], nd["velocity_scale"] / p.r
+    a0, w0, _ = p.motor.state(0.0)
+    xs = x_range[0] + (np.arange(n[0]) + 0.5) * (x_range[1] - x_range[0]) / n[0]
+    vs = v_range[0] + (np.arange(n[1]) + 0.5) * (v_range[1] - v_range[0]) / n[1]
+    counts = {"cycle": 0, "sliding": 0, "undecided": 0}
+    for x in xs:
+        for v in vs:
+            counts[classify(p, a0 + x * ang, w0 + v * vel)[0]] += 1
+    total = n[0] * n[1]
+    return {"cycle_fraction": counts["cycle"] / total, "counts": counts, "grid": list(n), "x_range": list(x_range),
+            "v_range": list(v_range)}
