@@ -67,6 +67,9 @@ def _write_csv(path, res, p=None):
             w.writerow([f"{float(x):.17g}" for x in row])
 
 
+DEFAULTS = {}
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(prog="rollerref", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("command", choices=["stability", "cycle", "basin", "propose", "stender", "sheet", "forced", "simulate"])
@@ -78,7 +81,8 @@ def main(argv=None):
                        ("V", 1.5, "sheet speed"), ("V_ramp", 0.0, "sheet's ramp from rest (0: none)"),
                        ("t0", 0.0, "motor start"), ("t_ramp", 0.0, "motor ramp"), ("ripple", 0.0, "ripple a (rad)"),
                        ("ripple_frequency", 0.0, "ripple f (cycles per unit time)")]:
-        g.add_argument("--" + name, type=float, default=d, help=f"{h} (default {d})")
+        g.add_argument("--" + name, type=float, default=None, help=f"{h} (default {d}; propose: its own)")
+        DEFAULTS[name] = d
     g.add_argument("--ramp", default="linear", choices=["linear", "cosine"])
     ap.add_argument("--long", action="store_true", help="cycle: also integrate from rest and extract the cycle")
     ap.add_argument("--t_end", type=float, default=None, help="simulate/cycle --long: end time (default 300 periods)")
@@ -101,6 +105,10 @@ def main(argv=None):
     ap.add_argument("--json", default=None, help="write the JSON here (default stdout)")
     ap.add_argument("--csv", default=None, help="write the time series here")
     a = ap.parse_args(argv)
+    given = {k: getattr(a, k) for k in DEFAULTS if getattr(a, k) is not None}
+    for k, d in DEFAULTS.items():
+        if getattr(a, k) is None:
+            setattr(a, k, d)
     p = _torsion(a)
     T_n = 2 * math.pi / p.w_n
     out = {"command": a.command}
@@ -117,8 +125,9 @@ def main(argv=None):
         b = stickslip.bistability(p)
         out.update(bistability=b, kick_threshold=stickslip.kick_threshold(p), ramp_threshold=stickslip.ramp_threshold(p, a.ramp))
     elif a.command == "propose":
-        out.update(stickslip.propose(N=a.N, w_n=a.w_n, I_hub=a.I_hub, I_rubber=a.I_rubber, r=a.r, xi=a.xi, v0=a.v0,
-                                     v_d=a.v_d[0] if len(a.v_d) == 1 else 1.5, mu_k=a.mu_k, mu_s=a.mu_s))
+        kw = {k: given[k] for k in ("N", "r", "mu_k", "mu_s") if k in given}
+        out.update(stickslip.propose(w_n=a.w_n, I_hub=a.I_hub, I_rubber=a.I_rubber, xi=a.xi, v0=a.v0,
+                                     v_d=a.v_d[0] if len(a.v_d) == 1 else 1.5, **kw))
     elif a.command == "stender":
         rows = []
         for vd in a.v_d:
@@ -148,6 +157,10 @@ def main(argv=None):
         fs = a.f or [p.w_n / (2 * math.pi)]
         out["c_f"] = c_f
         out["one_dof"] = [dict(f=f, **forced.one_dof(p.I, p.k_d, p.c_d, f, a=a.ripple or 1.0, c_f=c_f)) for f in fs]
+        v0 = abs(p.r * p.omega - p.V)
+        for row in out["one_dof"]:  # the linearization holds while the contact keeps sliding (and mu' stays put)
+            row["stays_sliding"] = p.r * row["rate_amplitude"] < v0
+            row["small_against_v_c"] = p.friction.v_c == 0 or p.r * row["rate_amplitude"] < 0.1 * p.friction.v_c
         if a.k_r is not None:
             I_t = a.I_t if a.I_t is not None else 0.5 * p.I
             I_h = p.I - I_t
