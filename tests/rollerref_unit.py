@@ -27,7 +27,7 @@ from scipy.integrate import solve_ivp
 from rollertest import SOURCE, Checker
 
 sys.path.insert(0, os.path.join(SOURCE, "scripts"))
-from rollerref import forced, sheet, stickslip as ss, timestep  # noqa: E402
+from rollerref import basin, forced, sheet, stickslip as ss, timestep  # noqa: E402
 from rollerref.drive import Motor  # noqa: E402
 from rollerref.friction import Friction  # noqa: E402
 
@@ -102,7 +102,7 @@ c.check(errs[0] > errs[1] > errs[2] and order > 0.6 and errs[2] < 1e-3,
 
 # 3. bistability
 p = ss.roller_set()
-b = ss.bistability(p)
+b = basin.bistability(p)
 cyc = b["cycle"]
 c.check(b["bistable"], f"roller set: linearly stable (growth {b['linear']['growth_rate']:.4g}), the start from rest "
         f"settles into stick-slip (period {cyc.get('period', 0):.6g}, stick fraction {cyc.get('stick_fraction', 0):.4f}, "
@@ -110,13 +110,13 @@ c.check(b["bistable"], f"roller set: linearly stable (growth {b['linear']['growt
 sc = ss.stick_slip_cycle(p)
 c.check(abs(cyc["period"] / sc["period"] - 1) < 1e-5, f"roller set: start-from-rest period {cyc['period']:.8g} = "
         f"single-slip period {sc['period']:.8g}")
-A = ss.kick_threshold(p, rel_tol=1e-2)
+A = basin.kick_threshold(p, rel_tol=1e-2)
 v0 = abs(p.r * p.omega - p.V) / p.r
-lo = ss.classify(p, *ss.initial_sliding(p, -0.97 * A["threshold"]))[0]
-hi = ss.classify(p, *ss.initial_sliding(p, -1.03 * A["threshold"]))[0]
+lo = basin.classify(p, *ss.initial_sliding(p, -0.97 * A["threshold"]))[0]
+hi = basin.classify(p, *ss.initial_sliding(p, -1.03 * A["threshold"]))[0]
 c.check(0 < A["threshold"] < v0 and lo == "sliding" and hi == "cycle",
         f"roller set: smallest kick {A['threshold']:.5g} (|v0|/r = {v0:.5g}): 0.97 of it {lo}, 1.03 of it {hi}")
-w = ss.bistable_window(ss.stender())
+w = basin.bistable_window(ss.stender())
 c.check(abs(w["onset_slip_speed"] - math.log(10) / 2) < 1e-12 and 1.8 < w["cycle_limit_slip_speed"] < 1.85,
         f"Stender: steady sliding stable above v_d = {w['onset_slip_speed']:.6f} (ln 10 / 2), the cycle ends at "
         f"v_d = {w['cycle_limit_slip_speed']:.4f}")

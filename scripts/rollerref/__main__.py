@@ -4,7 +4,8 @@ time series as CSV (--csv FILE). Commands (docs/validation.md section 9):
   stability  steady sliding and its closed-form linear stability (eigenvalues, growth rate, onset speeds)
   cycle      the stick-slip cycle by its single slip (period, amplitudes, stick fraction); --long also integrates
              from rest and extracts the cycle; --csv writes that run
-  basin      bistability: linear stability, the start from rest, a small kick, the smallest kick, the longest ramp
+  basin      bistability: linear stability, the start from rest (or --kick), a small kick, the smallest kick, the
+             longest ramp
   propose    a bistable set in roller variables (Stender's nondimensional numbers mapped), with its checks
   stender    Stender, Hoffmann, Papangelo's oscillator over belt speeds --v_d (stable?, cycle?, kick threshold)
   sheet      the sheet picked from rest by a roller at constant speed: closed form, integration, settle points
@@ -19,7 +20,7 @@ import sys
 
 import numpy as np
 
-from . import forced, sheet, stickslip
+from . import basin, forced, sheet, stickslip
 from .drive import Motor
 from .friction import Friction
 
@@ -84,6 +85,8 @@ def main(argv=None):
         g.add_argument("--" + name, type=float, default=None, help=f"{h} (default {d}; propose: its own)")
         DEFAULTS[name] = d
     g.add_argument("--ramp", default="linear", choices=["linear", "cosine"])
+    ap.add_argument("--kick", type=float, default=None, help="basin: the large disturbance is this kick of th' toward "
+                    "stick from steady sliding (default: the start from rest, th = th' = 0)")
     ap.add_argument("--long", action="store_true", help="cycle: also integrate from rest and extract the cycle")
     ap.add_argument("--t_end", type=float, default=None, help="simulate/cycle --long: end time (default 300 periods)")
     ap.add_argument("--th0", type=float, default=0.0)
@@ -122,11 +125,11 @@ def main(argv=None):
             res = stickslip.simulate(p, a.t_end or 300 * T_n, th0=a.th0, w0=a.w0, dt_out=a.dt_out or T_n / 200)
             out["long"] = stickslip.limit_cycle(p, res, t_min=res.t[-1] - 60 * T_n)
     elif a.command == "basin":
-        b = stickslip.bistability(p)
-        out.update(bistability=b, kick_threshold=stickslip.kick_threshold(p), ramp_threshold=stickslip.ramp_threshold(p, a.ramp))
+        b = basin.bistability(p, start_from_rest=a.kick is None, kick=a.kick)
+        out.update(bistability=b, kick_threshold=basin.kick_threshold(p), ramp_threshold=basin.ramp_threshold(p, a.ramp))
     elif a.command == "propose":
         kw = {k: given[k] for k in ("N", "r", "mu_k", "mu_s") if k in given}
-        out.update(stickslip.propose(w_n=a.w_n, I_hub=a.I_hub, I_rubber=a.I_rubber, xi=a.xi, v0=a.v0,
+        out.update(basin.propose(w_n=a.w_n, I_hub=a.I_hub, I_rubber=a.I_rubber, xi=a.xi, v0=a.v0,
                                      v_d=a.v_d[0] if len(a.v_d) == 1 else 1.5, **kw))
     elif a.command == "stender":
         rows = []
@@ -134,12 +137,12 @@ def main(argv=None):
             q = stickslip.stender(xi=a.xi, v_d=vd, v0=a.v0, mu_d=a.mu_k, mu_sd=a.mu_s / a.mu_k)
             lin = stickslip.linear_stability(q)
             cyc = stickslip.stick_slip_cycle(q)
-            kick = stickslip.kick_threshold(q, rel_tol=1e-2) if lin["stable"] and cyc["exists"] else None
+            kick = basin.kick_threshold(q, rel_tol=1e-2) if lin["stable"] and cyc["exists"] else None
             rows.append({"v_d": vd, "sliding_stable": lin["stable"], "growth_rate": lin["growth_rate"],
                          "cycle": cyc["exists"], "period": cyc.get("period"), "stick_fraction": cyc.get("stick_fraction"),
                          "kick_threshold": kick and kick["threshold"]})
         out["rows"] = rows
-        out["window"] = stickslip.bistable_window(stickslip.stender(xi=a.xi, v0=a.v0, mu_d=a.mu_k, mu_sd=a.mu_s / a.mu_k))
+        out["window"] = basin.bistable_window(stickslip.stender(xi=a.xi, v0=a.v0, mu_d=a.mu_k, mu_sd=a.mu_s / a.mu_k))
     elif a.command == "sheet":
         S = sheet.Sheet(m_s=a.m_s, F_r=a.F_r)
         cf = sheet.closed_form(S, p.friction, p.N, p.r, p.omega)

@@ -42,9 +42,8 @@ def moreau(p, t_end, h, th0=0.0, w0=0.0, t0=0.0):
         F[k + 1], MD[k + 1] = f, md
     res = Result(t=T, q=TH[:, None], u=W[:, None], g=(p.r * W - np.array([p.sheet(x)[0] for x in T]))[:, None], F=F[:, None], mode=MD[:, None])
     start = 0
-    for k in range(1, n + 2):
+    for k in range(1, n + 2):  # runs of equal mode, each until the next run's first sample
         if k == n + 1 or MD[k] != MD[start]:
-            res.phases.append((T[start] - (h if MD[start] == 0 and start > 0 else 0.0), T[min(k, n)] if k <= n else T[n],
-                               (int(MD[start]),)))
+            res.phases.append((T[start], T[min(k, n)], (int(MD[start]),)))
             start = k
     return res
