@@ -156,6 +156,7 @@ typedef struct {
   PetscReal           speed, depth, sheet_speed;
   PetscReal           friction, friction_static, friction_decay;
   RollerFrictionTable table;
+  PetscReal           sheet_mass, sheet_resistance; /* -sheet_mass: the sheet moves by its own forces (contact/contact_sheet.c); 0: kinematic */
 } RollerObstacle;
 
 /* The axle and drive (-axle, model/axle.c, docs/model.md section 8): the hub a rigid body that translates (mass,

@@ -25,3 +25,8 @@ roller_test(friction_printer friction_printer.py LABELS long TIMEOUT 1200)
 # the axle and the drive (-axle, docs/model.md section 10): torsion and bounce in the stiff-rubber limit, the ripple's
 # forced response, the nip force against -static, the energy balance of rolling on the axle, 1 and 2 ranks
 roller_test(axle axle.py LABELS quick mpi PROCESSORS 2 TIMEOUT 600)
+# the sheet's own motion (-sheet_mass, -sheet_resistance): held, picked (its momentum every step, the full-sliding
+# acceleration, the settled friction F_r), the energy balance with its kinetic energy, a restart on 2 ranks; long: the
+# settled creep against the steady rolling state's at F_r on a finer contact mesh
+roller_test(sheet sheet.py LABELS quick mpi PROCESSORS 2 TIMEOUT 600)
+roller_test(sheet_long sheet.py LABELS long ARGS long TIMEOUT 1800)

@@ -167,6 +167,7 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCheck(!(ctx->eig.on && ctx->material.rubber == ROLLER_RUBBER_MAXWELL), ctx->comm, PETSC_ERR_SUP, "-modes does not carry -rubber maxwell yet (its branches are in the time step only): use -rubber kelvin_voigt");
   PetscCheck(!(ctx->init.mms != ROLLER_MMS_NONE && ctx->material.rubber == ROLLER_RUBBER_MAXWELL), ctx->comm, PETSC_ERR_ARG_INCOMP, "-mms %s: the manufactured solutions' loads are those of the elastic or Kelvin-Voigt solid, not of -rubber maxwell",
              RollerMMSTypes[ctx->init.mms]);
+  PetscCheck(!(ctx->eig.on && ctx->obstacle.sheet_mass > 0), ctx->comm, PETSC_ERR_SUP, "-sheet_mass with -modes: the steady state takes the sheet's speed -sheet_speed (the force balance of a moving sheet is the transient's)");
   if (ctx->axle.on) { /* what the hub's elimination (model/axle.h) carries */
     PetscCheck(!ctx->eig.on, ctx->comm, PETSC_ERR_SUP, "-axle with -modes: the steady state and the eigenproblem with the hub's unknowns are not built yet (docs/squeal.md section 10)");
     PetscCheck(!ctx->disc.static_solve && ctx->init.mms == ROLLER_MMS_NONE, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes no -static or -mms");

@@ -155,6 +155,7 @@ PetscErrorCode RollerContactCreate(Roller ctx, RollerContact *contact)
   /* the step's solver is set up by RollerContactPrepare, in the set-up stage, when the scheme has made its step
      matrices; -contact_check's others when first used */
   if (ctx->obstacle.friction > 0) PetscCall(RollerContactFrictionCreate(ctx, c)); /* none at -friction 0 */
+  PetscCall(RollerContactSheetSetUp(ctx, c));
   PetscCall(PetscInfo(NULL, "Contact: %" PetscInt_FMT " Gamma_C nodes (%" PetscInt_FMT " on this rank), solver %s\n", nc, c->nodes.nown, c->solver->name));
   *contact = c;
   PetscFunctionReturn(0);
@@ -169,6 +170,16 @@ PetscErrorCode RollerContactSolve(Roller ctx, RollerContact c, const RollerConta
   PetscCall(RollerContactSetUpStep(ctx, c, stage, t));
   PetscCall(VecCopy(b, c->acc.b));
   PetscCall(RollerContactSolveWith(ctx, c, c->solver, b, xi, &c->acc.result));
+  if (RollerContactSheetMoves(c)) { /* the sheet's case (sliding either way, or held): solved again in the one that holds */
+    PetscBool holds;
+
+    PetscCall(RollerContactSheetAccept(ctx, c, c->acc.result.lambda_t, &holds));
+    for (PetscInt k = 0; !holds && k < 2; ++k) {
+      PetscCall(RollerContactSolveWith(ctx, c, c->solver, b, xi, &c->acc.result));
+      PetscCall(RollerContactSheetAccept(ctx, c, c->acc.result.lambda_t, &holds));
+    }
+    PetscCheck(holds, ctx->comm, PETSC_ERR_NOT_CONVERGED, "At t = %g the sheet (-sheet_mass) found no consistent case: sliding forward, held and sliding back all contradict the step's friction", (double)t);
+  }
   c->acc.solved = PETSC_TRUE;
   if (c->opt.check) PetscCall(RollerContactCheckStep(ctx, c, b, xi));
   PetscFunctionReturn(0);

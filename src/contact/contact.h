@@ -31,7 +31,13 @@ PETSC_INTERN PetscErrorCode RollerContactInfo(Roller, RollerContact, Vec, Vec, V
 PETSC_INTERN PetscErrorCode RollerContactEnergyAdd(Roller, RollerContact, Vec, PetscReal, PetscReal, RollerStepInfo *);
 PETSC_INTERN PetscErrorCode RollerContactFields(Roller, RollerContact, Vec, Vec, Vec); /* pressure, traction, state: P1 scalar Vecs on the mesh */
 PETSC_INTERN PetscBool      RollerContactHasFriction(RollerContact);
-PETSC_INTERN PetscBool      RollerContactWantsRow(RollerContact);
+/* -sheet_mass (contact_sheet.c): the sheet moves by its own forces; its part of E^k, its speed, its state for the
+   checkpoint (4 reals: X^k, X^{k-1}, X^{k-2} and its case; NULL for the kinematic sheet) */
+PETSC_INTERN PetscBool  RollerContactSheetMoves(RollerContact);
+PETSC_INTERN PetscReal  RollerContactSheetEnergy(Roller, RollerContact);
+PETSC_INTERN PetscReal  RollerContactSheetSpeed(Roller, RollerContact);
+PETSC_INTERN PetscReal *RollerContactSheetState(RollerContact);
+PETSC_INTERN PetscBool  RollerContactWantsRow(RollerContact);
 /* Dense pieces the steady state of -modes (modes/steady*.c) shares with the step's contact solvers:
    contact_lemke.c: the LCP w = M z + q >= 0, z >= 0, z . w = 0 (M n x n column-major) by Lemke's method;
    *solved false on a secondary ray (no solution found);

@@ -143,11 +143,12 @@ static PetscErrorCode FrictionData(Roller ctx, RollerContact c, const PetscReal 
   const PetscInt        m = c->step.ncand, m2 = 2 * m, n = 2 * c->nodes.nc, *cand = c->step.cand;
   const PetscReal      *nr = c->step.normal, *tg = c->step.tangent, *xc = c->nodes.xc;
   const PetscScalar    *uf, *u2;
-  PetscReal             t2[2], dX;
+  PetscReal             t2[2], dX, compliance = 0.0;
 
   PetscFunctionBeginUser;
   SlipFrame(ctx, c->step.t, t2, &dX);
-  PetscCall(RollerContactGather(c, ctx->state.prev, c->nodes.red2)); /* xi^{k-2} */
+  if (RollerContactSheetMoves(c)) RollerContactSheetFree(ctx, c, &dX, &compliance); /* the sheet's own motion */
+  PetscCall(RollerContactGather(c, ctx->state.prev, c->nodes.red2));                /* xi^{k-2} */
   PetscCall(VecGetArrayRead(c->nodes.red, &uf));
   PetscCall(VecGetArrayRead(c->nodes.red2, &u2));
   for (PetscInt a = 0; a < m; ++a) {
@@ -161,7 +162,7 @@ static PetscErrorCode FrictionData(Roller ctx, RollerContact c, const PetscReal 
       fr->box.G[a + (size_t)b * m2]           = Entry(S, n, nr, nr, i, j) + RollerContactBorderEntry(&c->step, nr, nr, i, j, n);
       fr->box.G[a + (size_t)(m + b) * m2]     = Entry(S, n, nr, tg, i, j) + RollerContactBorderEntry(&c->step, nr, tg, i, j, n);
       fr->box.G[m + a + (size_t)b * m2]       = Entry(S, n, tg, nr, i, j) + RollerContactBorderEntry(&c->step, tg, nr, i, j, n);
-      fr->box.G[m + a + (size_t)(m + b) * m2] = Entry(S, n, tg, tg, i, j) + RollerContactBorderEntry(&c->step, tg, tg, i, j, n);
+      fr->box.G[m + a + (size_t)(m + b) * m2] = Entry(S, n, tg, tg, i, j) + RollerContactBorderEntry(&c->step, tg, tg, i, j, n) + compliance;
     }
   }
   PetscCall(VecRestoreArrayRead(c->nodes.red, &uf));
@@ -306,6 +307,10 @@ PetscErrorCode RollerContactFrictionInfo(Roller ctx, RollerContact c, const Pets
   f->iterations      = fr->its;
   f->fallback        = fr->fallback;
   SlipFrame(ctx, t, t2, &dX);
+  if (RollerContactSheetMoves(c)) { /* the sheet's own advance X^k - X^{k-2}: internal, the resistance dissipates */
+    dX = c->sheet.X[0] - c->sheet.X[2];
+    f->dissipation += c->sheet.dissipation;
+  }
   { /* the drive's own motion of the contact nodes over the step: the scale of a sticking node's slip */
     PetscReal th0, th2;
 
@@ -324,7 +329,7 @@ PetscErrorCode RollerContactFrictionInfo(Roller ctx, RollerContact c, const Pets
     if (lambda[i] > 0.0) sscale = PetscMax(sscale, PetscMax(PetscAbsReal(motion), PetscAbsReal(slip[i])));
     f->force += lt[i];
     f->dissipation -= 0.5 * lt[i] * slip[i];
-    f->sheet_step += 0.5 * lt[i] * dX;
+    if (!RollerContactSheetMoves(c)) f->sheet_step += 0.5 * lt[i] * dX;
     f->shaft_step -= 0.5 * lt[i] * ((tg[0] - t2[0]) * p2[0] + (tg[1] - t2[1]) * p2[1]);
   }
   for (PetscInt i = 0; i < c->nodes.nc; ++i) {

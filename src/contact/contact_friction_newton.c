@@ -53,7 +53,7 @@ PetscErrorCode RollerContactFrictionLaggedMu(Roller ctx, RollerContact c, PetscI
   PetscFunctionBeginUser;
   RollerContactSheetTangent(ctx, t - dt, t1);
   RollerContactSheetTangent(ctx, t - 2.0 * dt, t2);
-  dX = RollerSheetPosition(ctx, t - dt) - RollerSheetPosition(ctx, t - 2.0 * dt);
+  dX = RollerContactSheetMoves(c) ? c->sheet.X[0] - c->sheet.X[1] : RollerSheetPosition(ctx, t - dt) - RollerSheetPosition(ctx, t - 2.0 * dt);
   PetscCall(RollerContactGather(c, ctx->state.cur, c->nodes.red1));
   PetscCall(VecGetArrayRead(c->nodes.red1, &u1));
   PetscCall(VecGetArrayRead(c->nodes.red2, &u2));

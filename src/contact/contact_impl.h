@@ -156,8 +156,18 @@ typedef struct {
   PetscInt            steps;
 } RollerContactCheck;
 
+/* The sheet's own motion (-sheet_mass, contact_sheet.c): its mass and resistance per unit width, the levels X^k,
+   X^{k-1}, X^{k-2} after the last step and its case X[3] (1 or -1: sliding along +-e1, 0: held), the resistance's
+   dissipation in the last step. mass 0: the kinematic sheet of -sheet_speed. */
+typedef struct {
+  PetscReal mass, resistance;
+  PetscReal X[4];
+  PetscReal dissipation;
+} RollerContactSheet;
+
 struct _n_RollerContact {
   MPI_Comm              comm;
+  RollerContactSheet    sheet;
   RollerContactOptions  opt;
   RollerContactNodes    nodes;
   RollerContactStep     step;
@@ -168,6 +178,11 @@ struct _n_RollerContact {
   RollerContactSolver   solver;   /* the one of -contact_solver */
   RollerContactFriction friction; /* NULL without friction (-friction 0) */
 };
+
+/* contact_sheet.c (RollerContactSheetMoves, Energy, Speed, State: contact.h) */
+PETSC_INTERN PetscErrorCode RollerContactSheetSetUp(Roller, RollerContact);
+PETSC_INTERN void           RollerContactSheetFree(Roller, RollerContact, PetscReal *, PetscReal *); /* dX without friction, compliance dt^2/m */
+PETSC_INTERN PetscErrorCode RollerContactSheetAccept(Roller, RollerContact, const PetscReal[], PetscBool *);
 
 /* contact_registry.c */
 PETSC_INTERN PetscErrorCode RollerContactSolveWith(Roller, RollerContact, RollerContactSolver, Vec, Vec, RollerContactResult *);

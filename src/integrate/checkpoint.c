@@ -81,6 +81,7 @@ PetscErrorCode RollerCheckpointRegister(Roller ctx)
   PetscFunctionBeginUser;
   PetscCall(RollerSchemeKept(ctx, &n, kept, names));
   for (PetscInt i = 0; i < n; ++i) PetscCall(RollerCheckpointAddVec(ctx, names[i], kept[i], NULL, NULL));
+  if (RollerContactSheetMoves(ctx->contact)) PetscCall(RollerCheckpointAddReals(ctx, "sheet", 4, RollerContactSheetState(ctx->contact))); /* X^k, X^{k-1}, X^{k-2}, its case */
   if (ctx->axle.hub) {
     RollerHubState *s = &ctx->axle.hub->s;
 

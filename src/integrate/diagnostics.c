@@ -77,7 +77,7 @@ static PetscErrorCode AxleColumns(Roller ctx, RollerStepInfo *info)
   info->axle.y            = 0.0;
   info->axle.hub_rate     = td;
   info->axle.drive_torque = info->friction.torque;
-  info->axle.sheet_speed  = ctx->obstacle.sheet_speed;
+  info->axle.sheet_speed  = ctx->contact ? RollerContactSheetSpeed(ctx, ctx->contact) : ctx->obstacle.sheet_speed;
   if (ctx->axle.on) {
     const RollerHubState *s    = &ctx->axle.hub->s;
     const PetscReal       rate = (s->cur[2] - s->prev[2]) / ctx->ts.dt;

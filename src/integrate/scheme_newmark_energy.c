@@ -28,7 +28,8 @@ PetscErrorCode RollerNewmarkEnergy(RollerScheme s, Roller ctx, PetscReal *energy
   if (nm->beta != 0.5) PetscCall(VecDot(ctx->state.cur, ctx->state.Kprev, &cross));
   *energy = 0.5 * ctx->material.density * nm->kinetic / (dt * dt) + 0.5 * nm->beta * PetscRealPart(pot1 + pot2) + 0.5 * (1.0 - 2.0 * nm->beta) * PetscRealPart(cross);
   if (nm->mx) PetscCall(RollerMaxwellEnergyAdd(nm->mx, ctx, energy));
-  if (ctx->axle.on) PetscCall(RollerHubEnergy(ctx, nm->beta, energy)); /* adds q's terms */
+  if (ctx->axle.on) PetscCall(RollerHubEnergy(ctx, nm->beta, energy));                               /* adds q's terms */
+  if (RollerContactSheetMoves(ctx->contact)) *energy += RollerContactSheetEnergy(ctx, ctx->contact); /* -sheet_mass: its kinetic energy */
   PetscFunctionReturn(0);
 }
 

@@ -9,7 +9,7 @@ PetscErrorCode RollerAxleSetFromOptions(Roller ctx)
 
   PetscFunctionBeginUser;
   ax->nip_ramp = ctx->obstacle.speed > 0 ? ctx->obstacle.depth / ctx->obstacle.speed : 0.0;
-  PetscOptionsBegin(ctx->comm, NULL, "Roller: the axle and the drive (-axle; docs/model.md section 10)", NULL);
+  PetscOptionsBegin(ctx->comm, NULL, "Roller: the axle, the drive and the sheet's own motion (-axle, -sheet_mass; docs/model.md section 10)", NULL);
   PetscCall(PetscOptionsBool("-axle", "The hub a rigid body on a vertical spring preloaded to -nip_force, driven through a torsional spring and damper (off: the hub turns exactly at theta(t), the sheet at -obstacle_depth)", NULL, ax->on, &ax->on, NULL));
   PetscCall(PetscOptionsReal("-axle_mass", "Mass of the hub, shaft and bracket per unit width (0: the rubber body's own mass)", NULL, ax->mass, &ax->mass, NULL));
   PetscCall(PetscOptionsReal("-axle_inertia", "Polar inertia per unit width of the hub, shaft, gears and the motor's referred to the roller (0: the rubber body's own)", NULL, ax->inertia, &ax->inertia, NULL));
@@ -18,7 +18,15 @@ PetscErrorCode RollerAxleSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsReal("-nip_ramp", "Time over which the preload rises smoothly to -nip_force (default: the press time -obstacle_depth/-obstacle_speed)", NULL, ax->nip_ramp, &ax->nip_ramp, NULL));
   PetscCall(PetscOptionsReal("-drive_stiffness", "Torsional stiffness per unit width of the drive (gear train and motor) between the motor and the hub (required with -axle)", NULL, ax->drive_stiffness, &ax->drive_stiffness, NULL));
   PetscCall(PetscOptionsReal("-drive_damping", "Torsional damping per unit width of the drive", NULL, ax->drive_damping, &ax->drive_damping, NULL));
+  PetscCall(
+    PetscOptionsReal("-sheet_mass", "The sheet's mass per unit width: its speed follows from the friction and -sheet_resistance, from -sheet_speed at t = 0 (0: the kinematic sheet at -sheet_speed)", NULL, ctx->obstacle.sheet_mass, &ctx->obstacle.sheet_mass, NULL));
+  PetscCall(PetscOptionsReal("-sheet_resistance", "With -sheet_mass: the force per unit width holding the sheet back (the stack, the separation pad), a Coulomb element on its motion", NULL, ctx->obstacle.sheet_resistance, &ctx->obstacle.sheet_resistance, NULL));
   PetscOptionsEnd();
+  RollerCheckOption(ctx->comm, "-sheet_mass", ctx->obstacle.sheet_mass, ctx->obstacle.sheet_mass >= 0, ">= 0 (0: the kinematic sheet)");
+  RollerCheckOption(ctx->comm, "-sheet_resistance", ctx->obstacle.sheet_resistance, ctx->obstacle.sheet_resistance >= 0, ">= 0");
+  PetscCheck(ctx->obstacle.sheet_resistance == 0 || ctx->obstacle.sheet_mass > 0, ctx->comm, PETSC_ERR_ARG_INCOMP, "-sheet_resistance %g holds a sheet that moves by its own forces: give -sheet_mass > 0", (double)ctx->obstacle.sheet_resistance);
+  PetscCheck(ctx->obstacle.sheet_mass == 0 || (ctx->obstacle.on && ctx->obstacle.friction > 0), ctx->comm, PETSC_ERR_ARG_INCOMP, "-sheet_mass %g: the sheet moves by the friction: needs -obstacle and -friction > 0 (or -friction_table)",
+             (double)ctx->obstacle.sheet_mass);
   RollerCheckOption(ctx->comm, "-axle_mass", ax->mass, ax->mass >= 0, ">= 0 (0: the rubber's mass)");
   RollerCheckOption(ctx->comm, "-axle_inertia", ax->inertia, ax->inertia >= 0, ">= 0 (0: the rubber's polar inertia)");
   RollerCheckOption(ctx->comm, "-axle_stiffness", ax->stiffness, ax->stiffness >= 0, ">= 0");
