@@ -150,7 +150,7 @@ def sweep_map(rows, png, scene_x=None, scene_y=None, title="", si=False):
 
 def transient_fit(t, y, f_guess, start=None):
     """Growth rate and frequency of the line nearest f_guess in y(t) from t = start on (default: the second half)
-    (matrix pencil of scripts/squeal_fit.py, 10 exponentials, on the mean-free signal)."""
+    (matrix pencil of scripts/rollerreport/squeal_fit.py, 10 exponentials, on the mean-free signal)."""
     from . import squeal_fit
 
     t, y = np.asarray(t, float), np.asarray(y, float)

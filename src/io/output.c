@@ -90,7 +90,7 @@ PetscErrorCode RollerFieldCreate(DM dm, const char name[], OutputField *field)
 }
 
 /* The run's parameters: written as attributes of /parameters (RollerWriteParameters), so that scripts
-   (plot_fields.py) need not be told; the physical ones (the roller, its material, rotation and friction) are those a
+   (rollerplots.fields) need not be told; the physical ones (the roller, its material, rotation and friction) are those a
    file computed for another roller differs in (RollerCheckParameters). */
 typedef struct {
   const char *name;
