@@ -5,8 +5,9 @@ roller_test(spectrum_synthetic spectrum_synthetic.py LABELS quick TIMEOUT 120)
 # scripts/rollerplots/traction.py (pressure, traction and stick zone across the contact patch, docs/friction.md 5.1)
 # on a small friction run: its P and Q are the CSV's, every theory option draws.
 roller_test(plot_traction_smoke plot_traction_smoke.py LABELS quick TIMEOUT 180)
-# The report package scripts/rollerreport (docs/squeal.md section 9.1) on a synthetic folder: verdict, loss-factor
-# margin, friction at onset, transient fit, WAV (16 bit, 44.1 kHz, loudest line within 2 % of the pitch), files.
+# The report package scripts/rollerreport (docs/squeal.md section 9) on synthetic folders: the radiation model against
+# the pulsating and oscillating cylinder's closed forms, the finite width's limits, A-weighting; verdict, mechanisms,
+# report.json's SPEC keys, the WAV of the simulated span at its stated level and envelope, the journal's reuse.
 roller_test(rollerreport_unit rollerreport_unit.py LABELS quick TIMEOUT 300)
 # scripts/rollerreport/squeal_fit.py on a synthetic monitor CSV (docs/squeal.md 4.4.3): the seed's response of a mode of any order
 # fitted in the contact force (seeded minus unseeded, the start's own line at the same frequency cancelled), growth

@@ -1,0 +1,112 @@
+"""What a listener hears (docs/squeal.md 9.3): the transient's surface motion radiated to the listener
+(rollerreport.radiation), written as squeal.wav of the simulated span at a stated level (rollerreport.sound), its
+levels in dB SPL and dB(A), its spectrogram.
+
+The surface's orders come from what the folder holds:
+- transient.csv's R (the mean radial displacement of Gamma_C): order 0, the breathing of the roller, always;
+- surface.csv (`roller -monitor_surface_csv`, when the roller has it): the lab-frame orders n >= 1 of the radial
+  displacement of Gamma_C, columns ur<n>c, ur<n>s;
+- transient.csv's axle_y (`-axle`): the hub's vertical translation, a rigid order-1 motion (normal velocity
+  U sin phi).
+Tangential motion (alpha, the torsional mode; the sheet's in-plane speed) has no normal velocity and is silent in
+this model. The mesh's lines (rollerreport.lines) are removed from each series first.
+"""
+import csv
+import math
+import os
+
+import numpy as np
+
+from . import lines, radiation, sound
+
+DEFAULT_WIDTH = 0.030  # m: the printer roller's (docs/squeal.md 7.1: a 30 mm wide roller)
+
+
+def listener(scene):
+    """The listener: distance (m), the roller's width (m), the direction (degrees; 90 above the roller) from
+    scene.json's "listener", else the defaults (1 m: ISO 7779 / ECMA-74's bystander; 30 mm)."""
+    given = scene.get("listener") or {}
+    return {"distance_m": float(given.get("distance_m", radiation.DEFAULT_LISTENER["distance_m"])),
+            "width_m": float(given.get("width_m", DEFAULT_WIDTH)),
+            "angle_deg": float(given.get("angle_deg", radiation.DEFAULT_LISTENER["angle_deg"])),
+            "air": {"density_kg_m3": radiation.RHO_AIR, "sound_speed_m_s": radiation.C_AIR},
+            "model": "2-D exact cylinder radiation per circumferential order x the finite-width factor of a line of "
+                     "monopoles, free field (docs/squeal.md 9.3)"}
+
+
+def _columns(path, names):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))[1:]  # row 0: the state before the first contact solve
+    have = [n for n in names if rows and n in rows[0]]
+    return {n: np.array([float(r[n]) for r in rows]) for n in ["t"] + have}
+
+
+def surface_orders(folder, f_m=None, keep=None):
+    """(t, {n: (cos part, sin part)} in scene length units, source {file, columns}) from the folder's files."""
+    j = lambda name: os.path.join(folder, name)  # noqa: E731
+    cols = _columns(j("transient.csv"), ["R", "axle_y"])
+    t = cols["t"]
+    clean = lambda y: lines.notch(t, y, f_m, keep=keep)  # noqa: E731  (mean-free, the mesh's lines removed)
+    orders = {0: (clean(cols["R"]), None)}
+    source = {"file": "transient.csv", "columns": ["R"]}
+    if os.path.exists(j("surface.csv")):
+        with open(j("surface.csv"), newline="") as f:
+            head = next(csv.reader(f))
+        names = [h for h in head if h.startswith("ur") and h[-1] in "cs"]
+        surf = _columns(j("surface.csv"), names)
+        if len(surf["t"]) == len(t) and np.allclose(surf["t"], t):
+            for n in sorted({int(h[2:-1]) for h in names}):
+                orders[n] = (clean(surf.get(f"ur{n}c", np.zeros_like(t))), clean(surf.get(f"ur{n}s", np.zeros_like(t))))
+            source = {"file": "surface.csv", "columns": ["ur0"] + names}
+    if "axle_y" in cols and np.ptp(cols["axle_y"]) > 0:
+        c1, s1 = orders.get(1, (np.zeros_like(t), np.zeros_like(t)))
+        orders[1] = (c1, s1 + clean(cols["axle_y"]))
+        source["columns"] = source["columns"] + ["axle_y (transient.csv)"]
+    return t, orders, source
+
+
+def uniform(t, orders):
+    """The series on a uniform grid of the mean step (the monitor's rows are uniform at a fixed -ts_dt)."""
+    dt = (t[-1] - t[0]) / (len(t) - 1)
+    tu = t[0] + dt * np.arange(len(t))
+    if np.allclose(tu, t, rtol=0, atol=1e-6 * dt):
+        return t, orders
+    f = lambda y: None if y is None else np.interp(tu, t, y)  # noqa: E731
+    return tu, {n: (f(c), f(s)) for n, (c, s) in orders.items()}
+
+
+def write(folder, scene, v, f_m=None, seeded=True):
+    """squeal.wav, spectrogram.png and the levels; returns the sound's dict for report.json."""
+    import h5py
+
+    j = lambda name: os.path.join(folder, name)  # noqa: E731
+    s = float(v["seconds_per_unit"])
+    L = float(scene.get("metres_per_unit", 1.0 if scene.get("units") == "si" else math.nan))
+    r_outer = scene.get("r_outer")
+    if r_outer is None and os.path.exists(j("transient.h5")):
+        with h5py.File(j("transient.h5"), "r") as f:
+            r_outer = float(np.ravel(f["parameters"].attrs["r_outer"])[0])
+    lis = listener(scene)
+    t, orders, source = surface_orders(folder, f_m, keep=v["frequency"])
+    t, orders = uniform(t, orders)
+    ts = (t - t[0]) * s
+    metres = {n: (c * L, None if sn is None else sn * L) for n, (c, sn) in orders.items()}
+    p = radiation.radiate(ts, metres, float(r_outer) * L, lis["distance_m"], lis["width_m"], lis["angle_deg"])
+    wav = sound.write_pressure_wav(j("squeal.wav"), ts, p)
+    leq, lmax = radiation.level_db(p, ts)
+    pa = radiation.a_weighted(ts, p)
+    leq_a, lmax_a = radiation.level_db(pa, ts)
+    samples, rate = sound.read_wav(j("squeal.wav"))
+    loud = sound.loudest_line(samples, rate, pad=8) if np.any(samples) else math.nan
+    sound.spectrogram_png(j("spectrogram.png"), wav["samples"], rate, v["pitch_hz"],
+                          f"The sound at {lis['distance_m']:g} m ({lis['width_m'] * 1e3:g} mm wide roller): "
+                          f"Lmax {lmax:.1f} dB, {lmax_a:.1f} dB(A)")
+    note = ("the seeded transient's level is that of its seed (-ic_amplitude, 2 % of the depth by default): what a "
+            "disturbance of that size in the mode sounds like, not a level the roller reaches by itself" if seeded else "")
+    return {"spl_db": lmax, "spl_leq_db": leq, "spl_dba": lmax_a, "spl_leq_dba": leq_a, "loudest_hz": loud,
+            "wav_seconds": wav["seconds"], "notice": wav["notice"], "level_note": note,
+            "wav_reference": {"full_scale_db_spl": wav["full_scale_db"], "full_scale_peak_pa": wav["full_scale_pa"],
+                              "peak_pa": wav["peak_pa"], "rate": rate},
+            "wav_source": {"file": source["file"], "column": ",".join(source["columns"]), "t0": float(t[0]),
+                           "t1": float(t[-1]), "seconds_per_unit": s, "metres_per_unit": L},
+            "listener": lis, "orders": sorted(orders), "series": (ts, p)}
