@@ -16,3 +16,6 @@ roller_test(squeal_fit_synthetic squeal_fit_synthetic.py LABELS quick TIMEOUT 12
 # The packages of scripts/ (rollerref, rollerreport, rollerplots, rollertools): every module imports, every command
 # answers --help, no loose .py file in scripts/.
 roller_test(scripts_packages scripts_packages.py LABELS quick TIMEOUT 300)
+# report.html in headless Chromium (scripts/install-deps.sh installs it): its audio element loads squeal.wav with the
+# WAV's duration, every image loads, every link is a relative file of the folder.
+roller_test(report_page report_page.py LABELS quick TIMEOUT 300)

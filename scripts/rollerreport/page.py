@@ -74,7 +74,7 @@ def write(folder, out, name="report.html"):
             rows.append(f"<tr><td>{_e(part)}</td><td>{_e(p.get('status'))}</td><td>{_fmt(p.get('cpu_seconds'), '.1f')}</td>"
                         f"<td>{_fmt(p.get('wall_seconds'), '.1f')}</td><td>{_e(p.get('ranks', 1))}</td><td>{'yes' if p.get('reused') else 'no'}</td></tr>")
         body.append("<h2>Cost</h2><table>" + "".join(rows) + "</table>")
-    links = [f for f in ("report.md", "report.json", "commands.json", "journal.json") if has(f)]
+    links = ["report.md", "report.json"] + [f for f in ("commands.json", "journal.json") if has(f)]  # report.json: next
     body.append("<p>" + " &middot; ".join(f"<a href='{f}'>{f}</a>" for f in links) + "</p>")
     page = (f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>Squeak report: {_e(scene.get('name', ''))}</title>"
             f"<style>{STYLE}</style></head><body>\n" + "\n".join(body) + "\n</body></html>\n")
