@@ -1,4 +1,4 @@
-"""-sweep (src/app/sweep.c, docs/squeal.md section 6): a 3 x 2 map (omega 0, 0.1, 0.2 times young 0.1, 0.2) of the free
+"""-sweep (src/sweep/sweep.c, docs/squeal.md section 6): a 3 x 2 map (omega 0, 0.1, 0.2 times young 0.1, 0.2) of the free
 annulus on the coarse mesh -mesh_h 0.08, by one `mpiexec -n 2` (two sub-communicators of one rank, the cases
 round-robin) and by one rank. Asserted:
   - the gathered CSV has every case, in order, with its values of the swept options (the last varies fastest);

@@ -1,4 +1,4 @@
-"""-sweep without -modes (src/app/sweep_run.c, sweep_transient.c, sweep_journal.c; docs/squeal.md section 6.5): a
+"""-sweep without -modes (src/sweep/sweep_run.c, sweep_transient.c, sweep_journal.c; docs/squeal.md section 6.5): a
 transient map of the feeder (jobs/feed.yaml), creep x friction: sheet_speed 0.05 (the roller's surface, omega r_C =
 0.157, slides over a slow sheet) and 0.1555 (1 % creep) times mu 0.3, 0.5, 0.8, on the coarse mesh -mesh_h 0.05, the
 sheet pressed in by t = 0.5 (-obstacle_speed 0.05) and run to t = 4; the rows are over the last half. Asserted:

@@ -78,7 +78,7 @@ def write(data, stem, seconds_per_unit=1.0, sound=None, fps=10, title=""):
     x, cells, r = data["x"], data["cells"], data["r_outer"] or float(np.max(np.hypot(data["x"][:, 0], data["x"][:, 1])))
     top = float(np.max(np.hypot(data["dxi"][..., 0], data["dxi"][..., 1])))
     mag = MAGNIFIED_TO * r / top if top > 0 else 1.0
-    vmax = float(np.max(data["speed"])) or 1.0
+    vmax = float(np.percentile(data["speed"], 99.5)) or float(np.max(data["speed"])) or 1.0  # a spike does not set it
     contact = data["state"] is not None and np.any(data["state"] > 0)
     fig = plt.figure(figsize=(9, 6.2))
     grid = fig.add_gridspec(2, 2, height_ratios=(3, 1.1), width_ratios=(1, 1))

@@ -96,6 +96,9 @@ def write(folder, scene, v, f_m=None, seeded=True):
     leq, lmax = radiation.level_db(p, ts)
     pa = radiation.a_weighted(ts, p)
     leq_a, lmax_a = radiation.level_db(pa, ts)
+    pm = radiation.band(ts, p, 0.8 * v["pitch_hz"], 1.2 * v["pitch_hz"])  # the mode's line: within 20 % of its pitch
+    mode_db = radiation.level_db(pm, ts)[1]
+    mode_dba = mode_db + float(radiation.a_weighting_db(v["pitch_hz"]))
     samples, rate = sound.read_wav(j("squeal.wav"))
     loud = sound.loudest_line(samples, rate, pad=8) if np.any(samples) else math.nan
     sound.spectrogram_png(j("spectrogram.png"), wav["samples"], rate, v["pitch_hz"],
@@ -104,6 +107,7 @@ def write(folder, scene, v, f_m=None, seeded=True):
     note = ("the seeded transient's level is that of its seed (-ic_amplitude, 2 % of the depth by default): what a "
             "disturbance of that size in the mode sounds like, not a level the roller reaches by itself" if seeded else "")
     return {"spl_db": lmax, "spl_leq_db": leq, "spl_dba": lmax_a, "spl_leq_dba": leq_a, "loudest_hz": loud,
+            "spl_mode_db": mode_db, "spl_mode_dba": mode_dba, "mode_band_hz": [0.8 * v["pitch_hz"], 1.2 * v["pitch_hz"]],
             "wav_seconds": wav["seconds"], "notice": wav["notice"], "level_note": note,
             "wav_reference": {"full_scale_db_spl": wav["full_scale_db"], "full_scale_peak_pa": wav["full_scale_pa"],
                               "peak_pa": wav["peak_pa"], "rate": rate},

@@ -47,7 +47,8 @@ def flutter(ctx):
     snd = ctx.get("sound") or {}
     return {"kind": "flutter", "status": "run", "squeals": bool(v["squeals"]), "frequency_hz": v["pitch_hz"],
             "growth_rate_per_s": v["growth_rate"] / s, "limit_cycle_amplitude": None,
-            "spl_db": snd.get("spl_db"), "spl_note": snd.get("level_note"), "evidence": ev}
+            "spl_db": snd.get("spl_mode_db"), "spl_note": "the level of the mode's line (within 20 % of its pitch) in the "
+            "seeded transient's sound; " + (snd.get("level_note") or ""), "evidence": ev}
 
 
 def limit_cycle(t, y, tail=1.0 / 3):

@@ -149,6 +149,16 @@ def a_weighted(t, p):
     return np.fft.irfft(F * g, len(p))
 
 
+def band(t, p, f0, f1):
+    """The pressure series within the band f0 <= f <= f1 (Hz; the frequency domain, zero-padded)."""
+    t = np.asarray(t, float)
+    n = len(p)
+    F = np.fft.rfft(p, 2 * n)
+    f = np.fft.rfftfreq(2 * n, t[1] - t[0])
+    F[(f < f0) | (f > f1)] = 0
+    return np.fft.irfft(F, 2 * n)[:n]
+
+
 def level_db(p, t=None, window=0.125):
     """(Leq over the series, the loudest level over windows of `window` seconds (IEC 'fast': 125 ms; the whole
     series when shorter)) in dB re 20 uPa; -inf for silence."""

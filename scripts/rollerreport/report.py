@@ -363,7 +363,8 @@ def write(folder, parts=PARTS):
         md += ["## The sound", "", f"[squeal.wav](squeal.wav): the pressure at {lis['distance_m']:g} m from a "
                f"{lis['width_m'] * 1e3:g} mm wide roller ({lis['angle_deg']:g} degrees; {lis['model']}), radiated by "
                f"{src['column']} of {src['file']}: **{snd['spl_db']:.1f} dB SPL** (loudest 125 ms; Leq {snd['spl_leq_db']:.1f}), "
-               f"{snd['spl_dba']:.1f} dB(A); loudest line {snd['loudest_hz']:.1f} Hz (predicted {v['pitch_hz']:.1f} Hz). "
+               f"{snd['spl_dba']:.1f} dB(A); loudest line {snd['loudest_hz']:.1f} Hz; the mode's line (predicted {v['pitch_hz']:.1f} Hz, "
+               f"within 20 %) {snd['spl_mode_db']:.1f} dB SPL, {snd['spl_mode_dba']:.1f} dB(A). "
                f"{snd['wav_seconds'] * 1e3:.1f} ms: the simulated span {src['t0']:.4g} to {src['t1']:.4g} times "
                f"{src['seconds_per_unit']:.4g} s per unit; full scale is a sine of {snd['wav_reference']['full_scale_db_spl']:g} dB SPL.", ""]
         md += [f"> {x}" for x in (snd["notice"], snd["level_note"]) if x] + ["", "![spectrogram](spectrogram.png)", ""]

@@ -225,7 +225,7 @@ def transient_command(base, opts, a, extra, out, scene):
     cmd = base + mesh_options(j("modes.h5"), extra) + [
         "-ts_scheme", "dmf", "-ts_dt", repr(dt), "-ts_max_time", repr(n * dt), "-ts_max_steps", str(n),
         "-obstacle_speed", "1e6", "-initial_condition", "mode", "-initial_mode_file", j("modes.h5"), "-initial_mode",
-        str(k), "-ic_amplitude", repr(amp), "-monitor_csv", j("transient.csv"), "-output", j("transient.h5"),
+        str(k), "-ic_amplitude", repr(amp), "-monitor_csv", j("transient.csv"), "-monitor_surface_csv", j("surface.csv"), "-output", j("transient.h5"),
         "-output_every", str(output_every(a)), "-checkpoint", j("checkpoint.h5"), "-quiet"]
     what = (f"the transient seeded on mode {k} ({'the least stable' if a.mode is None else 'chosen'}) about the CEA's "
             f"steady state, {a.steps_per_period:g} steps per period, {a.periods:g} periods (docs/squeal.md 4.2)")
@@ -245,6 +245,9 @@ def base_command(cmd):
     out, k = [], 0
     while k < len(cmd):
         name = cmd[k]
+        if name == "-monitor_surface_csv":  # the sound is the seeded run's
+            k += 2
+            continue
         if name in ("-ic_amplitude", "-monitor_csv", "-checkpoint", "-output") and k + 1 < len(cmd):
             d = os.path.dirname(cmd[k + 1])
             value = {"-ic_amplitude": "0", "-monitor_csv": os.path.join(d, "transient_base.csv"),
@@ -258,7 +261,7 @@ def base_command(cmd):
 
 
 # what a run writes into OUTDIR: --fresh removes them first; else each part removes its own before it runs again
-OUTPUTS = ("modes.csv", "modes.h5", "modes.xmf", "steady.csv", "sweep.csv", "transient.csv", "transient_base.csv",
+OUTPUTS = ("modes.csv", "modes.h5", "modes.xmf", "steady.csv", "sweep.csv", "transient.csv", "surface.csv", "transient_base.csv",
            "transient.h5", "transient.xmf", "transient_base.h5", "transient_base.xmf", "scene.json", "commands.json",
            "journal.json", "report.md", "report.json", "report.html", "map.png", "squeal.wav", "spectrogram.png",
            "vibration.gif", "vibration.mp4")
@@ -333,7 +336,7 @@ def main(argv=None):
         steps.run("map", *map_command(base, scene, a, extra, out), outputs=["sweep.csv"], ranks=a.ranks)
     if cea_ok:
         seeded, what = transient_command(base, opts, a, extra, out, scene)
-        if steps.run("transient", seeded, what, outputs=["transient.csv", "transient.h5", "transient.xmf"],
+        if steps.run("transient", seeded, what, outputs=["transient.csv", "surface.csv", "transient.h5", "transient.xmf"],
                      inputs=[j("modes.h5")]):
             steps.run("transient_base", *base_command(seeded), outputs=["transient_base.csv", "transient_base.h5",
                                                                         "transient_base.xmf"], inputs=[j("modes.h5")])
