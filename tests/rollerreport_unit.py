@@ -116,7 +116,8 @@ fl = out["mechanisms"][0]
 later = out["mechanisms"][1:]
 c.check(out["verdict"] == "squeals" and kinds == ["flutter", "stick-slip", "forced"] and fl["status"] == "run" and fl["squeals"]
         and abs(fl["frequency_hz"] - D.PITCH) < 1e-9 and abs(fl["growth_rate_per_s"] - D.SIGMA / s) < 1e-9 * D.SIGMA / s
-        and fl["spl_db"] == out["sound"]["spl_mode_db"] and abs(fl["spl_db"] - out["spl_db"]) < 0.5 and fl["evidence"],
+        and fl["spl_db"] == out["sound"]["spl_mode_db"] and abs(fl["spl_db"] - out["spl_db"]) < 0.5 and fl["evidence"]
+        and out["sound"]["mode_line_resolved"] and abs(out["sound"]["mode_line_hz"] / D.PITCH - 1) < 0.005,
         f"report.json: verdict {out['verdict']}, mechanisms {kinds}; flutter squeals at {fl['frequency_hz']:.1f} Hz, "
         f"{fl['growth_rate_per_s']:.2f} /s, {fl['spl_db']:.1f} dB")
 c.check(all(m["status"].startswith("not run: ") and m["squeals"] is None and m["frequency_hz"] is None and "branch" in m["status"]
@@ -141,6 +142,11 @@ grow = sound.envelope_rate(samples[int(0.1 * len(samples)) : int(0.9 * len(sampl
 c.check(abs(heard / D.PITCH - 1) < 0.01 and abs(grow / (D.SIGMA / s) - 1) < 0.05,
         f"the WAV's loudest line {heard:.1f} Hz (pitch {D.PITCH}, 1 %), its envelope grows at {grow:.2f} /s (the mode's {D.SIGMA / s:.2f} /s, 5 %)")
 snd = out["sound"]
+pc = np.genfromtxt(os.path.join(d, "sound.csv"), delimiter=",", names=True)
+lsb = snd["wav_reference"]["full_scale_peak_pa"] / 32767
+res = np.interp(np.arange(len(samples)) / rate, pc["t"], pc["p"]) - samples * 32768 / 32767 * snd["wav_reference"]["full_scale_peak_pa"]
+c.check(len(pc["t"]) == len(t) - 1 and np.max(np.abs(res)) <= 0.5 * lsb * 1.001,
+        f"sound.csv holds the pressure the WAV quantizes: {len(pc['t'])} rows, the WAV within half a step ({np.max(np.abs(res)) / lsb:.3f} of {lsb:.3g} Pa)")
 c.check(snd["notice"] and "not looped" in snd["notice"] and "0.5 s" in open(os.path.join(d, "report.md")).read(),
         f"a {out['wav_seconds'] * 1e3:.0f} ms WAV: the notice in report.json and report.md ({snd['notice'][:60]}...)")
 for name in ("report.md", "report.html", "map.png", "spectrogram.png", "squeal.wav", "vibration.gif"):

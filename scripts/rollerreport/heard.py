@@ -1,6 +1,9 @@
 """What a listener hears (docs/squeal.md 9.3): the transient's surface motion radiated to the listener
-(rollerreport.radiation), written as squeal.wav of the simulated span at a stated level (rollerreport.sound), its
-levels in dB SPL and dB(A), its spectrogram.
+(rollerreport.radiation), written as squeal.wav of the simulated span at a stated level (rollerreport.sound) and at
+full precision as sound.csv (t in s of audio, p and the A-weighted p_a in Pa: the 16-bit WAV's step is 3.7 dB SPL
+at its 94 dB full scale; p_response: the seed's response radiated, the seeded run's orders minus the unseeded
+run's, when transient_base.csv is there), its levels in dB SPL and dB(A) (the mode's line: p_response within 20 %
+of the pitch), its spectrogram.
 
 The surface's orders come from what the folder holds:
 - transient.csv's R (the mean radial displacement of Gamma_C): order 0, the breathing of the roller, always;
@@ -41,28 +44,42 @@ def _columns(path, names):
     return {n: np.array([float(r[n]) for r in rows]) for n in ["t"] + have}
 
 
-def surface_orders(folder, f_m=None, keep=None):
-    """(t, {n: (cos part, sin part)} in scene length units, source {file, columns}) from the folder's files."""
+def surface_orders(folder, f_m=None, keep=None, base=False):
+    """(t, {n: (cos part, sin part)} in scene length units, source {file, columns}) from the folder's files (base: the
+    unseeded run's, transient_base.csv and surface_base.csv)."""
     j = lambda name: os.path.join(folder, name)  # noqa: E731
-    cols = _columns(j("transient.csv"), ["R", "axle_y"])
+    tcsv, scsv = ("transient_base.csv", "surface_base.csv") if base else ("transient.csv", "surface.csv")
+    cols = _columns(j(tcsv), ["R", "axle_y"])
     t = cols["t"]
     clean = lambda y: lines.notch(t, y, f_m, keep=keep)  # noqa: E731  (mean-free, the mesh's lines removed)
     orders = {0: (clean(cols["R"]), None)}
-    source = {"file": "transient.csv", "columns": ["R"]}
-    if os.path.exists(j("surface.csv")):
-        with open(j("surface.csv"), newline="") as f:
+    source = {"file": tcsv, "columns": ["R"]}
+    if os.path.exists(j(scsv)):
+        with open(j(scsv), newline="") as f:
             head = next(csv.reader(f))
         names = [h for h in head if h.startswith("ur") and h[-1] in "cs"]
-        surf = _columns(j("surface.csv"), names)
+        surf = _columns(j(scsv), names)
         if len(surf["t"]) == len(t) and np.allclose(surf["t"], t):
             for n in sorted({int(h[2:-1]) for h in names}):
                 orders[n] = (clean(surf.get(f"ur{n}c", np.zeros_like(t))), clean(surf.get(f"ur{n}s", np.zeros_like(t))))
-            source = {"file": "surface.csv", "columns": ["ur0"] + names}
+            source = {"file": scsv, "columns": ["ur0"] + names}
     if "axle_y" in cols and np.ptp(cols["axle_y"]) > 0:
         c1, s1 = orders.get(1, (np.zeros_like(t), np.zeros_like(t)))
         orders[1] = (c1, s1 + clean(cols["axle_y"]))
-        source["columns"] = source["columns"] + ["axle_y (transient.csv)"]
+        source["columns"] = source["columns"] + [f"axle_y ({tcsv})"]
     return t, orders, source
+
+
+def response(folder, t, orders, f_m=None, keep=None):
+    """The seed's response: the seeded run's orders minus the unseeded run's (transient_base.csv, surface_base.csv:
+    the same times and the same orders), or None."""
+    if not os.path.exists(os.path.join(folder, "transient_base.csv")):
+        return None
+    tb, ob, _ = surface_orders(folder, f_m, keep, base=True)
+    if len(tb) != len(t) or not np.allclose(tb, t) or set(ob) != set(orders):
+        return None
+    sub = lambda a, b: None if a is None else a - b  # noqa: E731
+    return {n: (orders[n][0] - ob[n][0], sub(orders[n][1], ob[n][1])) for n in orders}
 
 
 def uniform(t, orders):
@@ -88,16 +105,27 @@ def write(folder, scene, v, f_m=None, seeded=True):
             r_outer = float(np.ravel(f["parameters"].attrs["r_outer"])[0])
     lis = listener(scene)
     t, orders, source = surface_orders(folder, f_m, keep=v["frequency"])
+    seed = response(folder, t, orders, f_m, keep=v["frequency"])
     t, orders = uniform(t, orders)
     ts = (t - t[0]) * s
-    metres = {n: (c * L, None if sn is None else sn * L) for n, (c, sn) in orders.items()}
-    p = radiation.radiate(ts, metres, float(r_outer) * L, lis["distance_m"], lis["width_m"], lis["angle_deg"])
+    metres = lambda o: {n: (c * L, None if sn is None else sn * L) for n, (c, sn) in o.items()}  # noqa: E731
+    p = radiation.radiate(ts, metres(orders), float(r_outer) * L, lis["distance_m"], lis["width_m"], lis["angle_deg"])
+    # the mode's own sound: the seed's response radiated (else the seeded run's), within 20 % of the pitch
+    pr = radiation.radiate(ts, metres(uniform(t, seed)[1]), float(r_outer) * L, lis["distance_m"], lis["width_m"],
+                           lis["angle_deg"]) if seed is not None else p
     wav = sound.write_pressure_wav(j("squeal.wav"), ts, p)
     leq, lmax = radiation.level_db(p, ts)
     pa = radiation.a_weighted(ts, p)
     leq_a, lmax_a = radiation.level_db(pa, ts)
-    pm = radiation.band(ts, p, 0.8 * v["pitch_hz"], 1.2 * v["pitch_hz"])  # the mode's line: within 20 % of its pitch
+    with open(j("sound.csv"), "w", newline="") as f:  # the pressure at full precision (the WAV is 16 bit)
+        w = csv.writer(f)
+        w.writerow(["t", "p", "p_a", "p_response"])
+        w.writerows(zip(ts.tolist(), p.tolist(), pa.tolist(), pr.tolist()))
+    pm = radiation.band(ts, pr, 0.8 * v["pitch_hz"], 1.2 * v["pitch_hz"])  # the mode's line: within 20 % of its pitch
     mode_db = radiation.level_db(pm, ts)[1]
+    rate_p = 1.0 / (ts[1] - ts[0])
+    at = sound.loudest_line(pr, rate_p, fmin=0.8 * v["pitch_hz"], pad=64, fmax=1.2 * v["pitch_hz"])
+    resolved = abs(at / v["pitch_hz"] - 1) < 0.02  # the band's loudest line is the mode's, not its edge
     mode_dba = mode_db + float(radiation.a_weighting_db(v["pitch_hz"]))
     samples, rate = sound.read_wav(j("squeal.wav"))
     loud = sound.loudest_line(samples, rate, pad=8) if np.any(samples) else math.nan
@@ -108,6 +136,8 @@ def write(folder, scene, v, f_m=None, seeded=True):
             "disturbance of that size in the mode sounds like, not a level the roller reaches by itself" if seeded else "")
     return {"spl_db": lmax, "spl_leq_db": leq, "spl_dba": lmax_a, "spl_leq_dba": leq_a, "loudest_hz": loud,
             "spl_mode_db": mode_db, "spl_mode_dba": mode_dba, "mode_band_hz": [0.8 * v["pitch_hz"], 1.2 * v["pitch_hz"]],
+            "mode_line_hz": at, "mode_line_resolved": bool(resolved),
+            "mode_source": "the seed's response (the seeded run minus the unseeded run)" if seed is not None else "the seeded run",
             "wav_seconds": wav["seconds"], "notice": wav["notice"], "level_note": note,
             "wav_reference": {"full_scale_db_spl": wav["full_scale_db"], "full_scale_peak_pa": wav["full_scale_pa"],
                               "peak_pa": wav["peak_pa"], "rate": rate},

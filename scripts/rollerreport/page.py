@@ -39,6 +39,7 @@ def write(folder, out, name="report.html"):
                     f"<td>{_fmt(m.get('growth_rate_per_s'))}</td><td>{_fmt(m.get('limit_cycle_amplitude'))}</td>"
                     f"<td>{_fmt(m.get('spl_db'), '.1f')}</td><td>{'<br>'.join(_e(x) for x in m.get('evidence', []))}</td></tr>")
     body.append("<h2>Mechanisms</h2><table>" + "".join(rows) + "</table>")
+    body += [f"<p>{_e(m['kind'])}'s level: {_e(m['spl_note'])}.</p>" for m in out.get("mechanisms", []) if m.get("spl_note")]
     snd = out.get("sound") or {}
     if has("squeal.wav"):
         lis = out.get("listener", {})

@@ -241,7 +241,8 @@ def sound_part(folder, scene, v, out, jr):
     """squeal.wav, spectrogram.png and the levels (rollerreport.heard), journalled: reused when its inputs are the
     same. Returns the sound's dict (without the series)."""
     j = lambda name: os.path.join(folder, name)  # noqa: E731
-    files = [j(f) for f in ("transient.csv", "surface.csv", "transient.h5", "scene.json")] + _source_files(
+    files = [j(f) for f in ("transient.csv", "surface.csv", "transient_base.csv", "surface_base.csv", "transient.h5",
+                            "scene.json")] + _source_files(
         "heard.py", "radiation.py", "sound.py", "lines.py")
     digest = journal.inputs_hash({"part": "sound", "frequency": v["frequency"], "pitch": v["pitch_hz"]}, files)
     result = {}
@@ -252,7 +253,7 @@ def sound_part(folder, scene, v, out, jr):
         result.update(r)
         return True, {"result": r}
 
-    entry = jr.run("sound", digest, ["squeal.wav", "spectrogram.png"], run, what="the sound at the listener (docs/squeal.md 9.3)")
+    entry = jr.run("sound", digest, ["squeal.wav", "sound.csv", "spectrogram.png"], run, what="the sound at the listener (docs/squeal.md 9.3)")
     return entry.get("result", result)
 
 
@@ -277,6 +278,15 @@ def animation_part(folder, scene, v, snd, jr):
     entry = jr.run("animation", digest, ["vibration.gif", "vibration.mp4"], run,
                    what="the roller vibrating, its stick and slip zones (docs/squeal.md 9.1)")
     return entry.get("result")
+
+
+def recorded(jr, name, keys=()):
+    """The result an earlier run recorded for part `name` (journal.json), if it finished, its outputs are there and it
+    has the keys this report reads (an older report's result may not)."""
+    p = jr.parts.get(name) or {}
+    r = p.get("result") or {}
+    ok = p.get("status") == "ok" and all(os.path.exists(os.path.join(jr.folder, o)) for o in p.get("outputs", []))
+    return r if ok and all(k in r for k in keys) else None
 
 
 def write(folder, parts=PARTS):
@@ -320,15 +330,21 @@ def write(folder, parts=PARTS):
         body += fit_lines(j, v, out)
         if "sound" in parts:
             snd = out["sound"] = sound_part(folder, scene, v, out, jr)
-            out["files"] += ["squeal.wav", "spectrogram.png"]
+        else:  # not asked for: what the journal holds of an earlier run, if its files are there
+            snd = out["sound"] = recorded(jr, "sound", ("spl_mode_db", "mode_line_resolved", "wav_reference", "wav_source"))
+        if snd:
+            out["files"] += ["squeal.wav", "sound.csv", "spectrogram.png"]
     else:
         out["missing"].append("transient.csv")
         failed = [c for c in commands if c.get("step") == "transient" and c.get("returncode")]
         if failed:
             body += ["## Flutter: the seeded transient", "", f"The seeded transient **stopped with an error**: "
                      f"{failed[0]['error']} (its log: {failed[0]['log']}).", ""]
-    if os.path.exists(j("transient.h5")) and v is not None and "animation" in parts:
-        anim = out["animation"] = animation_part(folder, scene, v, snd, jr)
+    anim = None
+    if os.path.exists(j("transient.h5")) and v is not None:
+        anim = animation_part(folder, scene, v, snd, jr) if "animation" in parts else recorded(jr, "animation", ("files", "reference"))
+    if anim:
+        out["animation"] = anim
         out["files"] += anim["files"]
         body += ["## The vibration", "", f"![the roller vibrating]({anim['files'][0]})", "",
                  f"{anim['reference']}, magnified {anim['magnification']:.3g} times; {anim['frames']} frames, coloured "
@@ -364,7 +380,8 @@ def write(folder, parts=PARTS):
                f"{lis['width_m'] * 1e3:g} mm wide roller ({lis['angle_deg']:g} degrees; {lis['model']}), radiated by "
                f"{src['column']} of {src['file']}: **{snd['spl_db']:.1f} dB SPL** (loudest 125 ms; Leq {snd['spl_leq_db']:.1f}), "
                f"{snd['spl_dba']:.1f} dB(A); loudest line {snd['loudest_hz']:.1f} Hz; the mode's line (predicted {v['pitch_hz']:.1f} Hz, "
-               f"within 20 %) {snd['spl_mode_db']:.1f} dB SPL, {snd['spl_mode_dba']:.1f} dB(A). "
+               f"within 20 %) {snd['spl_mode_db']:.1f} dB SPL, {snd['spl_mode_dba']:.1f} dB(A)" + ("" if snd.get("mode_line_resolved", True)
+               else f" (an upper bound: no line at the pitch, the band's loudest at {snd['mode_line_hz']:.1f} Hz)") + ". "
                f"{snd['wav_seconds'] * 1e3:.1f} ms: the simulated span {src['t0']:.4g} to {src['t1']:.4g} times "
                f"{src['seconds_per_unit']:.4g} s per unit; full scale is a sine of {snd['wav_reference']['full_scale_db_spl']:g} dB SPL.", ""]
         md += [f"> {x}" for x in (snd["notice"], snd["level_note"]) if x] + ["", "![spectrogram](spectrogram.png)", ""]

@@ -245,12 +245,10 @@ def base_command(cmd):
     out, k = [], 0
     while k < len(cmd):
         name = cmd[k]
-        if name == "-monitor_surface_csv":  # the sound is the seeded run's
-            k += 2
-            continue
-        if name in ("-ic_amplitude", "-monitor_csv", "-checkpoint", "-output") and k + 1 < len(cmd):
+        if name in ("-ic_amplitude", "-monitor_csv", "-monitor_surface_csv", "-checkpoint", "-output") and k + 1 < len(cmd):
             d = os.path.dirname(cmd[k + 1])
             value = {"-ic_amplitude": "0", "-monitor_csv": os.path.join(d, "transient_base.csv"),
+                     "-monitor_surface_csv": os.path.join(d, "surface_base.csv"),
                      "-checkpoint": os.path.join(d, "checkpoint_base.h5"), "-output": os.path.join(d, "transient_base.h5")}[name]
             out += [name, value]
             k += 2
@@ -261,9 +259,9 @@ def base_command(cmd):
 
 
 # what a run writes into OUTDIR: --fresh removes them first; else each part removes its own before it runs again
-OUTPUTS = ("modes.csv", "modes.h5", "modes.xmf", "steady.csv", "sweep.csv", "transient.csv", "surface.csv", "transient_base.csv",
+OUTPUTS = ("modes.csv", "modes.h5", "modes.xmf", "steady.csv", "sweep.csv", "transient.csv", "surface.csv", "transient_base.csv", "surface_base.csv",
            "transient.h5", "transient.xmf", "transient_base.h5", "transient_base.xmf", "scene.json", "commands.json",
-           "journal.json", "report.md", "report.json", "report.html", "map.png", "squeal.wav", "spectrogram.png",
+           "journal.json", "report.md", "report.json", "report.html", "map.png", "squeal.wav", "sound.csv", "spectrogram.png",
            "vibration.gif", "vibration.mp4")
 ROLLER_PARTS = ("cea", "map", "transient", "transient_base")
 
@@ -338,7 +336,7 @@ def main(argv=None):
         seeded, what = transient_command(base, opts, a, extra, out, scene)
         if steps.run("transient", seeded, what, outputs=["transient.csv", "surface.csv", "transient.h5", "transient.xmf"],
                      inputs=[j("modes.h5")]):
-            steps.run("transient_base", *base_command(seeded), outputs=["transient_base.csv", "transient_base.h5",
+            steps.run("transient_base", *base_command(seeded), outputs=["transient_base.csv", "surface_base.csv", "transient_base.h5",
                                                                         "transient_base.xmf"], inputs=[j("modes.h5")])
     with open(j("scene.json"), "w") as fh:
         json.dump(scene, fh, indent=1)

@@ -71,14 +71,14 @@ def read_wav(path):
     return data, rate
 
 
-def loudest_line(samples, rate, fmin=20.0, pad=1):
-    """The frequency (Hz) of the largest line of the Hann-windowed spectrum above fmin (zero padded to `pad` times
-    the length), refined by parabolic interpolation of the log amplitude between bins."""
+def loudest_line(samples, rate, fmin=20.0, pad=1, fmax=None):
+    """The frequency (Hz) of the largest line of the Hann-windowed spectrum within fmin <= f <= fmax (zero padded to
+    `pad` times the length), refined by parabolic interpolation of the log amplitude between bins."""
     x = np.asarray(samples, float) - np.mean(samples)
     m = int(pad * len(x))
     spec = np.abs(np.fft.rfft(x * np.hanning(len(x)), m))
     f = np.fft.rfftfreq(m, 1.0 / rate)
-    spec[f < fmin] = 0.0
+    spec[(f < fmin) | (f > (fmax if fmax is not None else np.inf))] = 0.0
     k = int(np.argmax(spec))
     if 0 < k < len(spec) - 1 and spec[k - 1] > 0 and spec[k + 1] > 0:
         a, b, c = np.log(spec[k - 1 : k + 2])
