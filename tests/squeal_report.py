@@ -14,7 +14,8 @@ full sliding, creep 1; the scene's friction and 0.4) on 2 ranks. Reads what the 
 - squeal.wav is readable by Python's `wave` (mono, 16 bit, 44.1 kHz), as long as the simulated span times the time
   scale (no loop); the seed's response radiated (sound.csv's p_response: the seeded run's surface orders minus the
   unseeded run's) has its loudest line within 20 % of the predicted pitch (computed here: Hann window, zero padded,
-  parabolic peak) at the pitch within 2 %;
+  parabolic peak) at the pitch within the span's resolution 1/T when the mode moves the surface radially (the
+  feeder's order-3 wave), and none, below 0 dB SPL, when it is the torsional mode (the printer roller's);
 - report.json has SPEC section 10's keys (verdict, mechanisms flutter / stick-slip / forced, spl_db, listener,
   wav_seconds, wav_source, propensity); report.html links only files of the folder;
 - spectrogram.png is a PNG, the animation (vibration.gif) a GIF of several frames;
@@ -35,9 +36,11 @@ from rollertest import EXE, SOURCE, Checker
 
 c = Checker("squeal_report")
 COARSE = ["-mesh_h", "0.05", "-mesh_h_contact", "0.0112", "-mesh_contact_layer", "0.0224"]
-SCENES = [  # name, scene, creeps, frictions, extra roller options, growth tolerance
-    ("printer_roller", "jobs/printer_roller.yaml", "1", "0.4", [], 0.25),
-    ("feed", "jobs/feed.yaml", "1", "0.4", COARSE, 0.2),
+SCENES = [  # name, scene, creeps, frictions, extra roller options, growth tolerance, whether the mode is heard
+    # the printer roller's least stable mode is the torsional one (order 0 standing: the surface moves tangentially,
+    # which radiates nothing in the model of docs/squeal.md 9.3); the feeder's an order-3 wave, radial
+    ("printer_roller", "jobs/printer_roller.yaml", "1", "0.4", [], 0.25, False),
+    ("feed", "jobs/feed.yaml", "1", "0.4", COARSE, 0.2, True),
 ]
 
 
@@ -71,7 +74,7 @@ def loudest(samples, rate, band=(20.0, math.inf)):
     return f[k] + 0.5 * (a - d) / (a - 2 * b + d) * (f[1] - f[0])
 
 
-for name, scene, creeps, mus, extra, gtol in SCENES:
+for name, scene, creeps, mus, extra, gtol, audible in SCENES:
     out = os.path.abspath(name)
     cmd = [sys.executable, "-m", "rollerreport.run", os.path.join(SOURCE, scene), out, "--roller", EXE, "--ranks", "2",
            "--creeps", creeps, "--frictions", mus, "--"] + extra
@@ -137,12 +140,18 @@ for name, scene, creeps, mus, extra, gtol in SCENES:
     span = (src.get("t1", 0) - src.get("t0", 0)) * src.get("seconds_per_unit", 0)
     snd = np.genfromtxt(os.path.join(out, "sound.csv"), delimiter=",", names=True)  # the pressure the WAV quantizes
     heard = loudest(snd["p_response"], 1.0 / (snd["t"][1] - snd["t"][0]), (0.8 * pitch, 1.2 * pitch))
+    res = 1.0 / (snd["t"][-1] - snd["t"][0])  # the span's resolution: a line of 8 periods is 1/8 of its pitch wide
+    info = rep.get("sound", {})
+    line = (abs(heard - pitch) < res and info.get("mode_line_resolved") is True) if audible else (
+        info.get("mode_line_resolved") is False and info.get("spl_mode_db", 99) < 0)
     c.check(ok and abs(len(samples) / rate - span) <= 1.5 / rate and abs(rep.get("wav_seconds", 0) - len(samples) / rate) < 1e-9
-            and abs(heard / pitch - 1) < 0.02,
+            and line,
             f"{name}: squeal.wav (mono 16 bit 44.1 kHz) {len(samples) / rate * 1e3:.2f} ms = the simulated span {span * 1e3:.2f} ms "
-            f"({src.get('file')}: {src.get('column')}); the seed's response's pressure (sound.csv) has its loudest line within 20 % of the pitch at {heard:.1f} Hz, predicted "
-            f"{pitch:.1f} Hz: {100 * (heard / pitch - 1):+.2f} % (2 %); the whole sound {rep.get('spl_db', math.nan):.1f} dB SPL, "
-            f"the mode's line {rep.get('sound', {}).get('spl_mode_db', math.nan):.1f} dB SPL at 1 m")
+            f"({src.get('file')}: {src.get('column')}); the seed's response radiated (sound.csv) has its loudest line within 20 % "
+            f"of the pitch at {heard:.1f} Hz, predicted {pitch:.1f} Hz: {heard - pitch:+.1f} Hz (resolution {res:.1f} Hz); "
+            + (f"the mode is heard: {info.get('spl_mode_db', math.nan):.1f} dB SPL" if audible else
+               f"a torsional mode is silent: no line at its pitch, {info.get('spl_mode_db', math.nan):.1f} dB SPL at most (< 0)")
+            + f"; the whole sound {rep.get('spl_db', math.nan):.1f} dB SPL at 1 m")
     mech = rep.get("mechanisms", [])
     lis, prop = rep.get("listener", {}), rep.get("propensity", {})
     c.check(rep.get("verdict") in ("squeals", "does not squeal") and [m["kind"] for m in mech] == ["flutter", "stick-slip", "forced"]

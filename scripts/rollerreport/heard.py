@@ -125,7 +125,10 @@ def write(folder, scene, v, f_m=None, seeded=True):
     mode_db = radiation.level_db(pm, ts)[1]
     rate_p = 1.0 / (ts[1] - ts[0])
     at = sound.loudest_line(pr, rate_p, fmin=0.8 * v["pitch_hz"], pad=64, fmax=1.2 * v["pitch_hz"])
-    resolved = abs(at / v["pitch_hz"] - 1) < 0.02  # the band's loudest line is the mode's, not its edge
+    # the band's loudest line is the mode's: within the span's resolution 1/T of the pitch, and not the band's edge
+    # (a short span's lines are 1/T wide, and the radiation's rise with frequency tilts them up)
+    res = 1.0 / (ts[-1] - ts[0])
+    resolved = abs(at - v["pitch_hz"]) < res and 0.8 * v["pitch_hz"] + 0.5 * res < at < 1.2 * v["pitch_hz"] - 0.5 * res
     mode_dba = mode_db + float(radiation.a_weighting_db(v["pitch_hz"]))
     samples, rate = sound.read_wav(j("squeal.wav"))
     loud = sound.loudest_line(samples, rate, pad=8) if np.any(samples) else math.nan

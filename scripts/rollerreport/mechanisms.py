@@ -48,9 +48,10 @@ def flutter(ctx):
     return {"kind": "flutter", "status": "run", "squeals": bool(v["squeals"]), "frequency_hz": v["pitch_hz"],
             "growth_rate_per_s": v["growth_rate"] / s, "limit_cycle_amplitude": None,
             "spl_db": snd.get("spl_mode_db"), "spl_note": ("the level of the mode's line (within 20 % of its pitch) in the "
-            "seeded transient's sound" if snd.get("mode_line_resolved", True) else "an upper bound: the sound within 20 % of "
-            f"the pitch has no line at it (its loudest at {snd.get('mode_line_hz', 0):.1f} Hz): the mode hardly moves the "
-            "surface normally (a torsional mode moves it tangentially)") + "; " + (snd.get("level_note") or ""), "evidence": ev}
+            "seeded transient's sound, its line at {:.1f} Hz".format(snd.get("mode_line_hz", 0)) if snd.get("mode_line_resolved", True)
+            else "an upper bound: the sound within 20 % of the pitch has no line at it (its loudest at "
+            f"{snd.get('mode_line_hz', 0):.1f} Hz): the mode hardly moves the surface normally (a torsional mode moves it "
+            "tangentially)") + "; " + (snd.get("level_note") or ""), "evidence": ev}
 
 
 def limit_cycle(t, y, tail=1.0 / 3):
