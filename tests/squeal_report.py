@@ -70,6 +70,8 @@ def loudest(samples, rate, band=(20.0, math.inf)):
     f = np.fft.rfftfreq(m, 1.0 / rate)
     spec[(f < band[0]) | (f > band[1])] = 0
     k = int(np.argmax(spec))
+    if not (0 < k < len(spec) - 1 and spec[k - 1] > 0 and spec[k + 1] > 0):  # at the band's edge: no parabola
+        return f[k]
     a, b, d = np.log(spec[k - 1 : k + 2])
     return f[k] + 0.5 * (a - d) / (a - 2 * b + d) * (f[1] - f[0])
 
