@@ -31,6 +31,7 @@ cases = [
     (["-theta_b", "-1"], "-theta_b", "-1"),
     (["-checkpoint_every", "-1"], "-checkpoint_every", "-1"),
     (["-output", "bad.h5", "-output_every", "0"], "-output_every", "0"),
+    (["-monitor_surface_csv", "bad_s.csv", "-monitor_surface_orders", "0"], "-monitor_surface_orders", "0"),
     (["-omega", "0.9"], "-omega", "0.9"),
     (["-stability_margin", "2"], "-stability_margin", "2"),
     (["-restart", "no-such-checkpoint.h5"], "no-such-checkpoint.h5", "-restart"),

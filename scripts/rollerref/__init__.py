@@ -12,6 +12,13 @@ docs/validation.md section 10, "One-degree-of-freedom references"). Python only 
 - sheet: the sheet picked from rest (kinematic or coupled roller): closed forms, settle points, integration;
 - forced: the hub's forced response to the motor's ripple, 1-DOF and hub + tyre 2-DOF.
 
+The references of the elastic roller itself (commands: `python3 -m rollerref.NAME --help`):
+- axisym: the exact axisymmetric solution (1-D radial problem, exact in time or by the DMF variants;
+  docs/validation.md 2);
+- annulus_modes: the free rotating annulus's modes per circumferential order (docs/squeal.md 2);
+- mode_transient: a mode's frequency and growth measured in a seeded transient (docs/squeal.md 4.1).
+
 Run `PYTHONPATH=scripts python3 -m rollerref --help` for the command line (JSON/CSV reference numbers).
 """
-__all__ = ["friction", "drive", "engine", "stickslip", "basin", "timestep", "sheet", "forced"]
+__all__ = ["friction", "drive", "engine", "stickslip", "basin", "timestep", "sheet", "forced", "axisym", "annulus_modes",
+           "mode_transient"]

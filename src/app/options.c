@@ -3,7 +3,7 @@
    in one place (RollerSetFromOptions, "cross-component checks"). */
 #include "integrate/integrate.h"
 #include "modes/modes.h"
-#include "app/sweep.h"
+#include "sweep/sweep.h"
 
 const char *const RollerInitialConditions[] = {"rest", "bump", "mms", "mode", "RollerInitialCondition", "ROLLER_IC_", NULL};
 const char *const RollerMMSTypes[]          = {"none", "linear", "sine", "RollerMMSType", "ROLLER_MMS_", NULL};

@@ -9,6 +9,7 @@
                     signals, -checkpoint_every
      monitor.c      the observers of the run (RollerMonitorSet, include/roller.h)
      observers.c    the observers that write files: the CSV and the HDF5 fields (the writers are io's)
+     observers_surface.c  -monitor_surface_csv: the lab-frame orders of the radial displacement of Gamma_C
      driver.c       the time loop: step, diagnostics, observers, failures, signals */
 #ifndef ROLLER_INTEGRATE_H
 #define ROLLER_INTEGRATE_H
@@ -70,6 +71,7 @@ PETSC_INTERN PetscErrorCode RollerMonitorRun(Roller, RollerMonitorEvent);
 
 /* observers.c */
 PETSC_INTERN PetscErrorCode RollerOutputMonitorSetUp(Roller);
+PETSC_INTERN PetscErrorCode RollerSurfaceMonitorSetUp(Roller); /* observers_surface.c: -monitor_surface_csv */
 
 /* initial_mode.c: -initial_condition mode (docs/squeal.md section 4) */
 PETSC_INTERN PetscErrorCode RollerInitialModeState(Roller);

@@ -148,6 +148,24 @@ static inline void f0_bd_angular(ROLLER_KERNEL_ARGS, const PetscReal x[], const 
   f0[1] = x[0] / r;
 }
 
+/* The order n = constants[0] of the radial displacement on Gamma_C: x/|x| cos(n phi), x/|x| sin(n phi), phi the angle
+   of x (RollerComputeOrderFunctionals). */
+static inline void f0_bd_radial_cos(ROLLER_KERNEL_ARGS, const PetscReal x[], const PetscReal n[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f0[])
+{
+  const PetscReal r = PetscSqrtReal(x[0] * x[0] + x[1] * x[1]), c = PetscCosReal(PetscRealPart(constants[0]) * PetscAtan2Real(x[1], x[0]));
+
+  f0[0] = c * x[0] / r;
+  f0[1] = c * x[1] / r;
+}
+
+static inline void f0_bd_radial_sin(ROLLER_KERNEL_ARGS, const PetscReal x[], const PetscReal n[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f0[])
+{
+  const PetscReal r = PetscSqrtReal(x[0] * x[0] + x[1] * x[1]), s = PetscSinReal(PetscRealPart(constants[0]) * PetscAtan2Real(x[1], x[0]));
+
+  f0[0] = s * x[0] / r;
+  f0[1] = s * x[1] / r;
+}
+
 static inline void f_bd_one(ROLLER_KERNEL_ARGS, const PetscReal x[], const PetscReal n[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f[])
 {
   f[0] = 1.0;

@@ -1,8 +1,7 @@
-#!/usr/bin/python3
 """Time series of Roller runs: one quantity of the -monitor_csv CSV against t, several runs overlaid,
-optionally with a reference curve (scripts/axisym_reference.py writes columns t,R,alpha).
+optionally with a reference curve (rollerref.axisym writes columns t,R,alpha).
 
-    plot_series.py --quantity R --out docs/figures/fig3_R.png \\
+    PYTHONPATH=scripts python3 -m rollerplots.series --quantity R --out docs/figures/fig3_R.png \\
         --label 'h=0.0125' run1.csv --label 'h=0.025' run2.csv [--reference ref.csv]
 
 Each --label names the CSV that follows it; a CSV without one is labelled by its file name. The quantity is
@@ -36,7 +35,7 @@ def read_columns(path):
     with open(path, newline="") as f:
         rows = list(csv.reader(f))
     if not rows:
-        sys.exit(f"plot_series: {path} is empty")
+        sys.exit(f"rollerplots.series: {path} is empty")
     head, body = rows[0], [r for r in rows[1:] if r]
 
     def num(v):
@@ -74,7 +73,7 @@ def main(argv):
     p.add_argument("--quantity", required=True, help="CSV column to plot against t (R, alpha, energy, ...)")
     p.add_argument("--out", required=True, help="PNG file to write")
     p.add_argument("--label", action="append", default=[], help="label of the CSV that follows")
-    p.add_argument("--reference", help="reference CSV with columns t,R,alpha (scripts/axisym_reference.py)")
+    p.add_argument("--reference", help="reference CSV with columns t,R,alpha (rollerref.axisym)")
     p.add_argument("--reference-label", default="reference", help="legend entry of the reference")
     p.add_argument("--title", help="figure title")
     p.add_argument("--xlim", nargs=2, type=float, metavar=("TMIN", "TMAX"), help="time window")
@@ -87,14 +86,14 @@ def main(argv):
     for label, path in runs:
         data = read_columns(path)
         if q not in data or "t" not in data:
-            sys.exit(f"plot_series: {path} has no column '{q}' (columns: {', '.join(data)})")
+            sys.exit(f"rollerplots.series: {path} has no column '{q}' (columns: {', '.join(data)})")
         ax.plot(data["t"], data[q], lw=1.2, label=label)
     if args.reference:
         ref = read_columns(args.reference)
         if q in ref and "t" in ref:
             ax.plot(ref["t"], ref[q], "k--", lw=1.0, label=args.reference_label)
         else:
-            print(f"plot_series: the reference {args.reference} has no column '{q}'; not drawn", file=sys.stderr)
+            print(f"rollerplots.series: the reference {args.reference} has no column '{q}'; not drawn", file=sys.stderr)
     ax.set_xlabel("$t$")
     ax.set_ylabel(YLABELS.get(q, q))
     if args.xlim:
@@ -107,7 +106,7 @@ def main(argv):
     fig.tight_layout()
     os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
     fig.savefig(args.out, dpi=150)
-    print(f"plot_series: {q} of {len(runs)} run(s) -> {args.out}")
+    print(f"rollerplots.series: {q} of {len(runs)} run(s) -> {args.out}")
 
 
 if __name__ == "__main__":

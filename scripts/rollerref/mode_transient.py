@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """Frequency and growth rate of a mode from a transient run (docs/squeal.md section 4).
 
 A run seeded with one mode (`roller -initial_condition mode -initial_mode_file m.h5 -initial_mode j
@@ -6,7 +5,7 @@ A run seeded with one mode (`roller -initial_condition mode -initial_mode_file m
 module reads the run's HDF5 output (docs/output.md) and measures it three ways:
 
 (a) the rotating probe: the radial displacement xi . e_r at one vertex of Gamma_C (r = r_outer) in the
-    co-rotating frame; its frequency is the strongest line of the Hann-windowed DTFT (scripts/spectrum.py).
+    co-rotating frame; its frequency is the strongest line of the Hann-windowed DTFT (rollerreport.spectrum).
 (b) the order-n projection: the Fourier coefficients along Gamma_C of the radial and tangential displacement,
     c_m(t) = 1/(2 pi) int xi_r(phi, t) e^{-i m phi} dphi (and the same for xi_phi), trapezoidal in the vertex
     angles. For a real field Re(Z e^{i m phi} e^{lambda t}), c_m(t) = Z/2 e^{lambda t} exactly and c_-m
@@ -30,7 +29,7 @@ Coriolis velocity) for an undamped gyroscopic mode, from the mode's gyroscopic r
     growth/W  = -(W dt)^3 g / (4 (2 + g))                                  (the explicit Coriolis velocity)
     x^H C x = i gamma (C = -2 omega rho G skew), g = gamma/(W x^H M x), |g| <= 2 omega/W
 
-CLI: mode_transient.py run.h5 [--modes m.h5 --mode j] [--order n] [--lab-csv ml.csv] [--json]
+CLI: PYTHONPATH=scripts python3 -m rollerref.mode_transient run.h5 [--modes m.h5 --mode j] [--order n] [--lab-csv ml.csv] [--json]
      [--figure F.png --amplitude A]  (the probe against the eigenvalue's prediction, and its spectrum)
 """
 import argparse
@@ -42,8 +41,7 @@ import sys
 import h5py
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import spectrum  # noqa: E402
+from rollerreport import spectrum
 
 
 # ---------------------------------------------------------------------------------------------- reading
@@ -167,7 +165,7 @@ def probe_lab(run, Phi0=0.0, which="radial", steady=None):
 
 
 def dtft_frequency(t, y, w_guess=None, tmin=None):
-    """(w, amplitude): the strongest line of the Hann-windowed DTFT (scripts/spectrum.py), in rad per time unit;
+    """(w, amplitude): the strongest line of the Hann-windowed DTFT (rollerreport.spectrum), in rad per time unit;
     near w_guess (within 15 %) if given. Window: t >= tmin (default the whole run)."""
     t, y = spectrum.window(t, y, t[0] if tmin is None else tmin, t[-1])
     t, y, _ = spectrum.uniform_series(t, y)

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Pictures of the fields Roller writes with -output F.h5 (docs/output.md).
 
 stress mode (default): |sigma| (stress_norm) on the deformed roller in the lab frame, x + displacement_lab,
@@ -6,13 +5,13 @@ one panel per chosen time (the nearest stored step), a common colour scale, the 
 magnified (--scale; the rigid rotation is not), and the obstacle line
 y = g(t) = min(v t, depth) - r_outer (docs/model.md section 1):
 
-    plot_fields.py F.h5 --times 5 10 20 --out sigma.png
+    PYTHONPATH=scripts python3 -m rollerplots.fields F.h5 --times 5 10 20 --out sigma.png
 
 contact mode: the vertex field contact_pressure along Gamma_C against the lab-frame angle of the material
 point (0 at the bottom, positive counter-clockwise), one curve per chosen time; if the file has no such
 field, says so and writes nothing:
 
-    plot_fields.py F.h5 --mode contact --times 5 10 20 --out pressure.png
+    PYTHONPATH=scripts python3 -m rollerplots.fields F.h5 --mode contact --times 5 10 20 --out pressure.png
 
 The obstacle (on/off, v, depth) and r_outer default to the run's own values stored in /parameters, else
 to Roller's defaults 0.005, 0.025, 0.5; the options override both.
@@ -53,9 +52,9 @@ def pick_steps(times, wanted):
     for t in wanted:
         k = int(np.argmin(np.abs(times - t)))
         if abs(times[k] - t) > 1e-9 * max(1.0, abs(t)):
-            print(f"plot_fields: t = {t:g} is not stored; nearest step t = {times[k]:g}", file=sys.stderr)
+            print(f"rollerplots.fields: t = {t:g} is not stored; nearest step t = {times[k]:g}", file=sys.stderr)
         if k in steps:
-            print(f"plot_fields: t = {t:g} gives the same stored step as an earlier time; skipped", file=sys.stderr)
+            print(f"rollerplots.fields: t = {t:g} gives the same stored step as an earlier time; skipped", file=sys.stderr)
             continue
         steps.append(k)
     return steps
@@ -100,7 +99,7 @@ def plot_stress(f, args, times, steps):
     val = vertex_field(f, args.field)
     for name, d in (("displacement_lab", lab), ("displacement", xi), (args.field, val)):
         if d is None:
-            sys.exit(f"plot_fields: {args.h5} has no vertex field {name}")
+            sys.exit(f"rollerplots.fields: {args.h5} has no vertex field {name}")
     draw, v, depth, r_outer = obstacle_settings(f, args)
     values = []
     for k in steps:
@@ -143,7 +142,7 @@ def plot_stress(f, args, times, steps):
 def plot_contact(f, args, times, steps):
     p = vertex_field(f, "contact_pressure")
     if p is None:
-        print(f"plot_fields: {args.h5} has no vertex field contact_pressure; nothing to plot")
+        print(f"rollerplots.fields: {args.h5} has no vertex field contact_pressure; nothing to plot")
         return None
     x = f["geometry/vertices"][:]
     lab = vertex_field(f, "displacement_lab")
@@ -189,11 +188,11 @@ def main(argv):
 
     with h5py.File(args.h5, "r") as f:
         if "time" not in f:
-            sys.exit(f"plot_fields: {args.h5} has no fields (no /time)")
+            sys.exit(f"rollerplots.fields: {args.h5} has no fields (no /time)")
         times = f["time"][:].ravel()
         nsteps = min(d.shape[0] for d in f["vertex_fields"].values()) if "vertex_fields" in f else 0
         if nsteps == 0:
-            sys.exit(f"plot_fields: {args.h5} has no stored step")
+            sys.exit(f"rollerplots.fields: {args.h5} has no stored step")
         times = times[:nsteps]  # a killed run may have written a time without its fields
         steps = pick_steps(times, args.times)
         fig = plot_contact(f, args, times, steps) if args.mode == "contact" else plot_stress(f, args, times, steps)
@@ -201,7 +200,7 @@ def main(argv):
         return
     os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
     fig.savefig(args.out, dpi=150)
-    print(f"plot_fields: {args.mode} at t = {', '.join(f'{times[k]:g}' for k in steps)} -> {args.out}")
+    print(f"rollerplots.fields: {args.mode} at t = {', '.join(f'{times[k]:g}' for k in steps)} -> {args.out}")
 
 
 if __name__ == "__main__":

@@ -6,7 +6,7 @@
    lines go into the final CSV as if computed now. Those lines are first consolidated into F.journal.resumed
    (written under another name and renamed) and only then are the journals read removed, so a map killed again
    loses nothing. A map that completes removes its journals. */
-#include "app/sweep.h"
+#include "sweep/sweep.h"
 #include "io/io.h"
 #include <dirent.h>
 #include <errno.h>

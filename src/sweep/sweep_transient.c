@@ -5,7 +5,7 @@
      window_start,window_end,contact_force,friction_force,stick_fraction,amplitude,growth_rate,frequency
    the means of the three columns over the window's states (the stick fraction stick/(stick + slip) of the states
    with contact nodes), and the oscillation of the fitted column y(t) (RollerSweepFitGrowth). */
-#include "app/sweep.h"
+#include "sweep/sweep.h"
 #include "integrate/integrate.h"
 
 static PetscErrorCode SeriesMonitor(Roller ctx, RollerMonitorEvent event, void *mctx)

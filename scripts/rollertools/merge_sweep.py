@@ -1,10 +1,9 @@
-#!/usr/bin/env python3
 """Merge the parts of a sweep run as a job array (jobs/slurm/sweep.sbatch: task i wrote `-sweep part_i.csv
 -sweep_slice i,k`) into one CSV sorted by case, as one `roller -sweep` would have written it: the rows of each case
 in their order, one header. Refuses parts with different columns or a case in two parts, and with --cases N a map
 with a case missing; writes F.part and renames it when complete.
 
-Usage: scripts/merge_sweep.py part_0.csv part_1.csv ... -o sweep.csv [--cases N]"""
+Usage: PYTHONPATH=scripts python3 -m rollertools.merge_sweep part_0.csv part_1.csv ... -o sweep.csv [--cases N]"""
 import argparse
 import os
 import sys

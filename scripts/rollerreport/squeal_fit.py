@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Growth rate and frequency of the squeal whirl in a transient run (docs/squeal.md section 4.2).
 
 The transient (roller -obstacle -friction mu -output F.h5) stores the displacement xi of the co-rotating mesh
@@ -27,7 +26,7 @@ force, where the whirl shows order 1 only.
 --stick-zone T0: where the run's Gamma_C vertices stick, in lab x bins, from T0 on (the time step's own stick zone, to
 set against the steady state's, -modes_steady_csv).
 
-  squeal_fit.py RUN.h5 --cea F.csv --order 1 --wave backward --window 10 100 [--base UNSEEDED.h5] [--stick-zone T0] [--plot out.png]
+  PYTHONPATH=scripts python3 -m rollerreport.squeal_fit RUN.h5 --cea F.csv --order 1 --wave backward --window 10 100 [--base UNSEEDED.h5] [--stick-zone T0] [--plot out.png]
 """
 import argparse
 import csv
@@ -69,7 +68,7 @@ def monitor_signal(path, column):
     with open(path) as f:
         rows = list(csv.DictReader(f))
     if not rows or column not in rows[0]:
-        raise SystemExit(f"squeal_fit.py: {path} has no column {column!r} (a -monitor_csv is needed)")
+        raise SystemExit(f"rollerreport.squeal_fit: {path} has no column {column!r} (a -monitor_csv is needed)")
     return np.array([float(r["t"]) for r in rows]), np.array([float(r[column]) for r in rows], dtype=complex)
 
 
@@ -83,7 +82,7 @@ def seed_response(h5, base, column=None):
     t, U = signal(h5, column)
     tb, Ub = signal(base, column)
     if len(tb) != len(t) or np.max(np.abs(tb - t)) > 1e-9 * max(1.0, t[-1]):
-        raise SystemExit(f"squeal_fit.py: --base {base}: its times differ from {h5}'s (the same -ts_dt, -ts_max_time, -output_every are needed)")
+        raise SystemExit(f"rollerreport.squeal_fit: --base {base}: its times differ from {h5}'s (the same -ts_dt, -ts_max_time, -output_every are needed)")
     return t, U - Ub
 
 

@@ -6,7 +6,7 @@
      transient: case,<swept options>,window_start,window_end,contact_force,friction_force,stick_fraction,amplitude,
                 growth_rate,frequency,wall_time,status                               (a row per case)
    written as F.part and renamed when complete, like every output (io/output_files.c). */
-#include "app/sweep.h"
+#include "sweep/sweep.h"
 #include "io/io.h"
 #include "modes/modes.h"
 

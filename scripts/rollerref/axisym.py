@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Reference solution for the rotating annulus WITHOUT obstacle (docs/model.md sections 1, 2, 4, 5).
 
 For an axisymmetric displacement xi = u(r,t) e_r + v(r,t) e_phi the model (P) of docs/model.md section 1 is exactly

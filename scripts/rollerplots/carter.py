@@ -1,7 +1,7 @@
 """The figure of Carter's rolling contact (docs/friction.md section 5.2) from the JSON files tests/friction_carter.py
 writes (carter_<mode>.json in its working directory).
 
-    python3 scripts/plot_carter.py docs/figures/friction_carter.png carter_long.json [carter_dynamic.json ...]
+    PYTHONPATH=scripts python3 -m rollerplots.carter docs/figures/friction_carter.png carter_long.json [carter_dynamic.json ...]
 
 Left: |Q|/(mu P) against the creep |xi - xi_0| / (mu a / R) (xi_0 the free-rolling creep measured at each speed, a
 the Hertz half-width from the run's P): Carter's curve 1 - (1 - x)^2 and the runs (filled: the roller drives the sheet, open: the sheet drives the roller). Right: the tangential traction

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Reference modes of the free rotating annulus, one circumferential Fourier order at a time (docs/squeal.md section 2).
 
 Plane strain, linear isotropic elasticity (Lame lam = E nu/((1+nu)(1-2nu)), mu = E/(2(1+nu))), density rho,

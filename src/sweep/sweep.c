@@ -2,7 +2,7 @@
    to a few scene options (-sweep_omega 0,0.1,0.2 -sweep_young_range 0.05,0.2,4 ...), numbered with the last swept
    option varying fastest; with -modes each case is an eigenvalue problem, without it a transient reduced to one row
    over the last -sweep_window of its run (sweep_transient.c). The runs are sweep_run.c's. */
-#include "app/sweep.h"
+#include "sweep/sweep.h"
 #include <ctype.h>
 
 /* The scene options a sweep may vary: one row each (and nothing else to add for a new one: the case sets the option
@@ -109,7 +109,7 @@ static PetscErrorCode CheckUnknown(MPI_Comm comm)
       if (!known) PetscCall(PetscStrlcat(opt, "_range", sizeof(opt)));
       if (!known) PetscCall(PetscStrcmp(tok, opt, &known));
     }
-    PetscCheck(known, comm, PETSC_ERR_ARG_WRONG, "%s: not a sweep option; allowed: -sweep_<name> v1,v2,... or -sweep_<name>_range a,b,n for <name> one of %s (the table SweepParams in src/app/sweep.c), -sweep_subcomms k, -sweep_slice i,k, -sweep_window w, -sweep_fit column", tok, names);
+    PetscCheck(known, comm, PETSC_ERR_ARG_WRONG, "%s: not a sweep option; allowed: -sweep_<name> v1,v2,... or -sweep_<name>_range a,b,n for <name> one of %s (the table SweepParams in src/sweep/sweep.c), -sweep_subcomms k, -sweep_slice i,k, -sweep_window w, -sweep_fit column", tok, names);
   }
   PetscCall(PetscFree(all));
   PetscFunctionReturn(0);

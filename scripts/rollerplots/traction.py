@@ -1,12 +1,11 @@
-#!/usr/bin/python3
 """The contact pressure and the tangential traction across the contact patch, from a Roller -output HDF5
 written with -friction (docs/friction.md section 4): the vertex fields contact_pressure, contact_traction and
 contact_state at the Gamma_C vertices, against the lab coordinate along the sheet (x + displacement_lab along
 e1), at one stored step. The stick zone (state 1) is shaded: the interval from midway to the first non-stick
 vertex on either side of the stick vertices around the patch centre.
 
-    plot_traction.py F.h5 --time 22 --out traction.png
-    plot_traction.py F.h5 --time 22 --time 67 --theory cattaneo --qstar 1 --reversal 50 --normalize --out traction.png
+    PYTHONPATH=scripts python3 -m rollerplots.traction F.h5 --time 22 --out traction.png
+    PYTHONPATH=scripts python3 -m rollerplots.traction F.h5 --time 22 --time 67 --theory cattaneo --qstar 1 --reversal 50 --normalize --out traction.png
 
 P, Q, the centre and the half-width a come from the fields themselves: P and Q are the trapezoidal integrals
 of pressure and traction over the Gamma_C polygon (exactly contact_force and friction_force, docs/contact.md),
@@ -45,7 +44,7 @@ def field(f, name):
     group = f["vertex_fields"]
     cands = sorted((k for k in group if k.startswith(name + "_")), key=len)
     if not cands:
-        raise SystemExit(f"plot_traction: {name} is not in {f.filename} (run with -obstacle -friction MU -output F.h5)")
+        raise SystemExit(f"rollerplots.traction: {name} is not in {f.filename} (run with -obstacle -friction MU -output F.h5)")
     return group[cands[0]]
 
 
@@ -97,7 +96,7 @@ def main(argv=None):
         par = dict(f["parameters"].attrs) if "parameters" in f else {}
         mu = args.mu if args.mu is not None else float(par.get("friction", 0.0))
         if mu <= 0:
-            raise SystemExit("plot_traction: no friction coefficient: the run has -friction 0; give --mu")
+            raise SystemExit("rollerplots.traction: no friction coefficient: the run has -friction 0; give --mu")
         times = f["time"][:, 0]
         steps = list(args.step or [])
         for t in args.time or []:
@@ -109,12 +108,12 @@ def main(argv=None):
         fig, axes = plt.subplots(len(steps), 1, figsize=(7.5, 3.6 * len(steps)), squeeze=False)
         for ax, k in zip(axes[:, 0], steps):
             if not 0 <= k < len(times):
-                raise SystemExit(f"plot_traction: step {k} is not stored (0 ... {len(times) - 1})")
+                raise SystemExit(f"rollerplots.traction: step {k} is not stored (0 ... {len(times) - 1})")
             p, q, st = P_f[k][ring], T_f[k][ring], S_f[k][ring]
             s = x[ring, 0] + L_f[k][ring, 0]
             P, Q = float(np.sum(p * trib)), float(np.sum(q * trib))
             if P <= 0:
-                print(f"plot_traction: t = {times[k]:g}: no contact", file=sys.stderr)
+                print(f"rollerplots.traction: t = {times[k]:g}: no contact", file=sys.stderr)
                 continue
             w = p * trib
             centre = float(np.sum(w * s) / P)
@@ -171,7 +170,7 @@ def main(argv=None):
             ax.grid(alpha=0.3)
         fig.tight_layout()
         fig.savefig(args.out, dpi=120)
-    print(f"plot_traction: wrote {args.out}")
+    print(f"rollerplots.traction: wrote {args.out}")
 
 
 if __name__ == "__main__":

@@ -1,8 +1,7 @@
-#!/usr/bin/env python3
 """The pictures of a sweep (`roller -modes -sweep F.csv`, docs/squeal.md section 6): the eigenvalues against one swept
 option x, the other swept options held at one value each (--where name=value; default: their first value).
 
-    scripts/plot_sweep.py F.csv [--x omega] [--where young=0.1 ...] [--out fig.png]
+    PYTHONPATH=scripts python3 -m rollerplots.sweep F.csv [--x omega] [--where young=0.1 ...] [--out fig.png]
                                 [--coalesce-tol 0.01] [--growth-tol 1e-6]
 
 Top: the frequency Im(lambda) against x; with x = omega this is the Campbell diagram: the two modes of each
@@ -33,7 +32,7 @@ def read(path):
         rows = list(reader)
         params = [c for c in reader.fieldnames if c not in FIXED]
     if not rows:
-        sys.exit(f"plot_sweep: {path} has no rows")
+        sys.exit(f"rollerplots.sweep: {path} has no rows")
     return params, rows
 
 
@@ -47,10 +46,10 @@ def select(params, rows, x, where):
         v = where.get(p, values[0])
         near = min(values, key=lambda u: abs(u - v))
         if abs(near - v) > 1e-12 * max(1.0, abs(v)):
-            sys.exit(f"plot_sweep: {p} = {v} is not in the sweep; its values: {values}")
+            sys.exit(f"rollerplots.sweep: {p} = {v} is not in the sweep; its values: {values}")
         chosen[p] = near
         if p not in where and len(values) > 1:
-            print(f"plot_sweep: {p} held at {near} (of {values}; --where {p}=V to choose)")
+            print(f"rollerplots.sweep: {p} held at {near} (of {values}; --where {p}=V to choose)")
     groups = defaultdict(list)
     for r in rows:
         if all(float(r[p]) == v for p, v in chosen.items()):
@@ -96,15 +95,15 @@ def main():
     a = ap.parse_args()
     params, rows = read(a.csv)
     if not params:
-        sys.exit(f"plot_sweep: {a.csv} has no swept option column (not a -sweep CSV?)")
+        sys.exit(f"rollerplots.sweep: {a.csv} has no swept option column (not a -sweep CSV?)")
     x = a.x or params[0]
     if x not in params:
-        sys.exit(f"plot_sweep: --x {x} is not swept in {a.csv}; swept: {', '.join(params)}")
+        sys.exit(f"rollerplots.sweep: --x {x} is not swept in {a.csv}; swept: {', '.join(params)}")
     where = {}
     for w in a.where:
         name, _, value = w.partition("=")
         if name not in params or name == x or not value:
-            sys.exit(f"plot_sweep: --where {w}: allowed NAME=VALUE with NAME one of {', '.join(p for p in params if p != x)}")
+            sys.exit(f"rollerplots.sweep: --where {w}: allowed NAME=VALUE with NAME one of {', '.join(p for p in params if p != x)}")
         where[name] = float(value)
     chosen, groups = select(params, rows, x, where)
     out = a.out or a.csv.rsplit(".", 1)[0] + ".png"
@@ -126,7 +125,7 @@ def main():
     for i, (xv, r, s) in enumerate(pairs):
         for ax, key in ((top, "im"), (bottom, "re")):
             ax.plot([xv, xv], [float(r[key]), float(s[key])], "o", ms=9, mfc="none", mec="k", zorder=3, label="coalescing pair" if i == 0 and ax is top else None)
-        print(f"plot_sweep: coalescing pair at {x} = {xv:g}: orders {r['order']}, {s['order']}, frequencies {float(r['im']):.6g}, {float(s['im']):.6g}, growth rates {float(r['re']):.3g}, {float(s['re']):.3g}")
+        print(f"rollerplots.sweep: coalescing pair at {x} = {xv:g}: orders {r['order']}, {s['order']}, frequencies {float(r['im']):.6g}, {float(s['im']):.6g}, growth rates {float(r['re']):.3g}, {float(s['re']):.3g}")
     bottom.axhline(0, color="k", lw=0.6)
     lam = [(float(r["re"]), abs(complex(float(r["re"]), float(r["im"])))) for rs in groups.values() for r in rs]
     if all(abs(re) <= a.growth_tol * mag for re, mag in lam):
@@ -142,7 +141,7 @@ def main():
     top.legend(fontsize=8, loc="upper left")
     fig.tight_layout()
     fig.savefig(out, dpi=130)
-    print(f"plot_sweep: {sum(len(v) for v in groups.values())} eigenvalues at {len(groups)} values of {x}, {len(pairs)} coalescing pairs -> {out}")
+    print(f"rollerplots.sweep: {sum(len(v) for v in groups.values())} eigenvalues at {len(groups)} values of {x}, {len(pairs)} coalescing pairs -> {out}")
 
 
 if __name__ == "__main__":

@@ -1,9 +1,8 @@
-#!/usr/bin/python3
 """Amplitude spectra of Roller's CSV columns, with the contact's element-passing frequency marked (the
 cogging of the contact force, docs/contact.md "Cogging: the force spectrum"). The functions are in
-scripts/spectrum.py.
+rollerreport.spectrum.
 
-    /usr/bin/python3 scripts/plot_spectrum.py run.csv [more.csv ...] [--columns contact_force alpha]
+    PYTHONPATH=scripts python3 -m rollerplots.spectrum run.csv [more.csv ...] [--columns contact_force alpha]
         [--tmin 10 --tmax 20] [--omega W] [--h H | --n-boundary N] [--r-outer 0.5]
         [-o spectrum.png] [--table] [--json summary.json]
 
@@ -32,8 +31,7 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import spectrum as sp  # noqa: E402
+from rollerreport import spectrum as sp
 
 
 def parse(argv):
@@ -74,7 +72,7 @@ def analyse(args):
             t_all = sp.column(data, "t", path)
             cols = {c: sp.column(data, c, path) for c in args.columns}
         except (OSError, ValueError) as e:
-            sys.exit(f"plot_spectrum: {e}")
+            sys.exit(f"rollerplots.spectrum: {e}")
         omega = args.omega
         if omega is None and "theta" in data:
             omega = sp.omega_from_theta(t_all, data["theta"])
@@ -90,7 +88,7 @@ def analyse(args):
                 t, yw, resampled = sp.uniform_series(t, yw)
                 s = sp.summary(t, yw, f_e, args.band, args.detrend)
             except ValueError as e:
-                sys.exit(f"plot_spectrum: {path}, column {c}: {e}")
+                sys.exit(f"rollerplots.spectrum: {path}, column {c}: {e}")
             s["resampled"] = resampled
             run["columns"][c] = s
             run["series"][c] = (t, yw)
@@ -194,7 +192,7 @@ def plot(runs, args):
     fig.tight_layout()
     os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
     fig.savefig(args.out, dpi=130)
-    print(f"plot_spectrum: {', '.join(cols)} of {len(runs)} run(s) -> {args.out}")
+    print(f"rollerplots.spectrum: {', '.join(cols)} of {len(runs)} run(s) -> {args.out}")
 
 
 def main(argv):

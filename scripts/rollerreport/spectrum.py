@@ -1,5 +1,5 @@
 """Spectra of Roller's time series (the -monitor_csv CSV, docs/model.md section 6.1): the functions behind
-scripts/plot_spectrum.py, importable by tests (tests/spectrum_synthetic.py) and other scripts.
+scripts/rollerplots/spectrum.py, importable by tests (tests/spectrum_synthetic.py) and other scripts.
 
 Amplitudes are amplitudes of sinusoids: a signal c + a cos(2 pi f t + phi) sampled over the window has the
 line a at f. The mean is removed, the signal multiplied by a Hann window w and the discrete-time Fourier
@@ -232,7 +232,7 @@ def flicker(n, within=3):
 
 
 def summary(t, y, f_e=None, band=None, detrend="mean"):
-    """The numbers of plot_spectrum.py --table for one series in its window: mean, std/mean, largest
+    """The numbers of rollerplots.spectrum --table for one series in its window: mean, std/mean, largest
     |y - mean|/mean, the line at f_e (and 2 f_e: P2 has nodes every h/2) relative to the mean and to the
     background level around it, the strongest line."""
     t, y = np.asarray(t, float), np.asarray(y, float)

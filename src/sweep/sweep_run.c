@@ -7,7 +7,7 @@
    solvers learn a new one. Each finished case goes to its sub-communicator's journal at once (sweep_journal.c), so
    that a killed map, run again with the same command, skips what it had done; at the end the rows of all cases are
    gathered to rank 0 and written as one CSV (sweep_csv.c). */
-#include "app/sweep.h"
+#include "sweep/sweep.h"
 #include "integrate/integrate.h"
 #include "io/io.h"
 
