@@ -22,3 +22,8 @@ roller_test(friction_printer friction_printer.py LABELS long TIMEOUT 1200)
 # the axle and the drive (-axle, docs/model.md section 10): torsion and bounce in the stiff-rubber limit, the ripple's
 # forced response, the nip force against -static, the energy balance of rolling on the axle, 1 and 2 ranks
 roller_test(axle axle.py LABELS quick mpi PROCESSORS 2 TIMEOUT 600)
+# stick-slip on the axle against the one-degree-of-freedom model (docs/validation.md 9.5, issue 36): the growth rates
+# about steady sliding and the onset slip within 5 % of the closed form, set 1's bistability (linearly stable, the
+# start from rest into the cycle, period and amplitude within 10 % of rollerref's, a small disturbance decays at the
+# closed-form rate); five runs, two at a time (about 5 minutes of CPU on each core)
+roller_test(axle_stickslip axle_stickslip.py LABELS long PROCESSORS 2 TIMEOUT 2400)
