@@ -205,6 +205,18 @@ nf = forced.natural_frequencies(I_h, I_t, k_d, 1e6)
 c.check(abs(nf["free_low"] / nf["one_dof"] - 1) < 1e-5, f"2-DOF with a stiff rubber: lowest frequency {nf['free_low']:.7g} "
         f"-> 1-DOF {nf['one_dof']:.7g}")
 
+# 5b. the motor's cubic ramp is Roller's -drive_ramp (src/model/forcing.c): speed omega x^2 (3 - 2 x), its angle and
+# acceleration consistent with it (central differences), at rest before t0 and omega (t - t0 - T/2) after the ramp
+m = Motor(omega=0.3, t0=1.0, t_ramp=2.0, ramp="cubic")
+h, worst = 1e-5, 0.0
+for tt in np.linspace(1.05, 2.95, 20):
+    a, v, acc = m.state(tt)
+    x = (tt - 1.0) / 2.0
+    worst = max(worst, abs(v - 0.3 * x * x * (3 - 2 * x)), abs((m.state(tt + h)[0] - m.state(tt - h)[0]) / (2 * h) - v),
+                abs((m.state(tt + h)[1] - m.state(tt - h)[1]) / (2 * h) - acc))
+c.check(worst < 1e-8 and m.state(0.5) == (0.0, 0.0, 0.0) and abs(m.state(4.0)[0] - 0.3 * (4.0 - 1.0 - 1.0)) < 1e-15,
+        f"the cubic ramp: speed x^2 (3 - 2x), angle and acceleration consistent ({worst:.1e}), at rest before t0, omega (t - t0 - T/2) after")
+
 # 6. the command line
 env = dict(os.environ, PYTHONPATH=os.path.join(SOURCE, "scripts"))
 out = subprocess.run([sys.executable, "-m", "rollerref", "cycle", "--json", "cycle.json", "--csv", "cycle.csv",

@@ -84,7 +84,7 @@ def main(argv=None):
                        ("ripple_frequency", 0.0, "ripple f (cycles per unit time)")]:
         g.add_argument("--" + name, type=float, default=None, help=f"{h} (default {d}; propose: its own)")
         DEFAULTS[name] = d
-    g.add_argument("--ramp", default="linear", choices=["linear", "cosine"])
+    g.add_argument("--ramp", default="linear", choices=["linear", "cosine", "cubic"])
     ap.add_argument("--kick", type=float, default=None, help="basin: the large disturbance is this kick of th' toward "
                     "stick from steady sliding (default: the start from rest, th = th' = 0)")
     ap.add_argument("--long", action="store_true", help="cycle: also integrate from rest and extract the cycle")

@@ -3,7 +3,8 @@
     omega_m(t) = omega R((t - t0) / t_ramp),   theta_m(t) = int_0^t omega_m + a sin(2 pi f t),
 
 R(s) = 0 before the start (s < 0), 1 after the ramp (s >= 1); in between R = s ('linear', the speed's kink is a
-jump in the motor's acceleration) or R = (1 - cos(pi s)) / 2 ('cosine', smooth speed and acceleration). t_ramp = 0
+jump in the motor's acceleration), R = (1 - cos(pi s)) / 2 ('cosine', smooth speed and acceleration) or
+R = s^2 (3 - 2 s) ('cubic': Roller's -drive_ramp, src/model/forcing.c; continuous acceleration, its jerk jumps). t_ramp = 0
 is a step in speed at t0 (the motor already at omega at t0; the integrator takes a speed step only at its initial
 time: start it at t0). The ripple a sin(2 pi f t) (radians, f in cycles per unit time) acts from t = 0 whatever
 the start, as written in issue 36; the integrator sees it through theta_m, theta_m' and theta_m''.
@@ -17,13 +18,13 @@ class Motor:
     omega: float = 0.0  # final speed (rad per unit time)
     t0: float = 0.0  # the start; before it the motor is at rest at angle 0
     t_ramp: float = 0.0  # duration of the speed ramp (0: a step)
-    ramp: str = "linear"  # 'linear' or 'cosine'
+    ramp: str = "linear"  # 'linear', 'cosine' or 'cubic' (Roller's -drive_ramp)
     ripple: float = 0.0  # a, radians
     ripple_frequency: float = 0.0  # f, cycles per unit time
 
     def __post_init__(self):
-        if self.ramp not in ("linear", "cosine") or self.t_ramp < 0 or self.t0 < 0:
-            raise ValueError(f"motor: ramp must be 'linear' or 'cosine', t_ramp >= 0, t0 >= 0, got {self}")
+        if self.ramp not in ("linear", "cosine", "cubic") or self.t_ramp < 0 or self.t0 < 0:
+            raise ValueError(f"motor: ramp must be 'linear', 'cosine' or 'cubic', t_ramp >= 0, t0 >= 0, got {self}")
 
     def _base(self, t):
         """(angle, speed, acceleration) of the ramped rotation without the ripple."""
@@ -35,6 +36,8 @@ class Motor:
         x = s / tr
         if self.ramp == "linear":
             return 0.5 * w * s * x, w * x, w / tr
+        if self.ramp == "cubic":
+            return w * tr * x ** 3 * (1.0 - 0.5 * x), w * x * x * (3.0 - 2.0 * x), 6.0 * w * x * (1.0 - x) / tr
         return (0.5 * w * (s - tr / math.pi * math.sin(math.pi * x)), 0.5 * w * (1.0 - math.cos(math.pi * x)),
                 0.5 * w * math.pi / tr * math.sin(math.pi * x))
 
