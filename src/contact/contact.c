@@ -178,7 +178,11 @@ PetscErrorCode RollerContactSolve(Roller ctx, RollerContact c, const RollerConta
       PetscCall(RollerContactSolveWith(ctx, c, c->solver, b, xi, &c->acc.result));
       PetscCall(RollerContactSheetAccept(ctx, c, c->acc.result.lambda_t, &holds));
     }
-    PetscCheck(holds, ctx->comm, PETSC_ERR_NOT_CONVERGED, "At t = %g the sheet (-sheet_mass) found no consistent case: sliding forward, held and sliding back all contradict the step's friction", (double)t);
+    if (!holds) { /* none holds: held at its bound (contact_sheet.c) */
+      c->sheet.X[3] = 0.0;
+      PetscCall(RollerContactSolveWith(ctx, c, c->solver, b, xi, &c->acc.result));
+      PetscCall(RollerContactSheetHoldAtBound(ctx, c));
+    }
   }
   c->acc.solved = PETSC_TRUE;
   if (c->opt.check) PetscCall(RollerContactCheckStep(ctx, c, b, xi));
@@ -214,6 +218,8 @@ PetscErrorCode RollerContactDestroy(RollerContact *contact)
   PetscCall(RollerContactCheckSummary(c));
   PetscCall(ContactSolversDestroy(c));
   PetscCall(RollerContactFrictionDestroy(c->comm, &c->friction));
+  if (c->sheet.bound_steps)
+    PetscCall(PetscPrintf(c->comm, "sheet: in %" PetscInt_FMT " steps no case of the sheet was consistent with the step's mu(v); it was held with the force the step needed, above -sheet_resistance (the CSV's coulomb_fallback 4)\n", c->sheet.bound_steps));
   PetscCall(PetscFree(c->acc.result.lambda_t));
   PetscCall(PetscViewerDestroy(&c->opt.monitor));
   PetscCall(RollerContactNodesDestroy(c));

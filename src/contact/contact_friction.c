@@ -13,7 +13,8 @@
    Lemke's method (contact_lemke.c), and if that ends on a ray the step fails with an error. With weakening the
    step's mu(v) can have no attracting solution (the fixed point's gain above 1, docs/friction.md section 3): if
    Newton fails both ways, mu at the last step's slip speeds is used for the step. Each fallback is counted: the
-   CSV's coulomb_fallback (1 Tresca passes, 2 Lemke, 3 mu of the last step), one line at the end of the run. */
+   CSV's coulomb_fallback (1 Tresca passes, 2 Lemke, 3 mu of the last step, 4 the sheet held at its bound:
+   contact_sheet.c), one line at the end of the run. */
 #include "contact_impl.h"
 
 static PetscReal FrictionCoefficient(RollerContactFriction fr, PetscReal v)
@@ -305,7 +306,7 @@ PetscErrorCode RollerContactFrictionInfo(Roller ctx, RollerContact c, const Pets
   f->force = f->dissipation = f->residual = 0.0;
   f->stick = f->slip = 0;
   f->iterations      = fr->its;
-  f->fallback        = fr->fallback;
+  f->fallback        = c->sheet.held_at_bound ? 4 : fr->fallback;
   SlipFrame(ctx, t, t2, &dX);
   if (RollerContactSheetMoves(c)) { /* the sheet's own advance X^k - X^{k-2}: internal, the resistance dissipates */
     dX = c->sheet.X[0] - c->sheet.X[2];

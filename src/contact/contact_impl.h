@@ -163,6 +163,8 @@ typedef struct {
   PetscReal mass, resistance;
   PetscReal X[4];
   PetscReal dissipation;
+  PetscBool held_at_bound; /* the last step: no case consistent, held with the force it needed (coulomb_fallback 4) */
+  PetscInt  bound_steps;   /* the run's such steps */
 } RollerContactSheet;
 
 struct _n_RollerContact {
@@ -183,6 +185,7 @@ struct _n_RollerContact {
 PETSC_INTERN PetscErrorCode RollerContactSheetSetUp(Roller, RollerContact);
 PETSC_INTERN void           RollerContactSheetFree(Roller, RollerContact, PetscReal *, PetscReal *); /* dX without friction, compliance dt^2/m */
 PETSC_INTERN PetscErrorCode RollerContactSheetAccept(Roller, RollerContact, const PetscReal[], PetscBool *);
+PETSC_INTERN PetscErrorCode RollerContactSheetHoldAtBound(Roller, RollerContact);
 
 /* contact_registry.c */
 PETSC_INTERN PetscErrorCode RollerContactSolveWith(Roller, RollerContact, RollerContactSolver, Vec, Vec, RollerContactResult *);

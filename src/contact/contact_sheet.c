@@ -75,10 +75,32 @@ PetscErrorCode RollerContactSheetAccept(Roller ctx, RollerContact c, const Petsc
     if (!*holds) sh->X[3] = R < 0 ? 1.0 : -1.0; /* the resistance gives way: it slides where the rest pulls it */
   }
   if (!*holds) PetscFunctionReturn(0);
-  sh->dissipation = 0.5 * sh->resistance * PetscAbsReal(Xk - sh->X[1]);
+  sh->held_at_bound = PETSC_FALSE;
+  sh->dissipation   = 0.5 * sh->resistance * PetscAbsReal(Xk - sh->X[1]);
   sh->X[2]        = sh->X[1];
   sh->X[1]        = sh->X[0];
   sh->X[0]        = Xk;
+  PetscFunctionReturn(0);
+}
+
+/* No case holds (with the velocity weakening the step's mu(v) can make the friction of the held sheet exceed F_r while
+   sliding forward drags it back: docs/friction.md section 3's fixed point without a solution): after the step solved in
+   the held case, the sheet is held at its bound for this step with the force it needed (|R| > F_r by what the CSV's
+   friction_force says), the next step starts again from its case. The sheet does not move: no work, the balance stays
+   exact; the momentum's law is off by (|R| - F_r) dt for this step. Counted (coulomb_fallback 4, one line at the end). */
+PetscErrorCode RollerContactSheetHoldAtBound(Roller ctx, RollerContact c)
+{
+  RollerContactSheet *sh = &c->sheet;
+
+  PetscFunctionBeginUser;
+  (void)ctx;
+  PetscCheck(sh->X[3] == 0.0, c->comm, PETSC_ERR_PLIB, "the sheet held at its bound must have been solved in the held case");
+  sh->held_at_bound = PETSC_TRUE;
+  sh->bound_steps++;
+  sh->dissipation = 0.0;
+  sh->X[2]        = sh->X[1];
+  sh->X[1]        = sh->X[0];
+  sh->X[0]        = sh->X[2];
   PetscFunctionReturn(0);
 }
 
