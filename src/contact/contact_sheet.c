@@ -77,9 +77,9 @@ PetscErrorCode RollerContactSheetAccept(Roller ctx, RollerContact c, const Petsc
   if (!*holds) PetscFunctionReturn(0);
   sh->held_at_bound = PETSC_FALSE;
   sh->dissipation   = 0.5 * sh->resistance * PetscAbsReal(Xk - sh->X[1]);
-  sh->X[2]        = sh->X[1];
-  sh->X[1]        = sh->X[0];
-  sh->X[0]        = Xk;
+  sh->X[2]          = sh->X[1];
+  sh->X[1]          = sh->X[0];
+  sh->X[0]          = Xk;
   PetscFunctionReturn(0);
 }
 
