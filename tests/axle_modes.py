@@ -1,4 +1,4 @@
-"""-modes with -axle (docs/squeal.md section 10, docs/model.md section 10; issue 36): the hub's lab-frame (Y, phi) in
+"""-modes with -axle (docs/squeal.md section 3.1, docs/model.md section 10; issue 36): the hub's lab-frame (Y, phi) in
 the quadratic eigenproblem, no obstacle.
 
 1. Stiff-rubber limit (E = 100, the scene of tests/axle.py part 1), the motor at rest: the drive's torsion

@@ -1,4 +1,4 @@
-/* -modes with -axle (docs/squeal.md section 10, docs/model.md section 10): the hub's unknowns in the eigenproblem and
+/* -modes with -axle (docs/squeal.md section 3.1, docs/model.md section 10): the hub's unknowns in the eigenproblem and
    the steady state set by the nip force.
 
    The lab frame (the guide is the lab's vertical): the hub's perturbation q = (Y, phi), Y along the lab's e2, phi its

@@ -67,7 +67,7 @@ PETSC_INTERN PetscErrorCode RollerSteadyCoulomb(MPI_Comm, PetscInt, const PetscR
    reduced vector's first part back to the full space */
 PETSC_INTERN PetscErrorCode RollerSquealOperators(Roller, const RollerSteady *, Mat, Mat, Mat, Mat *, Mat *, Mat *, IS *, PetscInt *);
 
-/* axle_modes.c: -modes with -axle (docs/squeal.md section 10): the hub's lab-frame (Y, phi) appended to M, C, K on the
+/* axle_modes.c: -modes with -axle (docs/squeal.md section 3.1): the hub's lab-frame (Y, phi) appended to M, C, K on the
    last rank (the body's indices unchanged); the steady state at the hub's height that gives -nip_force (and q = Y, phi
    of it, the body's state with the hub's rigid motion); an augmented vector's parts and one with the body's layout */
 PETSC_INTERN PetscErrorCode RollerAxleModeOperators(Roller, Mat *, Mat *, Mat *);
