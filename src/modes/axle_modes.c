@@ -280,11 +280,11 @@ static PetscReal NormalForce(const RollerSteady *st)
 }
 
 /* The clamped-hub steady state at depth d (the sheet at d - r_outer) */
-static PetscErrorCode SteadyAt(Roller ctx, Mat Klab, PetscReal d, RollerSteady *st, PetscReal *N)
+static PetscErrorCode SteadyAt(Roller ctx, KSP ksp, PetscReal d, RollerSteady *st, PetscReal *N)
 {
   PetscFunctionBeginUser;
   ctx->obstacle.depth = d;
-  PetscCall(RollerSteadySolve(ctx, Klab, st));
+  PetscCall(RollerSteadySolveWith(ctx, ksp, st));
   *N = NormalForce(st);
   PetscFunctionReturn(0);
 }
@@ -295,19 +295,21 @@ PetscErrorCode RollerAxleSteadySolve(Roller ctx, Mat Klab, RollerSteady *st, Pet
   PetscReal       d0, d1, N0, N1, torque = 0;
   PetscInt        it;
   Vec             r[2];
+  KSP             ksp; /* K_lab factored once for every depth */
 
   PetscFunctionBeginUser;
   PetscCheck(F > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-modes -axle -obstacle: the steady state is pressed by the spring's preload: -nip_force must be > 0, got %g", (double)F);
   /* a secant on the depth d: N(d) rises monotonically; the first two guesses -obstacle_depth and its scaling by F/N */
   d0 = depth > 0 ? depth : 1e-3 * ctx->mesh.r_outer;
-  PetscCall(SteadyAt(ctx, Klab, d0, st, &N0));
+  PetscCall(RollerSteadyKSPCreate(ctx, Klab, &ksp));
+  PetscCall(SteadyAt(ctx, ksp, d0, st, &N0));
   PetscCheck(N0 > 0, ctx->comm, PETSC_ERR_NOT_CONVERGED, "-modes -axle: no contact at the first depth %g", (double)d0);
   d1 = d0 * F / N0;
   for (it = 0; it < 40; ++it) {
     PetscReal d2;
 
     PetscCall(RollerSteadyDestroy(st, PETSC_TRUE));
-    PetscCall(SteadyAt(ctx, Klab, d1, st, &N1));
+    PetscCall(SteadyAt(ctx, ksp, d1, st, &N1));
     if (PetscAbsReal(N1 - F) <= 1e-10 * F) break;
     d2 = N1 != N0 ? d1 - (N1 - F) * (d1 - d0) / (N1 - N0) : d1 * F / PetscMax(N1, 1e-300);
     if (d2 <= 0) d2 = 0.5 * d1; /* stay in contact */
@@ -315,6 +317,7 @@ PetscErrorCode RollerAxleSteadySolve(Roller ctx, Mat Klab, RollerSteady *st, Pet
   }
   PetscCheck(it < 40, ctx->comm, PETSC_ERR_NOT_CONVERGED, "-modes -axle: the hub's height for -nip_force %g did not settle in 40 steady solves (force %g at depth %g)", (double)F, (double)N1, (double)d1);
   ctx->obstacle.depth = depth;
+  PetscCall(KSPDestroy(&ksp));
   for (PetscInt j = 0; j < st->n; ++j) torque += st->xy[2 * j] * st->normal[j] - st->xy[2 * j + 1] * st->tangent[j];
   q[0] = -d1;                                /* the hub lowered onto the sheet at -r_outer */
   q[1] = torque / ctx->axle.drive_stiffness; /* the drive's spring holds the friction torque */

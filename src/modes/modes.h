@@ -55,6 +55,8 @@ typedef struct {
   VecScatter           scatter;
 } RollerSteady;
 PETSC_INTERN PetscErrorCode RollerSteadySolve(Roller, Mat, RollerSteady *);                                                                    /* with K_lab */
+PETSC_INTERN PetscErrorCode RollerSteadyKSPCreate(Roller, Mat, KSP *);                                                                         /* K_lab's direct solver, for repeated solves */
+PETSC_INTERN PetscErrorCode RollerSteadySolveWith(Roller, KSP, RollerSteady *);                                                                /* with that solver (factored once) */
 PETSC_INTERN PetscErrorCode RollerSteadyAngularDerivative(const RollerSteady *, PetscReal, PetscInt, PetscInt[3], PetscReal[3], PetscReal[3]); /* the slip's d_phi and point weights, upstream for omega */
 PETSC_INTERN PetscErrorCode RollerSteadyDestroy(RollerSteady *, PetscBool);
 PETSC_INTERN PetscErrorCode RollerSteadyReport(Roller, const RollerSteady *); /* printed, and -modes_steady_csv */
