@@ -16,7 +16,7 @@ PetscErrorCode RollerModesSetFromOptions(Roller ctx)
   PetscOptionsBegin(ctx->comm, NULL, "Roller: modes (docs/squeal.md); the eigensolver takes -pep_* and -st_* options (SLEPc PEP, TOAR, shift-and-invert about -pep_target 0)", NULL);
   PetscCall(PetscOptionsBool("-modes", "Compute the modes of the scene (the quadratic eigenproblem) instead of stepping", NULL, ctx->eig.on, &ctx->eig.on, NULL));
   ctx->eig.frame = ctx->obstacle.on || ctx->axle.on ? ROLLER_FRAME_LAB : ROLLER_FRAME_ROTATING; /* rolling, and the axle's vertical guide, are steady in the lab only */
-  PetscCall(PetscOptionsEnum("-modes_frame", "Frame of the linearization: rotating (co-rotating, Lagrangian; the default without -obstacle) or lab (Eulerian; the default and the only one with -obstacle)", "RollerFrame", RollerFrames,
+  PetscCall(PetscOptionsEnum("-modes_frame", "Frame of the linearization: rotating (co-rotating, Lagrangian; the default without -obstacle and -axle) or lab (Eulerian; the default and the only one with -obstacle, and with -axle unless -omega 0)", "RollerFrame", RollerFrames,
                              (PetscEnum)ctx->eig.frame, (PetscEnum *)&ctx->eig.frame, NULL));
   PetscCall(PetscOptionsInt("-modes_nev", "Number of eigenvalues wanted (-pep_nev overrides); each complex pair counts twice; 0 with -obstacle: the steady state only", NULL, ctx->eig.nev, &ctx->eig.nev, NULL));
   PetscCall(PetscOptionsReal("-modes_stick_eps", "With -obstacle: the stick nodes' regularized Coulomb cone T = -mu N v/sqrt(v^2 + eps^2), eps a slip speed (docs/squeal.md 4.4); 0: each stick node rigidly stuck (a multiplier)", NULL, ctx->eig.stick_eps,
