@@ -10,9 +10,13 @@ the quadratic eigenproblem, no obstacle.
    linearized rotation phi J x inflates the rim, and the centrifugal term's -rho omega^2 P on it is a torsional
    softening rho omega^2 I_r (the linearized model's, the time step's too: docs/model.md section 10, Limits);
    1 and 2 ranks agree to 1e-8.
-3. Bad input: -modes -axle -obstacle with -nip_force 0, -modes_frame rotating with omega != 0, -damping with
+3. Rolling on the sheet on the axle (stick and slip zones, velocity weakening, Kelvin-Voigt, the hub turning with the
+   motor at omega = 0.1, creep 2 %): the steady state's contact force -nip_force within 1e-8, a stick zone and a slip
+   zone, and 1 and 2 ranks give the same eigenvalues and hub amplitudes (1e-8: the hub's rows on the last rank, the
+   stick multipliers after them).
+4. Bad input: -modes -axle -obstacle with -nip_force 0, -modes_frame rotating with omega != 0, -damping with
    omega != 0: non-zero exit and a message naming the option.
-quick: a coarse mesh (610 unknowns), five eigenproblems of seconds."""
+quick: coarse meshes (610 and 6460 unknowns), seven eigenproblems of seconds."""
 import math
 
 from rollertest import Checker, read_csv, run
@@ -55,7 +59,20 @@ c.check(abs(wt / ref_w - 1) < 0.01, f"omega {W}: torsion {wt:.6f} against sqrt((
 wt2, wb2, _ = frequencies(W, "turning2.csv", nproc=2, extra=["-viscosity", 1e-3])
 c.check(abs(wt2 / wt - 1) < 1e-8 and abs(wb2 / wb - 1) < 1e-8, f"2 ranks: torsion {wt2:.12f}, bounce {wb2:.12f} (1 rank {wt:.12f}, {wb:.12f})")
 
-# 3. bad input
+# 3. rolling on the sheet, 1 and 2 ranks
+NIP = 0.005
+ROLL = ["-modes", "-axle", "-obstacle", "-nip_force", NIP, "-drive_stiffness", 0.1, "-friction", 0.5, "-friction_static", 0.7, "-friction_decay", 0.05, "-viscosity", 0.01, "-omega", 0.1, "-sheet_speed", 0.049,
+        "-mesh_h", 0.1, "-mesh_h_contact", 0.02, "-modes_nev", 6, "-quiet"]
+run(ROLL + ["-modes_csv", "roll1.csv", "-modes_steady_csv", "steady1.csv"])
+run(ROLL + ["-modes_csv", "roll2.csv"], nproc=2)
+st = read_csv("steady1.csv")
+c.check(abs(st["normal_force"].sum() / NIP - 1) < 1e-8 and (st["state"] == 1).sum() > 0 and (st["state"] == 2).sum() > 0,
+        f"rolling: the contact force {st['normal_force'].sum():.10g} (-nip_force {NIP}), {int((st['state'] == 1).sum())} nodes stuck, {int((st['state'] == 2).sum())} slipping")
+a1, a2 = read_csv("roll1.csv"), read_csv("roll2.csv")
+dev = max(float(abs(a1[k] - a2[k]).max() / max(abs(a1[k]).max(), 1e-300)) for k in ("re", "im", "axle_y", "hub_phi")) if len(a1["re"]) == len(a2["re"]) else math.inf
+c.check(dev < 1e-8, f"rolling: 1 and 2 ranks agree to {dev:.1e} over {len(a1['re'])} eigenvalues (re, im, axle_y, hub_phi)")
+
+# 4. bad input
 for extra, option in ((["-obstacle", "-nip_force", 0, "-omega", 0], "-nip_force"), (["-omega", W, "-modes_frame", "rotating"], "-modes_frame"), (["-omega", W, "-damping", 0.01], "-damping")):
     rc, out, err = run(SCENE + extra, check=False)
     said = [line for line in (out + err).splitlines() if option in line]
