@@ -131,8 +131,7 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   if (ctx->obstacle.on) { /* the steady state, and the linearization about it on the kept dofs */
     RollerSteady st;
     Mat          Mr, Cr, Kr;
-
-    PetscReal q[2];
+    PetscReal    q[2]; /* with -axle: the hub's steady (Y, phi) */
 
     if (ctx->axle.on) PetscCall(RollerAxleSteadySolve(ctx, K, &st, q));
     else PetscCall(RollerSteadySolve(ctx, K, &st));
