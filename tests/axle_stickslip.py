@@ -24,10 +24,9 @@ Every reference number below is computed here, in-process, by rollerref from the
     from the start (the contact sliding while the nip force ramps in) keeps sliding, its oscillation decaying at
     the closed-form rate within 10 %.
 
-TODO(CEA with the axle): issue 36 also asks the complex eigenvalue analysis to agree with both. roller -modes does
-not handle -axle yet; the closed form rollerref.stickslip.linear_stability (the 1-DOF CEA) stands in for it here.
-When -modes knows the axle, run it on the steady sliding of each onset scene and of (b) and check the real part of
-the drive's eigenvalue against the fitted rates and -c_eff/(2 I) (5 %), and its sign change against v*.
+The CEA (issue 36 asks it to agree with both): tests/axle_modes_onset.py (long) runs roller -modes -axle on the steady
+sliding of each onset scene of (a) and checks the drive's eigenvalue against -c_eff/(2 I) and against the rates this
+test fits (5 %), and the onset from its rates against v* (docs/validation.md 10.5).
 
 Known gaps of the finite elements (measured, docs/validation.md 10.5): the hub's rotation relative to the motor's
 frame is linearized (xi = phi J x on Gamma_D), which inflates the rim by r (sqrt(1 + phi^2) - 1); under the nip

@@ -169,7 +169,10 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
              RollerMMSTypes[ctx->init.mms]);
   PetscCheck(!(ctx->eig.on && ctx->obstacle.sheet_mass > 0), ctx->comm, PETSC_ERR_SUP, "-sheet_mass with -modes: the steady state takes the sheet's speed -sheet_speed (the force balance of a moving sheet is the transient's)");
   if (ctx->axle.on) { /* what the hub's elimination (model/axle.h) carries */
-    PetscCheck(!ctx->eig.on, ctx->comm, PETSC_ERR_SUP, "-axle with -modes: the steady state and the eigenproblem with the hub's unknowns are not built yet (docs/squeal.md section 10)");
+    PetscCheck(!(ctx->eig.on && ctx->eig.frame != ROLLER_FRAME_LAB && ctx->rotation.omega != 0), ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle with -modes: the hub's guide is the lab's vertical, steady in the lab frame only: -modes_frame lab (or -omega 0), not %s",
+               RollerFrames[ctx->eig.frame]);
+    PetscCheck(!(ctx->eig.on && ctx->disc.damping != 0 && ctx->rotation.omega != 0), ctx->comm, PETSC_ERR_SUP, "-axle with -modes and -omega != 0: the mass damping's rotational form B_L does not border the hub's rows: -damping %g must be 0 (the Kelvin-Voigt -viscosity is carried)",
+               (double)ctx->disc.damping);
     PetscCheck(!ctx->disc.static_solve && ctx->init.mms == ROLLER_MMS_NONE, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes no -static or -mms");
     PetscCheck(ctx->disc.coriolis != ROLLER_CORIOLIS_CENTERED, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes -coriolis_velocity backward or extrapolated, not centered");
     PetscCheck(ctx->disc.contact_mass == ROLLER_CONTACT_MASS_CONSISTENT, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes the consistent mass (-contact_mass consistent), not %s", RollerContactMasses[ctx->disc.contact_mass]);

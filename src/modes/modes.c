@@ -15,8 +15,8 @@ PetscErrorCode RollerModesSetFromOptions(Roller ctx)
   ctx->eig.skew_defect[0] = ctx->eig.skew_defect[1] = -1.0;
   PetscOptionsBegin(ctx->comm, NULL, "Roller: modes (docs/squeal.md); the eigensolver takes -pep_* and -st_* options (SLEPc PEP, TOAR, shift-and-invert about -pep_target 0)", NULL);
   PetscCall(PetscOptionsBool("-modes", "Compute the modes of the scene (the quadratic eigenproblem) instead of stepping", NULL, ctx->eig.on, &ctx->eig.on, NULL));
-  ctx->eig.frame = ctx->obstacle.on ? ROLLER_FRAME_LAB : ROLLER_FRAME_ROTATING; /* rolling is steady in the lab only */
-  PetscCall(PetscOptionsEnum("-modes_frame", "Frame of the linearization: rotating (co-rotating, Lagrangian; the default without -obstacle) or lab (Eulerian; the default and the only one with -obstacle)", "RollerFrame", RollerFrames,
+  ctx->eig.frame = ctx->obstacle.on || ctx->axle.on ? ROLLER_FRAME_LAB : ROLLER_FRAME_ROTATING; /* rolling, and the axle's vertical guide, are steady in the lab only */
+  PetscCall(PetscOptionsEnum("-modes_frame", "Frame of the linearization: rotating (co-rotating, Lagrangian; the default without -obstacle and -axle) or lab (Eulerian; the default and the only one with -obstacle, and with -axle unless -omega 0)", "RollerFrame", RollerFrames,
                              (PetscEnum)ctx->eig.frame, (PetscEnum *)&ctx->eig.frame, NULL));
   PetscCall(PetscOptionsInt("-modes_nev", "Number of eigenvalues wanted (-pep_nev overrides); each complex pair counts twice; 0 with -obstacle: the steady state only", NULL, ctx->eig.nev, &ctx->eig.nev, NULL));
   PetscCall(PetscOptionsReal("-modes_stick_eps", "With -obstacle: the stick nodes' regularized Coulomb cone T = -mu N v/sqrt(v^2 + eps^2), eps a slip speed (docs/squeal.md 4.4); 0: each stick node rigidly stuck (a multiplier)", NULL, ctx->eig.stick_eps,
@@ -35,8 +35,9 @@ PetscErrorCode RollerModesSetFromOptions(Roller ctx)
   PetscFunctionReturn(0);
 }
 
-/* z <- z conj(z_p) / |z_p|^2, p the dof of largest |z|: the largest displacement component 1, real there. */
-static PetscErrorCode Normalize(Vec xr, Vec xi, Vec w)
+/* z <- z conj(z_p) / |z_p|^2, p the dof of largest |z|: the largest displacement component 1, real there; the factor
+   (re, im) into f (NULL: not wanted). */
+static PetscErrorCode Normalize(Vec xr, Vec xi, Vec w, PetscReal f[2])
 {
   MPI_Comm  comm = PetscObjectComm((PetscObject)xr);
   PetscInt  p, lo, hi;
@@ -68,6 +69,7 @@ static PetscErrorCode Normalize(Vec xr, Vec xi, Vec w)
   PetscCall(VecAXPBY(xr, g[1] / s, g[0] / s, xi));
   PetscCall(VecAXPBY(xi, -g[1] / s, g[0] / s, t));
   PetscCall(VecDestroy(&t));
+  if (f) f[0] = g[0] / s, f[1] = -g[1] / s;
   PetscFunctionReturn(0);
 }
 
@@ -90,8 +92,9 @@ static PetscErrorCode KeptToFull(IS kept, Vec z, Vec x)
   PetscFunctionReturn(0);
 }
 
-/* The eigenvalue CSV, rank 0, as F.part renamed when complete. */
-static PetscErrorCode WriteCsv(Roller ctx)
+/* The eigenvalue CSV, rank 0, as F.part renamed when complete; with -axle (hub not NULL) the hub's amplitudes |Y|,
+   |phi| of the normalized mode appended (axle_y,hub_phi). */
+static PetscErrorCode WriteCsv(Roller ctx, const PetscReal *hub)
 {
   const RollerEigen *e = &ctx->eig;
   char               part[PETSC_MAX_PATH_LEN];
@@ -100,9 +103,12 @@ static PetscErrorCode WriteCsv(Roller ctx)
   PetscFunctionBeginUser;
   PetscCall(RollerPartFileOpen(ctx->comm, e->csv, "-modes_csv", part, sizeof(part), &fp));
   if (fp) {
-    PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "re,im,frequency,growth_rate,order,wave,error\n"));
-    for (PetscInt j = 0; j < e->n; ++j)
-      PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%s,%.3e\n", (double)e->re[j], (double)e->im[j], (double)e->im[j], (double)e->re[j], e->order[j], RollerWaves[e->wave[j]], (double)e->error[j]));
+    PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "re,im,frequency,growth_rate,order,wave,error%s\n", hub ? ",axle_y,hub_phi" : ""));
+    for (PetscInt j = 0; j < e->n; ++j) {
+      PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%s,%.3e", (double)e->re[j], (double)e->im[j], (double)e->im[j], (double)e->re[j], e->order[j], RollerWaves[e->wave[j]], (double)e->error[j]));
+      if (hub) PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, ",%.17g,%.17g", (double)hub[2 * j], (double)hub[2 * j + 1]));
+      PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "\n"));
+    }
   }
   PetscCall(RollerPartFileClose(ctx->comm, &fp, part, e->csv));
   PetscFunctionReturn(0);
@@ -114,9 +120,10 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   Mat                  M, C, K;
   RollerPEP            pep;
   RollerModeClassifier cls;
-  Vec                 *xr, *xi, w, zr = NULL, zi = NULL, steady = NULL;
-  IS                   kept   = NULL; /* with -obstacle: the dofs of the reduced problem */
-  PetscInt             nstick = 0;    /* and the stick nodes' multipliers after them */
+  Vec                 *xr, *xi, w, zr = NULL, zi = NULL, steady = NULL, ar = NULL, ai = NULL; /* ar, ai: with -axle, the body's and the hub's */
+  PetscReal           *hub    = NULL;                                                         /* with -axle: |Y|, |phi| of each mode */
+  IS                   kept   = NULL;                                                         /* with -obstacle: the dofs of the reduced problem */
+  PetscInt             nstick = 0;                                                            /* and the stick nodes' multipliers after them */
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_MODES]));
@@ -124,9 +131,12 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   if (ctx->obstacle.on) { /* the steady state, and the linearization about it on the kept dofs */
     RollerSteady st;
     Mat          Mr, Cr, Kr;
+    PetscReal    q[2]; /* with -axle: the hub's steady (Y, phi) */
 
-    PetscCall(RollerSteadySolve(ctx, K, &st));
+    if (ctx->axle.on) PetscCall(RollerAxleSteadySolve(ctx, K, &st, q));
+    else PetscCall(RollerSteadySolve(ctx, K, &st));
     PetscCall(RollerSteadyReport(ctx, &st));
+    if (ctx->axle.on && e->nev) PetscCall(RollerAxleModeOperators(ctx, &M, &C, &K));
     if (e->nev) PetscCall(RollerSquealOperators(ctx, &st, M, C, K, &Mr, &Cr, &Kr, &kept, &nstick));
     steady = st.u; /* kept for the shapes' file */
     st.u   = NULL;
@@ -143,7 +153,7 @@ PetscErrorCode RollerModesSolve(Roller ctx)
     M = Mr;
     C = Cr;
     K = Kr;
-  }
+  } else if (ctx->axle.on) PetscCall(RollerAxleModeOperators(ctx, &M, &C, &K));
   PetscCall(RollerPEPCreate(ctx->comm, M, C, K, e->nev, nstick ? PETSC_TRUE : PETSC_FALSE, &pep));
   PetscCall(RollerPEPSolve(pep, &e->n));
   PetscCall(RollerModeClassifierCreate(ctx, &cls));
@@ -152,17 +162,29 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   PetscCall(VecDuplicateVecs(ctx->ops.coordinates, e->n, &xr));
   PetscCall(VecDuplicateVecs(ctx->ops.coordinates, e->n, &xi));
   PetscCall(VecDuplicate(ctx->ops.coordinates, &w));
+  if (ctx->axle.on) {
+    PetscCall(RollerAxleModeVec(w, &ar));
+    PetscCall(VecDuplicate(ar, &ai));
+    PetscCall(PetscMalloc1(2 * e->n, &hub));
+  }
   for (PetscInt j = 0; j < e->n; ++j) {
     RollerWave wave;
+    PetscReal  qr[2] = {0, 0}, qi[2] = {0, 0}, f[2] = {0, 0};
 
     if (kept) { /* the reduced vector into the full space; the active nodes' normal dofs are 0 */
       if (!zr) PetscCall(MatCreateVecs(M, &zr, &zi));
       PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], zr, zi));
-      PetscCall(KeptToFull(kept, zr, xr[j]));
-      PetscCall(KeptToFull(kept, zi, xi[j]));
-    } else PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], xr[j], xi[j]));
+      PetscCall(KeptToFull(kept, zr, ar ? ar : xr[j]));
+      PetscCall(KeptToFull(kept, zi, ai ? ai : xi[j]));
+    } else PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], ar ? ar : xr[j], ai ? ai : xi[j]));
+    if (ar) { /* the body's part, and the hub's */
+      PetscCall(RollerAxleModeSplit(ar, xr[j], qr));
+      PetscCall(RollerAxleModeSplit(ai, xi[j], qi));
+    }
     PetscCall(RollerPEPGetError(pep, j, &e->error[j]));
-    PetscCall(Normalize(xr[j], xi[j], w));
+    PetscCall(Normalize(xr[j], xi[j], w, f));
+    if (hub) /* scaled like the body: |q f| */
+      for (PetscInt k = 0; k < 2; ++k) hub[2 * j + k] = PetscSqrtReal((qr[k] * qr[k] + qi[k] * qi[k]) * (f[0] * f[0] + f[1] * f[1]));
     PetscCall(RollerModeClassify(cls, xr[j], xi[j], &e->order[j], &wave));
     e->wave[j] = wave;
   }
@@ -175,7 +197,7 @@ PetscErrorCode RollerModesSolve(Roller ctx)
         PetscPrintf(ctx->comm, "  %4" PetscInt_FMT " %14.6e %14.8f %12.6f %5" PetscInt_FMT " %9s %9.1e\n", j, (double)e->re[j], (double)e->im[j], e->im[j] > 0 ? (double)(2 * PETSC_PI / e->im[j]) : 0.0, e->order[j], RollerWaves[e->wave[j]], (double)e->error[j]));
   }
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_OUTPUT]));
-  if (e->csv[0]) PetscCall(WriteCsv(ctx));
+  if (e->csv[0]) PetscCall(WriteCsv(ctx, hub));
   if (e->output[0]) PetscCall(RollerModeShapesWrite(ctx, e->output, e->n, e->re, e->im, e->order, xr, xi, steady));
   PetscCall(PetscLogStagePop());
   PetscCall(VecDestroyVecs(e->n, &xr));
@@ -184,6 +206,9 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   PetscCall(VecDestroy(&steady));
   PetscCall(VecDestroy(&zr));
   PetscCall(VecDestroy(&zi));
+  PetscCall(VecDestroy(&ar));
+  PetscCall(VecDestroy(&ai));
+  PetscCall(PetscFree(hub));
   PetscCall(ISDestroy(&kept));
   PetscCall(RollerModeClassifierDestroy(&cls));
   PetscCall(RollerPEPDestroy(&pep));

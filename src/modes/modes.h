@@ -7,6 +7,7 @@
      steady.c     the steady rolling/sliding state pressed by the sheet (lab frame), one static contact problem
      steady_coulomb.c  its contact law: normal LCP and tangential stick/slip active set, alternated
      squeal.c     the linearization about it: contact, friction (non-symmetric), velocity weakening (damping)
+     axle_modes.c with -axle: the hub's (Y, phi) bordering M, C, K; the steady state at -nip_force
      modes.c      -modes: the options, the solve, the eigenvalue CSV and the shapes (io/output_modes.c) */
 #ifndef ROLLER_MODES_H
 #define ROLLER_MODES_H
@@ -54,6 +55,8 @@ typedef struct {
   VecScatter           scatter;
 } RollerSteady;
 PETSC_INTERN PetscErrorCode RollerSteadySolve(Roller, Mat, RollerSteady *);                                                                    /* with K_lab */
+PETSC_INTERN PetscErrorCode RollerSteadyKSPCreate(Roller, Mat, KSP *);                                                                         /* K_lab's direct solver, for repeated solves */
+PETSC_INTERN PetscErrorCode RollerSteadySolveWith(Roller, KSP, RollerSteady *);                                                                /* with that solver (factored once) */
 PETSC_INTERN PetscErrorCode RollerSteadyAngularDerivative(const RollerSteady *, PetscReal, PetscInt, PetscInt[3], PetscReal[3], PetscReal[3]); /* the slip's d_phi and point weights, upstream for omega */
 PETSC_INTERN PetscErrorCode RollerSteadyDestroy(RollerSteady *, PetscBool);
 PETSC_INTERN PetscErrorCode RollerSteadyReport(Roller, const RollerSteady *); /* printed, and -modes_steady_csv */
@@ -65,6 +68,14 @@ PETSC_INTERN PetscErrorCode RollerSteadyCoulomb(MPI_Comm, PetscInt, const PetscR
    normal ones (and after them, on the last rank, one multiplier per stick node: their number), and the map of a
    reduced vector's first part back to the full space */
 PETSC_INTERN PetscErrorCode RollerSquealOperators(Roller, const RollerSteady *, Mat, Mat, Mat, Mat *, Mat *, Mat *, IS *, PetscInt *);
+
+/* axle_modes.c: -modes with -axle (docs/squeal.md section 3.1): the hub's lab-frame (Y, phi) appended to M, C, K on the
+   last rank (the body's indices unchanged); the steady state at the hub's height that gives -nip_force (and q = Y, phi
+   of it, the body's state with the hub's rigid motion); an augmented vector's parts and one with the body's layout */
+PETSC_INTERN PetscErrorCode RollerAxleModeOperators(Roller, Mat *, Mat *, Mat *);
+PETSC_INTERN PetscErrorCode RollerAxleSteadySolve(Roller, Mat, RollerSteady *, PetscReal[2]);
+PETSC_INTERN PetscErrorCode RollerAxleModeSplit(Vec, Vec, PetscReal[2]);
+PETSC_INTERN PetscErrorCode RollerAxleModeVec(Vec, Vec *);
 
 /* modes.c */
 PETSC_INTERN PetscErrorCode RollerModesSetFromOptions(Roller);

@@ -233,25 +233,44 @@ static PetscErrorCode SolveContact(Roller ctx, Vec uf, PetscReal g, PetscBool fr
   PetscFunctionReturn(0);
 }
 
+/* The direct solver of K_lab (-modes_steady_ksp_*), factored at its first solve */
+PetscErrorCode RollerSteadyKSPCreate(Roller ctx, Mat Klab, KSP *ksp)
+{
+  PetscFunctionBeginUser;
+  PetscCall(KSPCreate(ctx->comm, ksp));
+  PetscCall(KSPSetOperators(*ksp, Klab, Klab));
+  PetscCall(RollerDirectSolverDefaults(*ksp, PCLU));
+  PetscCall(KSPSetOptionsPrefix(*ksp, "modes_steady_"));
+  PetscCall(KSPSetFromOptions(*ksp));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode RollerSteadySolve(Roller ctx, Mat Klab, RollerSteady *st)
+{
+  KSP ksp;
+
+  PetscFunctionBeginUser;
+  PetscCall(RollerSteadyKSPCreate(ctx, Klab, &ksp));
+  PetscCall(RollerSteadySolveWith(ctx, ksp, st));
+  PetscCall(KSPDestroy(&ksp));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerSteadySolveWith(Roller ctx, KSP ksp, RollerSteady *st)
 {
   const PetscReal g = ctx->obstacle.depth - ctx->mesh.r_outer, w = ctx->rotation.omega, rho = ctx->material.density;
   const PetscBool friction = ctx->obstacle.friction > 0 || ctx->obstacle.friction_static > 0 ? PETSC_TRUE : PETSC_FALSE;
   const PetscReal vs       = PetscMax(PetscAbsReal(w) * ctx->mesh.r_outer, PetscAbsReal(ctx->obstacle.sheet_speed)) / ctx->mesh.r_outer > 0 ? PetscMax(PetscAbsReal(w) * ctx->mesh.r_outer, PetscAbsReal(ctx->obstacle.sheet_speed)) / ctx->mesh.r_outer : 1.0; /* slips over vs: lengths */
   PetscReal       reach = PetscMax(ctx->obstacle.depth, 1e-3 * ctx->mesh.r_outer), v0 = w * ctx->mesh.r_outer - ctx->obstacle.sheet_speed;
   PetscReal       range[2]; /* of mu(v): its largest the scale of mu's change */
-  KSP             ksp;
+  Mat             Klab;
   Vec             uf;
 
   PetscFunctionBeginUser;
   RollerFrictionRange(&ctx->obstacle, range);
   PetscCall(PetscMemzero(st, sizeof(*st)));
   st->difference = ctx->eig.slip_difference;
-  PetscCall(KSPCreate(ctx->comm, &ksp));
-  PetscCall(KSPSetOperators(ksp, Klab, Klab));
-  PetscCall(RollerDirectSolverDefaults(ksp, PCLU));
-  PetscCall(KSPSetOptionsPrefix(ksp, "modes_steady_"));
-  PetscCall(KSPSetFromOptions(ksp));
+  PetscCall(KSPGetOperators(ksp, &Klab, NULL));
   PetscCall(MatCreateVecs(Klab, &uf, &st->u));
   PetscCall(VecCopy(ctx->ops.L_centrifugal, st->u));
   PetscCall(VecScale(st->u, rho * w * w));
@@ -325,7 +344,6 @@ PetscErrorCode RollerSteadySolve(Roller ctx, Mat Klab, RollerSteady *st)
     PetscCall(RollerSteadyDestroy(st, PETSC_FALSE));
   }
   PetscCall(VecDestroy(&uf));
-  PetscCall(KSPDestroy(&ksp));
   PetscFunctionReturn(0);
 }
 
