@@ -101,14 +101,21 @@ def fundamental(samples, rate, fmin=5.0, fmax=2000.0):
     return math.nan
 
 
-def lock_in(t, y, f, periods=None):
+def lock_in(t, y, f, periods=None, free=()):
     """(amplitude, phase) of y at the frequency f (cycles per unit time) over the last whole periods (all of them by
-    default): the least-squares fit of a + b cos + c sin (phase of y = A sin(2 pi f t + phase))."""
+    default): the least-squares fit of a + b cos + c sin (phase of y = A sin(2 pi f t + phase)), beside the free
+    oscillations `free` [(frequency, growth rate), ...] (each a cos and a sin times its exponential, amplitudes
+    fitted: a decaying start-up transient near f would leak into the line otherwise)."""
     t, y = np.asarray(t, float), np.asarray(y, float)
     T = 1.0 / f
     n = int((t[-1] - t[0]) / T) if periods is None else int(periods)
     m = t >= t[-1] - n * T
+    tm = t[m] - t[m][0]
     W = 2 * math.pi * f
-    A = np.stack([np.ones(m.sum()), np.cos(W * t[m]), np.sin(W * t[m])], 1)
-    _, b, c = np.linalg.lstsq(A, y[m], rcond=None)[0]
+    basis = [np.ones(m.sum()), np.cos(W * t[m]), np.sin(W * t[m])]
+    for fr, g in free:
+        e = np.exp(g * tm)
+        basis += [e * np.cos(2 * math.pi * fr * tm), e * np.sin(2 * math.pi * fr * tm)]
+    coef = np.linalg.lstsq(np.stack(basis, 1), y[m], rcond=None)[0]
+    b, c = coef[1], coef[2]
     return float(math.hypot(b, c)), float(math.atan2(b, c))

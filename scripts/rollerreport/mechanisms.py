@@ -137,7 +137,8 @@ def stick_slip(ctx):
 
 def forced_response(folder, scene):
     """The forced run (forced.csv: the scene with -drive_ripple A -drive_ripple_frequency F, scene.json's "ripple"):
-    the hub rate's amplitude at F over the last third (whole periods; rollerreport.cycle.lock_in) against the 1-DOF
+    the hub rate's amplitude at F over the last half (whole periods; rollerreport.cycle.lock_in, beside the drive's
+    own decaying oscillation at the 1-DOF's frequency and rate) against the 1-DOF
     closed form rollerref.forced.one_dof (with the friction's slope about steady sliding, c_f); stick_nodes over that
     window (stick-slip: the closed form, a linearization about sliding, does not hold). None without forced.csv."""
     from . import cycle
@@ -147,8 +148,10 @@ def forced_response(folder, scene):
         return None
     d = _monitor(folder, "forced.csv", ["t", "hub_rate", "stick_nodes"])
     t, f, a = d["t"], float(rip["frequency"]), float(rip["amplitude"])
-    keep = t >= t[-1] - max((t[-1] - t[0]) / 3, 1.0 / f)
-    amp, phase = cycle.lock_in(t[keep], d["hub_rate"][keep], f)
+    keep = t >= t[-1] - max((t[-1] - t[0]) / 2, 1.0 / f)
+    lin = scene.get("onedof") or {}
+    free = [(lin["frequency"], lin["growth_rate"])] if lin.get("frequency") else []  # the drive's own, decaying
+    amp, phase = cycle.lock_in(t[keep], d["hub_rate"][keep], f, free=free)
     out = {"frequency": f, "ripple": a, "rate_amplitude": amp, "phase": phase, "t_window": [float(t[keep][0]), float(t[-1])],
            "stick_nodes_max": int(np.max(d["stick_nodes"][keep])) if "stick_nodes" in d else None}
     ref = rip.get("one_dof")
