@@ -2,7 +2,7 @@
 parameters about the scene, each case classified, the fraction that squeaks with its 95 % confidence interval (Wilson),
 by mechanism, and a ranking of the parameters that matter.
 
-The spread (issue 38; /work sources in docs/squeal.md 9.4): kinetic friction of rubber on paper 0.65-1.4 and the static
+The spread (issue 38; its sources in docs/squeal.md 9.4): kinetic friction of rubber on paper 0.65-1.4 and the static
 over the kinetic 1.0-1.5, nip force 0.8-2.5 N/cm, loss factor 0.05-0.3, surface speed 0.12-0.36 m/s, drive stiffness
 +-50 %. Each range is applied about the scene as a factor, the range divided by its geometric centre (the scene is
 taken as the middle roller: a non-dimensional scene has no N/cm), except the static-over-kinetic ratio, whose excess
