@@ -79,6 +79,12 @@ lin = sc["onedof"]
 c.check(sc["axle"] and sc["drive_started"] == 25.0 and lin["stable"] and abs(lin["growth_rate"] / -0.007939 - 1) < 1e-3
         and lin["start_from_rest"] == "cycle", f"scene.json on the axle: the 1-DOF closed form {lin['growth_rate']:+.6f} (docs/validation.md "
         f"10.5: -0.007939), its start from rest {lin['start_from_rest']}, the drive started at {sc['drive_started']}")
+given = run.scene_json("axle_bistable", opts, "nd", None, seconds_per_unit=0.003)
+c.check(given["seconds_per_unit"] == 0.003 and "given" in given["time_scale_note"]
+        and abs(given["newtons_per_metre_per_unit"] / (1200.0 * (0.025 / 0.003) ** 2 * 0.025) - 1) < 1e-12
+        and abs(sc["newtons_per_metre_per_unit"] / (1200.0 * 23.6 ** 2 / (10 / 2.98) * 0.025) - 1) < 1e-12,
+        f"the time scale given (--seconds-per-unit 0.003) or the printer roller's ({sc['seconds_per_unit']:.5g} s per unit); the force "
+        f"scale rho_ref (L/s)^2 L: {given['newtons_per_metre_per_unit']:.5g}, {sc['newtons_per_metre_per_unit']:.5g} N/m per unit")
 r = subprocess.run([sys.executable, "-m", "rollerreport", d], capture_output=True, text=True)
 out = json.load(open(os.path.join(d, "report.json"))) if r.returncode == 0 else {}
 mech = {m["kind"]: m for m in out.get("mechanisms", [])}
