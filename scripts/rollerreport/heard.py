@@ -216,7 +216,9 @@ def write_cycle(folder, scene, s, pitch_hz, monitor="stickslip.csv", surface="st
     line_db = line_level(ts, p, pitch_hz)
     sound.spectrogram_png(j("spectrogram.png"), wav["samples"], rate, pitch_hz,
                           f"The sound at {lis['distance_m']:g} m ({lis['width_m'] * 1e3:g} mm wide roller, "
-                          f"{lis['angle_deg']:g} deg): Lmax {lmax:.1f} dB, {lmax_a:.1f} dB(A)")
+                          f"{lis['angle_deg']:g} deg): Lmax {lmax:.1f} dB, {lmax_a:.1f} dB(A)",
+                          fmax=min(pr["cutoff_hz"], 40 * pitch_hz),  # the cycle's harmonics, resolved to a quarter pitch
+                          nfft=min(2 ** int(math.ceil(math.log2(4 * rate / pitch_hz))), 2 ** int(math.log2(max(len(samples) // 4, 64)))))
     levels = {"surface": radiation.level_db(pr["p_surface"], ts)[1], "force": radiation.level_db(pr["p_force"], ts)[1]}
     note = (f"the run's own level (no seed): the surface radiates {levels['surface']:.1f} dB SPL, the friction force's "
             f"dipole {levels['force']:.1f} dB SPL (cos of the listener's angle from the sheet, "
