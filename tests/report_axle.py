@@ -2,7 +2,7 @@
 stable (jobs/axle_bistable.yaml; docs/validation.md 10.5, docs/squeal.md 9.4): `python3 -m rollerreport.run` with the
 listener at 45 degrees from the sheet, the motor's ripple for the forced run (a start sliding) and 64 propensity
 cases, then every file is read:
-- report.json: verdict "squeals"; stick-slip run and squeaking; flutter "not run: -modes does not take -axle" with the
+- report.json: verdict "squeals", by stick-slip (report.md says so); stick-slip run and squeaking; flutter "not run: -modes does not take -axle" with the
   1-DOF closed form (stable) as its stated stand-in;
 - stickslip.csv read here: the period of hub_rate - omega over its last four upward crossings (as
   tests/axle_stickslip.py measures it), the patch stuck in each of those periods; the report's pitch within 0.5 % of
@@ -37,9 +37,11 @@ rep = json.load(open(os.path.join(out, "report.json")))
 sc = json.load(open(os.path.join(out, "scene.json")))
 mech = {m["kind"]: m for m in rep["mechanisms"]}
 ss, fl, fo = mech["stick-slip"], mech["flutter"], mech["forced"]
-c.check(rep["verdict"] == "squeals" and ss["status"] == "run" and ss["squeals"] is True
+md = open(os.path.join(out, "report.md")).read()
+c.check(rep["verdict"] == "squeals" and rep["squeals_by"] == ["stick-slip"] and "**squeals** by stick-slip" in md
+        and ss["status"] == "run" and ss["squeals"] is True
         and fl["status"] == "not run: -modes does not take -axle" and sc["onedof"]["stable"] and "stand-in" in fl["evidence"][0],
-        f"verdict {rep['verdict']}: stick-slip {ss['status']}, squeals {ss['squeals']}; flutter {fl['status']}; "
+        f"verdict {rep['verdict']} by {rep['squeals_by']}: stick-slip {ss['status']}, squeals {ss['squeals']}; flutter {fl['status']}; "
         f"the 1-DOF closed form stable ({sc['onedof']['growth_rate']:+.6f})")
 
 # the limit cycle read here from the run's own CSV

@@ -90,7 +90,7 @@ out = json.load(open(os.path.join(d, "report.json"))) if r.returncode == 0 else 
 mech = {m["kind"]: m for m in out.get("mechanisms", [])}
 s = sc["seconds_per_unit"]
 ss = mech.get("stick-slip", {})
-c.check(out.get("verdict") == "squeals" and ss.get("squeals") is True and abs(ss["frequency_hz"] * s * cyc["period"] - 1) < 1e-9
+c.check(out.get("verdict") == "squeals" and out.get("squeals_by") == ["stick-slip"] and ss.get("squeals") is True and abs(ss["frequency_hz"] * s * cyc["period"] - 1) < 1e-9
         and mech["flutter"]["status"] == "not run: -modes does not take -axle" and "stand-in" in mech["flutter"]["evidence"][0]
         and mech["forced"]["status"].startswith("not run"),
         f"report.json: verdict {out.get('verdict')}, stick-slip at {ss.get('frequency_hz', 0):.3f} Hz; flutter {mech.get('flutter', {}).get('status')} "

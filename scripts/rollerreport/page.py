@@ -28,7 +28,9 @@ def write(folder, out, name="report.html"):
     scene = out.get("scene", {})
     body = [f"<h1>Squeak report: {_e(scene.get('name', ''))}</h1>"]
     word = out.get("verdict", "")
+    by = out.get("squeals_by") or []
     body.append(f"<h2>Verdict</h2><p>The roller <b class='{'yes' if word == 'squeals' else ''}'>{_e(word)}</b>"
+                + (f" by {_e(' and '.join(by))}" if by else "")
                 + ("" if out.get("verdict_complete") else " &mdash; from the mechanisms that ran; not every mechanism "
                    "ran (below)") + ".</p>")
     rows = ["<tr><th>mechanism</th><th>status</th><th>squeals</th><th>frequency (Hz)</th><th>growth (1/s)</th>"

@@ -458,7 +458,9 @@ def write(folder, parts=PARTS):
     out["wav_seconds"] = snd["wav_seconds"] if snd else 0.0
     out["wav_source"] = snd["wav_source"] if snd else None
     out["propensity"] = mechanisms.propensity(folder)
-    md += ["## Verdict", "", f"The roller **{out['verdict']}**" + ("" if out["verdict_complete"] else
+    by = [m["kind"] for m in out["mechanisms"] if m["status"] == "run" and m["squeals"]]
+    out["squeals_by"] = by
+    md += ["## Verdict", "", f"The roller **{out['verdict']}**" + (f" by {' and '.join(by)}" if by else "") + ("" if out["verdict_complete"] else
            " (from the mechanisms that ran: " + ", ".join(m["kind"] for m in out["mechanisms"] if m["status"] == "run")
            + "; not run: " + "; ".join(f"{m['kind']} ({m['status'][9:]})" for m in out["mechanisms"] if m["status"] != "run")
            + ")") + ".", ""]
