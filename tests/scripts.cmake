@@ -19,3 +19,8 @@ roller_test(scripts_packages scripts_packages.py LABELS quick TIMEOUT 300)
 # report.html in headless Chromium (scripts/install-deps.sh installs it): its audio element loads squeal.wav with the
 # WAV's duration, every image loads, every link is a relative file of the folder.
 roller_test(report_page report_page.py LABELS quick TIMEOUT 300)
+# The report's stick-slip, forced and propensity mechanisms (scripts/rollerreport cycle, onedof, propensity;
+# docs/squeal.md 9.4) on synthetic monitor CSVs made from rollerref's 1-DOF of jobs/axle_bistable.yaml: the limit
+# cycle's period, amplitude and stick in every period, the report's verdict, squeal.wav's length, pitch (within 2 %)
+# and sustained envelope, the force dipole's closed form, the forced lock-in, the Latin hypercube and Wilson's interval.
+roller_test(rollerreport_mechanisms rollerreport_mechanisms.py LABELS quick TIMEOUT 300)

@@ -6,11 +6,14 @@ Modules:
 - run: the driver: the parts (CEA, map, transients, sound, animation, page), each runnable alone, journalled
   (journal) so that a re-run reuses what the folder holds, with their cost;
 - mechanisms: flutter, stick-slip, forced resonance, each a function of the folder returning a dict;
+- cycle: the limit cycle of a monitor series (stick in every period), the pitch of a periodic sound, the lock-in;
+- onedof: a scene on -axle as rollerref's 1-DOF (the CEA's stated stand-in, the forced closed form);
+- propensity: the odds over the real spread (Latin hypercube, Wilson's interval, the ranking);
 - radiation: the sound pressure at a listener from the roller's surface velocity (2-D cylinder, finite width);
 - sound: the WAV of the simulated time at a stated level, the loudest line, A-weighting, the spectrogram;
 - animation: the roller deforming, coloured by its velocity, with the stick and slip zones on the patch;
 - page: report.html; report: the verdict, report.md and report.json; lines: the mesh's lines;
 - spectrum, squeal_fit: the spectra and the whirl fits the tests and rollerplots use too.
 """
-__all__ = ["spectrum", "squeal_fit", "lines", "sound", "radiation", "animation", "mechanisms", "journal", "page",
-           "report", "run"]
+__all__ = ["spectrum", "squeal_fit", "lines", "sound", "radiation", "animation", "mechanisms", "cycle", "onedof",
+           "propensity", "journal", "page", "report", "run"]

@@ -12,9 +12,10 @@ import numpy as np
 
 # what each mechanism needs of the roller that main does not have yet (the branches that bring it)
 NEEDS = {
-    "stick-slip": (["-axle"], "the start from rest on the real axle (-axle, branch axle) and transients long enough to "
-                   "reach a limit cycle (-rom, branch rom)"),
-    "forced": (["-drive_ripple"], "the drive's ripple swept over the audible modes (-axle -drive_ripple, branch axle)"),
+    "stick-slip": (["-axle"], "stickslip.csv, the scene's start from rest on the axle run to its limit cycle "
+                   "(rollerreport.run runs it for a scene with axle: true)"),
+    "forced": (["-drive_ripple"], "forced.csv, the scene driven with the motor's ripple (rollerreport.run --ripple "
+               "AMPLITUDE,FREQUENCY on a scene with axle: true)"),
 }
 PROPENSITY_RANGES = {  # issue 38: the spread of real rollers
     "friction_kinetic": [0.65, 1.4], "friction_static_over_kinetic": [1.0, 1.5], "nip_force_N_per_cm": [0.8, 2.5],
@@ -32,6 +33,12 @@ def flutter(ctx):
     transient's fit of the seed's response."""
     v = ctx.get("verdict")
     if v is None:
+        if ctx.get("scene", {}).get("axle"):
+            lin = ctx.get("onedof")
+            return not_run("flutter", "-modes does not take -axle", [] if not lin else [
+                f"stand-in: the 1-DOF closed form (rollerref.stickslip.linear_stability) of the scene's drive: steady "
+                f"sliding {'stable' if lin['stable'] else 'UNSTABLE'}, growth rate {lin['growth_rate']:+.4g} per unit time at "
+                f"{lin['frequency']:.4g} cycles per unit time"])
         return not_run("flutter", "no CEA (modes.csv missing or its run failed)")
     s = v["seconds_per_unit"]
     ev = [f"CEA: the least stable oscillating mode (order {v['order']}, {v['wave']}) grows at {v['growth_rate'] / s:+.4g} /s "
@@ -68,39 +75,116 @@ def limit_cycle(t, y, tail=1.0 / 3):
     return {"frequency": f, "amplitude": 0.5 * float(np.ptp(yt)), "growth_rate": envelope_rate(yt, rate, f) if f > 0 else math.nan}
 
 
+def _monitor(folder, name, columns):
+    """{column: array} of a monitor CSV of the folder (row 0, the state before the first contact solve, left out)."""
+    from .report import num, read_rows
+
+    rows = read_rows(os.path.join(folder, name))[1:]
+    return {c: np.array([num(r.get(c)) for r in rows]) for c in columns if rows and c in rows[0]}
+
+
+def stick_slip_cycle(folder, scene):
+    """The limit cycle of the stick-slip run (stickslip.csv: the scene's start from rest on -axle, roller
+    -monitor_csv): rollerreport.cycle.detect on hub_rate (the hub's speed) after the motor's ramp (scene.json's
+    "drive_started", else the last two thirds), with stick_nodes; None without stickslip.csv."""
+    from . import cycle
+
+    if not os.path.exists(os.path.join(folder, "stickslip.csv")):
+        return None
+    d = _monitor(folder, "stickslip.csv", ["t", "hub_rate", "stick_nodes", "slip_nodes", "friction_force"])
+    column = "hub_rate" if "hub_rate" in d else "friction_force"
+    t = d["t"]
+    t_min = scene.get("drive_started")
+    t_min = float(t_min) if t_min is not None else t[0] + (t[-1] - t[0]) / 3
+    cyc = cycle.detect(t, d[column], d.get("stick_nodes"), t_min=t_min)
+    cyc.update(column=column, t_min=t_min, t0=float(t[0]), t1=float(t[-1]))
+    return cyc
+
+
 def stick_slip(ctx):
-    """Stick-slip: the start from rest on the real axle run to its limit cycle (stickslip.csv), and disturbances of
-    growing size about the steady state. Today: the map's divergences (a real positive eigenvalue: the onset of
-    stick-slip predicted by the linearization) are evidence, not a result."""
+    """Stick-slip: the start from rest on the real axle run to its limit cycle (stickslip.csv). Squeaks when the
+    cycle is sustained and the patch sticks in every period (rollerreport.cycle.detect); the map's divergences and the
+    1-DOF closed form are evidence beside it."""
     ev = [f"map: a real positive eigenvalue (divergence, the stick-slip onset of the linearization) at {d}" for d in
           ctx.get("divergent", [])]
     v = ctx.get("verdict") or {}
     if v.get("diverges"):
         ev.append(f"CEA: the scene's steady state diverges (real eigenvalue {v['real_growth_rate']:+.4g})")
-    path = os.path.join(ctx["folder"], "stickslip.csv")
-    if not os.path.exists(path):
+    cyc = ctx.get("stick_slip_cycle")
+    if cyc is None:
         return not_run("stick-slip", NEEDS["stick-slip"][1], ev)
-    from .report import num, read_rows
-
-    rows = read_rows(path)[1:]
-    column = next((c for c in ("hub_rate", "friction_force", "alpha") if rows and c in rows[0]), None)
-    t = np.array([num(r["t"]) for r in rows])
-    cyc = limit_cycle(t, [num(r[column]) for r in rows])
     s = ctx.get("seconds_per_unit", 1.0)
-    sustained = abs(cyc["growth_rate"]) < 0.01 * 2 * math.pi * cyc["frequency"] and cyc["amplitude"] > 0
-    ev.append(f"start from rest (stickslip.csv, {column}): the last third oscillates at {cyc['frequency'] / s:.1f} Hz, "
-              f"amplitude {cyc['amplitude']:.4g}, envelope {cyc['growth_rate'] / s:+.3g} /s")
-    return {"kind": "stick-slip", "status": "run", "squeals": bool(sustained), "frequency_hz": cyc["frequency"] / s,
-            "growth_rate_per_s": None, "limit_cycle_amplitude": cyc["amplitude"], "limit_cycle_column": column,
-            "spl_db": None, "evidence": ev}
+    ev.append(f"start from rest (stickslip.csv, {cyc['column']} from t = {cyc['t_min']:.4g} to {cyc['t1']:.4g}): "
+              + cyc["why"] + (": a sustained stick-slip limit cycle" if cyc["stick_slip"] else
+                              ": a sustained oscillation without stick" if cyc["sustained"] else ": no sustained cycle"))
+    lin = ctx.get("onedof")
+    if lin:
+        ev.append(f"1-DOF closed form (rollerref, the stand-in for the CEA while -modes does not take -axle): steady "
+                  f"sliding {'stable' if lin['stable'] else 'UNSTABLE'}, growth rate {lin['growth_rate']:+.4g} per unit time"
+                  + (": the cycle coexists with a stable steady state (bistable)" if lin["stable"] and cyc["stick_slip"] else ""))
+        if lin.get("start_from_rest"):
+            ev.append(f"1-DOF start from rest (rollerref.basin.classify): {lin['start_from_rest']}")
+    ok = math.isfinite(cyc["frequency"])
+    snd = ctx.get("stick_slip_sound") or {}
+    return {"kind": "stick-slip", "status": "run", "squeals": bool(cyc["stick_slip"]),
+            "frequency_hz": cyc["frequency"] / s if ok else None, "period": cyc["period"] if ok else None,
+            "growth_rate_per_s": cyc["growth_rate"] / s if ok else None,
+            "limit_cycle_amplitude": cyc["amplitude"] if ok else None, "limit_cycle_column": cyc["column"],
+            "stick_every_period": cyc["stick_every_period"], "sustained": cyc["sustained"],
+            "periods_used": cyc["periods_used"], "spl_db": snd.get("spl_db"),
+            "spl_note": snd.get("level_note") if snd else None, "evidence": ev}
+
+
+def forced_response(folder, scene):
+    """The forced run (forced.csv: the scene with -drive_ripple A -drive_ripple_frequency F, scene.json's "ripple"):
+    the hub rate's amplitude at F over the last half (whole periods; rollerreport.cycle.lock_in, beside the drive's
+    own decaying oscillation at the 1-DOF's frequency and rate) against the 1-DOF
+    closed form rollerref.forced.one_dof (with the friction's slope about steady sliding, c_f); stick_nodes over that
+    window (stick-slip: the closed form, a linearization about sliding, does not hold). None without forced.csv."""
+    from . import cycle
+
+    rip = scene.get("ripple") or {}
+    if not os.path.exists(os.path.join(folder, "forced.csv")) or not rip.get("frequency"):
+        return None
+    d = _monitor(folder, "forced.csv", ["t", "hub_rate", "stick_nodes"])
+    t, f, a = d["t"], float(rip["frequency"]), float(rip["amplitude"])
+    keep = t >= t[-1] - max((t[-1] - t[0]) / 2, 1.0 / f)
+    lin = scene.get("onedof") or {}
+    free = [(lin["frequency"], lin["growth_rate"])] if lin.get("frequency") else []  # the drive's own, decaying
+    amp, phase = cycle.lock_in(t[keep], d["hub_rate"][keep], f, free=free)
+    out = {"frequency": f, "ripple": a, "rate_amplitude": amp, "phase": phase, "t_window": [float(t[keep][0]), float(t[-1])],
+           "stick_nodes_max": int(np.max(d["stick_nodes"][keep])) if "stick_nodes" in d else None}
+    ref = rip.get("one_dof")
+    if ref:
+        out["one_dof_rate_amplitude"] = ref["rate_amplitude"]
+        out["ratio"] = amp / ref["rate_amplitude"] if ref["rate_amplitude"] else math.nan
+    return out
 
 
 def forced(ctx):
-    """Forced resonance: the drive's ripple swept over the audible modes, the response's peak with and without
-    stick-slip (forced.csv)."""
-    if not os.path.exists(os.path.join(ctx["folder"], "forced.csv")):
+    """Forced resonance: the drive's ripple, the hub's response at the ripple's frequency (forced.csv) against the 1-DOF
+    closed form, and its level at the listener."""
+    r = ctx.get("forced_response")
+    if r is None:
         return not_run("forced", NEEDS["forced"][1])
-    return not_run("forced", "forced.csv present but its analysis is not built")
+    s = ctx.get("seconds_per_unit", 1.0)
+    snd = ctx.get("forced_sound") or {}
+    ev = [f"ripple {r['ripple']:.4g} rad at {r['frequency']:.5g} per unit time ({r['frequency'] / s:.2f} Hz): the hub rate's "
+          f"amplitude at it {r['rate_amplitude']:.5g} over t = {r['t_window'][0]:.4g}..{r['t_window'][1]:.4g} (forced.csv)"]
+    if "one_dof_rate_amplitude" in r:
+        ev.append(f"1-DOF closed form (rollerref.forced.one_dof, the friction's slope about steady sliding): "
+                  f"{r['one_dof_rate_amplitude']:.5g} ({100 * (r['ratio'] - 1):+.1f} %)")
+    if r.get("stick_nodes_max"):
+        ev.append(f"the patch sticks in the window (stick_nodes up to {r['stick_nodes_max']}): the response is not the "
+                  "linear one about sliding")
+    if snd:
+        ev.append(f"the radiated level at the ripple's frequency (within 20 %): {snd.get('spl_line_db', math.nan):.1f} dB SPL")
+    # squeals: the ripple's line is audible (above 0 dB SPL) at a frequency a listener hears (>= 20 Hz)
+    spl = snd.get("spl_line_db")
+    audible = spl is not None and math.isfinite(spl) and spl > 0 and r["frequency"] / s >= 20.0
+    return {"kind": "forced", "status": "run", "squeals": bool(audible), "frequency_hz": r["frequency"] / s,
+            "growth_rate_per_s": None, "limit_cycle_amplitude": None, "response_rate_amplitude": r["rate_amplitude"],
+            "spl_db": spl, "evidence": ev}
 
 
 MECHANISMS = [flutter, stick_slip, forced]
@@ -119,9 +203,14 @@ def verdict_word(mechs):
 
 
 def propensity(folder):
-    """The odds over the real spread: not run until the physics of the axle, the Maxwell rubber and the reduced
-    transient are merged (the cases would be classified by the CEA and the reduced transient)."""
+    """The odds over the real spread: propensity.json (rollerreport.propensity, the driver's part) when the folder
+    holds it, else "not run" with what it needs."""
+    path = os.path.join(folder, "propensity.json")
+    if os.path.exists(path):
+        import json
+
+        with open(path) as f:
+            return json.load(f)
     return {"cases": 0, "fraction": None, "by_mechanism": {}, "ranges": PROPENSITY_RANGES,
-            "status": "not run: the nip force, the drive and bracket stiffness need -axle (branch axle), the loss factor "
-                      "over the band -rubber maxwell (branch maxwell), the classification of each case the reduced "
-                      "transient (-rom, branch rom)"}
+            "status": "not run: propensity.json missing (rollerreport.run runs the study for a scene with axle: true: "
+                      "rollerreport.propensity)"}

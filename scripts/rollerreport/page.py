@@ -28,7 +28,9 @@ def write(folder, out, name="report.html"):
     scene = out.get("scene", {})
     body = [f"<h1>Squeak report: {_e(scene.get('name', ''))}</h1>"]
     word = out.get("verdict", "")
+    by = out.get("squeals_by") or []
     body.append(f"<h2>Verdict</h2><p>The roller <b class='{'yes' if word == 'squeals' else ''}'>{_e(word)}</b>"
+                + (f" by {_e(' and '.join(by))}" if by else "")
                 + ("" if out.get("verdict_complete") else " &mdash; from the mechanisms that ran; not every mechanism "
                    "ran (below)") + ".</p>")
     rows = ["<tr><th>mechanism</th><th>status</th><th>squeals</th><th>frequency (Hz)</th><th>growth (1/s)</th>"
@@ -68,7 +70,16 @@ def write(folder, out, name="report.html"):
     if has("map.png"):
         body.append("<h2>The map</h2><img src='map.png' alt='the squeal map'>")
     prop = out.get("propensity", {})
-    body.append(f"<h2>Propensity</h2><p>{_e(prop.get('status', ''))} ({_e(prop.get('cases', 0))} cases).</p>")
+    if prop.get("status") == "run":
+        lo, hi = prop["confidence_95"]
+        body.append(f"<h2>Propensity</h2><p>{_e(prop['cases'])} cases (Latin hypercube, seed {_e(prop['sampling']['seed'])}, "
+                    f"<a href='propensity.csv'>propensity.csv</a>): <b>{100 * prop['fraction']:.1f} % squeak</b> (95 %: "
+                    f"{100 * lo:.1f}-{100 * hi:.1f} %); classified by {_e(prop['classifier'])}. Ranked: "
+                    + ", ".join(f"{_e(e['parameter'])} {e['spearman']:+.2f}" for e in prop["ranking"]) + ".</p>")
+        if has("propensity.png"):
+            body.append("<img src='propensity.png' alt='the propensity study'>")
+    else:
+        body.append(f"<h2>Propensity</h2><p>{_e(prop.get('status', ''))} ({_e(prop.get('cases', 0))} cases).</p>")
     if out.get("cost"):
         rows = ["<tr><th>part</th><th>status</th><th>CPU (s)</th><th>wall (s)</th><th>ranks</th><th>reused</th></tr>"]
         for part, p in out["cost"].items():

@@ -131,6 +131,23 @@ def radiate(t, orders, a, d, W, angle_deg=90.0, rho=RHO_AIR, c=C_AIR, fade=2e-3,
     return np.fft.irfft(P, M)[:N]
 
 
+def force_dipole(t, force, d, angle_deg=90.0, c=C_AIR, fade=2e-3, fmax=20e3):
+    """The pressure (Pa) at distance d (m) of a compact body on which the fluctuating force `force` (N, along the sheet:
+    the lab's x axis) acts: the far field of a point force dipole, p = cos(phi) / (4 pi c d) dF/dt (Curle 1955; Morse
+    and Ingard, Theoretical Acoustics, 7.1: a compact rigid body moved by a force radiates as a dipole of that force),
+    phi the listener's direction from the sheet's (90: above, where it vanishes); the retarded time d/c is a delay and
+    left out. The series is treated as in `radiate` (mean removed, ends faded, zero-padded, f <= fmax)."""
+    t = np.asarray(t, float)
+    dt = t[1] - t[0]
+    N = len(t)
+    M = 2 * N
+    w = 2 * math.pi * np.fft.rfftfreq(M, dt)
+    y = np.asarray(force, float)
+    Fw = np.fft.rfft((y - y.mean()) * taper(N, int(min(fade, 0.05 * (t[-1] - t[0])) / dt)), M)
+    Fw[w > 2 * math.pi * fmax] = 0
+    return math.cos(math.radians(angle_deg)) / (4 * math.pi * c * d) * np.fft.irfft(1j * w * Fw, M)[:N]
+
+
 def a_weighting_db(f):
     """IEC 61672-1 A-weighting in dB at the frequencies f (Hz): 0.0 at 1 kHz, -19.1 at 100 Hz."""
     f = np.asarray(f, float)

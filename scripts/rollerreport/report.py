@@ -85,6 +85,41 @@ def verdict(mode, scene, real=None):
             "diverges": bool(real) and g_real > 0, "unstable": sigma > 0 or (bool(real) and g_real > 0)}
 
 
+def stick_slip_lines(cyc, s, scene):
+    """The stick-slip run's section of report.md."""
+    word = ("a sustained stick-slip limit cycle" if cyc["stick_slip"] else "a sustained oscillation without stick"
+            if cyc["sustained"] else "no sustained cycle")
+    md = ["## Stick-slip: the start from rest", "",
+          f"stickslip.csv (the scene from rest on the axle, t = {cyc['t0']:.4g} to {cyc['t1']:.4g}), {cyc['column']} "
+          f"after the motor's ramp (t >= {cyc['t_min']:.4g}): **{word}**: {cyc['why']}."]
+    if math.isfinite(cyc["frequency"]):
+        md += ["", f"Its pitch {cyc['frequency']:.5g} per unit time, heard at **{cyc['frequency'] / s:.2f} Hz** "
+               f"({s:.4g} s per unit: {scene.get('time_scale_note', 'the scene is SI' if scene.get('units') == 'si' else 'the report time scale')})."]
+    lin = scene.get("onedof")
+    if lin:
+        md += ["", f"The 1-DOF closed form of the scene's drive (rollerref; the stand-in for the CEA, which does not take "
+               f"-axle): steady sliding {'stable' if lin['stable'] else 'unstable'} (growth rate {lin['growth_rate']:+.4g} "
+               f"per unit time, {lin['frequency']:.4g} cycles per unit time); its start from rest: {lin.get('start_from_rest')}."]
+    return md + [""]
+
+
+def propensity_lines(prop, folder):
+    """The propensity's section of report.md."""
+    md = ["## Propensity", ""]
+    if prop.get("status") != "run":
+        return md + [prop.get("status", ""), ""]
+    lo, hi = prop["confidence_95"]
+    md += [f"{prop['cases']} cases (Latin hypercube, seed {prop['sampling']['seed']}, propensity.csv) over the spread "
+           + ", ".join(f"{k} {a:g}-{b:g}" for k, (a, b) in prop["ranges"].items()) + f": **{100 * prop['fraction']:.1f} % "
+           f"squeak** (95 % interval {100 * lo:.1f}-{100 * hi:.1f} %, Wilson); by class "
+           + ", ".join(f"{k} {100 * x:.1f} %" for k, x in prop["by_class"].items()) + f". Classified by {prop['classifier']}.",
+           "", "Ranked by the rank correlation with squeaking: " + ", ".join(
+               f"{e['parameter']} {e['spearman']:+.2f}" for e in prop["ranking"]) + "."]
+    if os.path.exists(os.path.join(folder, "propensity.png")):
+        md += ["", "![propensity](propensity.png)"]
+    return md + [""]
+
+
 def sweep_map(rows, png, scene_x=None, scene_y=None, title="", si=False):
     """The largest growth rate per swept point (with its mode's frequency, in Hz when si; a real positive eigenvalue,
     a divergence, in place of the oscillating modes and marked "real"), drawn over the two swept options; returns
@@ -280,6 +315,49 @@ def animation_part(folder, scene, v, snd, jr):
     return entry.get("result")
 
 
+def cycle_sound_part(folder, scene, s, pitch_hz, jr):
+    """squeal.wav, sound.csv and spectrogram.png of the stick-slip run (rollerreport.heard.write_cycle: its whole
+    simulated span, the surface and the friction force's dipole at the listener), journalled like the sound part."""
+    from . import heard
+
+    j = lambda name: os.path.join(folder, name)  # noqa: E731
+    files = [j(f) for f in ("stickslip.csv", "stickslip_surface.csv", "scene.json")] + _source_files(
+        "heard.py", "radiation.py", "sound.py", "cycle.py")
+    digest = journal.inputs_hash({"part": "sound", "source": "stick-slip", "s": s, "pitch": pitch_hz}, files)
+
+    def run():
+        return True, {"result": heard.write_cycle(folder, scene, s, pitch_hz)}
+
+    entry = jr.run("sound", digest, ["squeal.wav", "sound.csv", "spectrogram.png"], run,
+                   what="the stick-slip cycle's sound at the listener (docs/squeal.md 9.4)")
+    return entry.get("result")
+
+
+def forced_level(folder, scene, s, f):
+    """The level (dB SPL, loudest 125 ms) at the listener of the forced run's sound within 20 % of the ripple's
+    frequency f (per unit time) (rollerreport.heard.pressure of forced.csv and forced_surface.csv), or None."""
+    from . import heard
+
+    if not os.path.exists(os.path.join(folder, "forced_surface.csv")):
+        return None
+    pr = heard.pressure(folder, scene, s, "forced.csv", "forced_surface.csv")
+    return {"spl_line_db": heard.line_level(pr["t"], pr["p"], f / s), "spl_db": radiation_level(pr)}
+
+
+def radiation_level(pr):
+    from . import radiation
+
+    return radiation.level_db(pr["p"], pr["t"])[1]
+
+
+def time_scale(scene, v):
+    """Seconds of audio per unit of the scene's time: the CEA's (v) when it ran, else scene.json's
+    "seconds_per_unit" (a non-dimensional scene; rollerreport.run --seconds-per-unit), else 1 (SI)."""
+    if v is not None:
+        return v["seconds_per_unit"]
+    return num(scene.get("seconds_per_unit"), 1.0) if scene.get("units") != "si" else 1.0
+
+
 def recorded(jr, name, keys=()):
     """The result an earlier run recorded for part `name` (journal.json), if it finished, its outputs are there and it
     has the keys this report reads (an older report's result may not)."""
@@ -326,7 +404,20 @@ def write(folder, parts=PARTS):
     else:
         out["missing"].append("sweep.csv")
     snd = None
-    if os.path.exists(j("transient.csv")) and v is not None:
+    s_unit = time_scale(scene, v)
+    cyc = mechanisms.stick_slip_cycle(folder, scene)
+    if cyc is not None:
+        out["stick_slip_cycle"] = {k: x for k, x in cyc.items() if k != "crossings"}
+    heard_cycle = cyc is not None and os.path.exists(j("stickslip_surface.csv")) and (
+        cyc["stick_slip"] or not os.path.exists(j("transient.csv")))
+    if heard_cycle and math.isfinite(cyc["frequency"]):  # the squeak the roller makes by itself: its sound is the WAV
+        if "sound" in parts:
+            snd = out["sound"] = cycle_sound_part(folder, scene, s_unit, cyc["frequency"] / s_unit, jr)
+        else:
+            snd = out["sound"] = recorded(jr, "sound", ("wav_pitch_hz", "wav_source"))
+        if snd:
+            out["files"] += ["squeal.wav", "sound.csv", "spectrogram.png"]
+    if os.path.exists(j("transient.csv")) and v is not None and not (heard_cycle and snd):
         body += fit_lines(j, v, out)
         if "sound" in parts:
             snd = out["sound"] = sound_part(folder, scene, v, out, jr)
@@ -353,8 +444,11 @@ def write(folder, parts=PARTS):
     elif not os.path.exists(j("transient.h5")):
         out["missing"].append("transient.h5")
     # the mechanisms and the verdict (SPEC section 10)
-    ctx = dict(folder=folder, scene=scene, verdict=v, fit=out.get("fit"), sound=snd, divergent=out.get("divergent", []),
-               seconds_per_unit=v["seconds_per_unit"] if v else 1.0)
+    forced_r = mechanisms.forced_response(folder, scene)
+    ctx = dict(folder=folder, scene=scene, verdict=v, fit=out.get("fit"), sound=snd if not heard_cycle else None,
+               divergent=out.get("divergent", []), seconds_per_unit=s_unit, stick_slip_cycle=cyc,
+               stick_slip_sound=snd if heard_cycle else None, onedof=scene.get("onedof"), forced_response=forced_r,
+               forced_sound=forced_level(folder, scene, s_unit, forced_r["frequency"]) if forced_r else None)
     if "friction_onset" in out:
         ctx["friction_onset"] = out["friction_onset"]
     out["mechanisms"] = mechanisms.evaluate(ctx)
@@ -364,7 +458,9 @@ def write(folder, parts=PARTS):
     out["wav_seconds"] = snd["wav_seconds"] if snd else 0.0
     out["wav_source"] = snd["wav_source"] if snd else None
     out["propensity"] = mechanisms.propensity(folder)
-    md += ["## Verdict", "", f"The roller **{out['verdict']}**" + ("" if out["verdict_complete"] else
+    by = [m["kind"] for m in out["mechanisms"] if m["status"] == "run" and m["squeals"]]
+    out["squeals_by"] = by
+    md += ["## Verdict", "", f"The roller **{out['verdict']}**" + (f" by {' and '.join(by)}" if by else "") + ("" if out["verdict_complete"] else
            " (from the mechanisms that ran: " + ", ".join(m["kind"] for m in out["mechanisms"] if m["status"] == "run")
            + "; not run: " + "; ".join(f"{m['kind']} ({m['status'][9:]})" for m in out["mechanisms"] if m["status"] != "run")
            + ")") + ".", ""]
@@ -374,18 +470,23 @@ def write(folder, parts=PARTS):
         md.append(f"| {m['kind']} | {m['status']} | {dict([(True, 'yes'), (False, 'no')]).get(m['squeals'], '-')} | "
                   f"{f(m['frequency_hz'], '.1f')} | {f(m['growth_rate_per_s'], '.4g')} | {f(m['spl_db'], '.1f')} |")
     md += [""] + body
+    if cyc is not None:
+        md += stick_slip_lines(cyc, s_unit, scene)
     if snd:
         lis, src = snd["listener"], snd["wav_source"]
+        pitch = v["pitch_hz"] if v is not None and not heard_cycle else snd["mode_line_hz"]
         md += ["## The sound", "", f"[squeal.wav](squeal.wav): the pressure at {lis['distance_m']:g} m from a "
                f"{lis['width_m'] * 1e3:g} mm wide roller ({lis['angle_deg']:g} degrees; {lis['model']}), radiated by "
-               f"{src['column']} of {src['file']}: **{snd['spl_db']:.1f} dB SPL** (loudest 125 ms; Leq {snd['spl_leq_db']:.1f}), "
-               f"{snd['spl_dba']:.1f} dB(A); loudest line {snd['loudest_hz']:.1f} Hz; the mode's line (predicted {v['pitch_hz']:.1f} Hz, "
+               + (f"the friction force ({src['column']}) of {src['file']} and the surface of {src['surface_file']}" if
+                  src.get("surface_file") else f"{src['column']} of {src['file']}") + ": "
+               f"**{snd['spl_db']:.1f} dB SPL** (loudest 125 ms; Leq {snd['spl_leq_db']:.1f}), "
+               f"{snd['spl_dba']:.1f} dB(A); loudest line {snd['loudest_hz']:.1f} Hz; the {'cycle' if heard_cycle else 'mode'}'s line (predicted {pitch:.1f} Hz, "
                f"within 20 %) {snd['spl_mode_db']:.1f} dB SPL, {snd['spl_mode_dba']:.1f} dB(A)" + ("" if snd.get("mode_line_resolved", True)
                else f" (an upper bound: no line at the pitch, the band's loudest at {snd['mode_line_hz']:.1f} Hz)") + ". "
                f"{snd['wav_seconds'] * 1e3:.1f} ms: the simulated span {src['t0']:.4g} to {src['t1']:.4g} times "
                f"{src['seconds_per_unit']:.4g} s per unit; full scale is a sine of {snd['wav_reference']['full_scale_db_spl']:g} dB SPL.", ""]
         md += [f"> {x}" for x in (snd["notice"], snd["level_note"]) if x] + ["", "![spectrogram](spectrogram.png)", ""]
-    md += ["## Propensity", "", out["propensity"]["status"], ""]
+    md += propensity_lines(out["propensity"], folder)
     out["cost"] = jr.parts
     if jr.parts:
         md += ["## Cost", ""] + jr.cost_lines() + [""]

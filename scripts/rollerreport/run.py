@@ -33,11 +33,11 @@ import time
 
 import numpy as np
 
-from . import journal, report
+from . import journal, onedof, report
 
 # Non-dimensional scenes are heard as the same roller at a real size and rubber: the printer roller's (docs/squeal.md
 # 7.1: r_outer 12.5 mm, shear wave speed 23.6 m/s). Time then scales as length / wave speed.
-REF_R_OUTER, REF_SHEAR_SPEED = 0.0125, 23.6
+REF_R_OUTER, REF_SHEAR_SPEED, REF_DENSITY = 0.0125, 23.6, 1200.0
 # roller's defaults (src/app/options.c) for what the scene may leave out
 DEFAULTS = {"r_inner": 0.25, "r_outer": 0.5, "young": 0.1, "poisson": 0.49, "density": 1.0, "omega": math.pi / 10,
             "obstacle_depth": 0.025, "sheet_speed": 0.0, "friction": 0.0, "viscosity": 0.0, "damping": 0.0}
@@ -78,8 +78,10 @@ def detect_units(opts):
     return "si" if value(opts, "young") >= 1e3 else "nd"
 
 
-def scene_json(name, opts, units, listener=None):
-    """scene.json (docs/squeal.md 9.1) from the scene's options; listener: {distance_m, width_m, angle_deg}."""
+def scene_json(name, opts, units, listener=None, seconds_per_unit=None):
+    """scene.json (docs/squeal.md 9.1) from the scene's options; listener: {distance_m, width_m, angle_deg};
+    seconds_per_unit: the time scale of a non-dimensional scene given explicitly (default: the printer roller's size
+    and rubber, below)."""
     omega, r = value(opts, "omega"), value(opts, "r_outer")
     surface = omega * r
     scene = {"name": name, "units": units, "friction": value(opts, "friction"), "sheet_speed": value(opts, "sheet_speed"),
@@ -93,6 +95,21 @@ def scene_json(name, opts, units, listener=None):
     if units == "nd":  # the roller at the reference size and rubber: t_si = s t_nd
         c_nd = math.sqrt(value(opts, "young") / (2 * (1 + value(opts, "poisson"))) / value(opts, "density"))
         scene["seconds_per_unit"] = (REF_R_OUTER / r) * (c_nd / REF_SHEAR_SPEED)
+        scene["time_scale_note"] = (f"the roller heard at the printer roller's size and rubber: r_outer {REF_R_OUTER} m, "
+                                    f"shear wave speed {REF_SHEAR_SPEED} m/s")
+        if seconds_per_unit:
+            scene["seconds_per_unit"] = float(seconds_per_unit)
+            scene["time_scale_note"] = "given: rollerreport.run --seconds-per-unit"
+        # forces: stress = rho (L / s)^2 at the reference rubber's density, times the length scale (per unit width)
+        speed = scene["metres_per_unit"] / scene["seconds_per_unit"]
+        scene["newtons_per_metre_per_unit"] = REF_DENSITY / value(opts, "density") * speed ** 2 * scene["metres_per_unit"]
+    if onedof.is_axle(opts):
+        scene["axle"] = True
+        scene["drive_started"] = onedof.value(opts, "theta_start") + onedof.value(opts, "drive_ramp")
+        if onedof.value(opts, "drive_stiffness") > 0:  # the 1-DOF needs the drive's spring
+            lin = onedof.stability(opts)
+            lin["start_from_rest"] = onedof.start_from_rest(opts)
+            scene["onedof"] = lin
     return scene
 
 
@@ -263,7 +280,8 @@ OUTPUTS = ("modes.csv", "modes.h5", "modes.xmf", "steady.csv", "sweep.csv", "tra
            "transient.h5", "transient.xmf", "transient_base.h5", "transient_base.xmf", "scene.json", "commands.json",
            "journal.json", "report.md", "report.json", "report.html", "map.png", "squeal.wav", "sound.csv", "spectrogram.png",
            "vibration.gif", "vibration.mp4")
-ROLLER_PARTS = ("cea", "map", "transient", "transient_base")
+ROLLER_PARTS = ("cea", "map", "transient", "transient_base", "stickslip", "forced", "propensity")
+MODES_WITHOUT_AXLE = "-modes does not take -axle"  # src/modes: the CEA about steady rolling with the axle is not built
 
 
 def parse(argv):
@@ -298,6 +316,19 @@ def parse(argv):
                    "roller's: docs/squeal.md 7.1); nd scenes: at the printer roller's size")
     p.add_argument("--angle", type=float, default=90.0, help="the listener's direction in degrees (default 90: above the "
                    "roller; the sheet is at -90)")
+    p.add_argument("--seconds-per-unit", type=float, default=None, help="non-dimensional scenes: seconds of audio per unit "
+                   "of the scene's time (default: the printer roller's size and rubber, docs/squeal.md 9.2)")
+    p.add_argument("--wav-full-scale-db", type=float, default=None, help="squeal.wav's full scale, a sine of this dB SPL "
+                   "(default 94; raised by 10 dB steps when the peak does not fit; stated in report.json)")
+    p.add_argument("--stickslip-time", type=float, default=None, help="axle scenes: the start from rest's -ts_max_time "
+                   "(default the scene's, at least 0.5 s of audio)")
+    p.add_argument("--ripple", default=None, help="axle scenes: AMPLITUDE,FREQUENCY of the motor's ripple for the forced "
+                   "run (-drive_ripple, -drive_ripple_frequency; default the scene's, none if it has none)")
+    p.add_argument("--forced-options", default="", help="axle scenes: roller options of the forced run besides the "
+                   "ripple, e.g. '-theta_start 0 -drive_ramp 0 -nip_ramp 60' (a start sliding)")
+    p.add_argument("--propensity-cases", type=int, default=64, help="axle scenes: the propensity study's cases (Latin "
+                   "hypercube, classified by rollerref's 1-DOF; default 64, 0: none)")
+    p.add_argument("--propensity-seed", type=int, default=38, help="the propensity's sampling seed (default 38)")
     cut = argv.index("--") if "--" in argv else len(argv)
     return p.parse_args(argv[:cut]), argv[cut + 1 :]
 
@@ -321,10 +352,16 @@ def main(argv=None):
     opts = scene_options(scene_path, extra)
     listener = {"distance_m": a.distance, "width_m": a.width, "angle_deg": a.angle}
     scene = scene_json(os.path.splitext(os.path.basename(scene_path))[0], opts,
-                       detect_units(opts) if a.units == "auto" else a.units, listener)
+                       detect_units(opts) if a.units == "auto" else a.units, listener, a.seconds_per_unit)
+    if a.wav_full_scale_db is not None:
+        scene["wav_full_scale_db"] = a.wav_full_scale_db
     steps = Steps(out, roller, only)
     base = [roller, "-options_file", scene_path]
     j = lambda f: os.path.join(out, f)  # noqa: E731
+    if scene.get("axle"):
+        axle_parts(steps, base, opts, scene, a, extra, out)
+        finish = report_step(steps, scene, out, src, only)
+        return finish
 
     cea_ok = steps.run("cea", base + ["-modes", "-modes_nev", str(a.nev), "-modes_csv", j("modes.csv"), "-modes_output",
                                       j("modes.h5"), "-modes_steady_csv", j("steady.csv")] + extra,
@@ -338,6 +375,58 @@ def main(argv=None):
                      inputs=[j("modes.h5")]):
             steps.run("transient_base", *base_command(seeded), outputs=["transient_base.csv", "surface_base.csv", "transient_base.h5",
                                                                         "transient_base.xmf"], inputs=[j("modes.h5")])
+    return report_step(steps, scene, out, src, only)
+
+
+def axle_parts(steps, base, opts, scene, a, extra, out):
+    """The parts of a scene on the axle: the CEA is not run (MODES_WITHOUT_AXLE: the 1-DOF closed form of scene.json's
+    "onedof" stands in); the start from rest to its limit cycle (stickslip.csv, stickslip_surface.csv), long enough for
+    0.5 s of audio; the forced run with the ripple; the propensity study (rollerreport.propensity)."""
+    j = lambda f: os.path.join(out, f)  # noqa: E731
+    scene["cea"] = f"not run: {MODES_WITHOUT_AXLE}"
+    s = scene.get("seconds_per_unit", 1.0)
+    # at least 0.5 s of audio after the first row (the state before the first contact solve, left out) and whatever
+    # the last step falls short of -ts_max_time: 2 % more
+    T = a.stickslip_time or max(float(opts.get("ts_max_time", 0.0)), 0.5 / s * 1.02)
+    steps.run("stickslip", base + ["-ts_max_time", repr(T), "-monitor_csv", j("stickslip.csv"), "-monitor_surface_csv",
+                                   j("stickslip_surface.csv"), "-quiet"] + extra,
+              f"the start from rest on the axle to t = {T:.5g} ({T * s:.3g} s of audio): the stick-slip limit cycle "
+              "(docs/squeal.md 9.4)", outputs=["stickslip.csv", "stickslip_surface.csv"])
+    ripple = [float(x) for x in a.ripple.split(",")] if a.ripple else (
+        [onedof.value(opts, "drive_ripple"), onedof.value(opts, "drive_ripple_frequency")])
+    if ripple[0] and ripple[1] and "onedof" in scene:
+        from rollerref import forced as ref_forced
+
+        lin = scene["onedof"]
+        p = onedof.torsion(opts, ripple=False)
+        ref = ref_forced.one_dof(p.I, p.k_d, p.c_d, ripple[1], ripple[0], c_f=lin["c_eff"] - p.c_d)
+        scene["ripple"] = {"amplitude": ripple[0], "frequency": ripple[1], "one_dof": ref}
+        more = a.forced_options.split()
+        steps.run("forced", base + more + ["-drive_ripple", repr(ripple[0]), "-drive_ripple_frequency", repr(ripple[1]),
+                                           "-ts_max_time", repr(T), "-monitor_csv", j("forced.csv"), "-monitor_surface_csv",
+                                           j("forced_surface.csv"), "-quiet"] + extra,
+                  f"the motor's ripple {ripple[0]:g} rad at {ripple[1]:g} per unit time: the forced response "
+                  "(docs/squeal.md 9.4)", outputs=["forced.csv", "forced_surface.csv"])
+    if a.propensity_cases > 0 and (steps.only is None or "propensity" in steps.only):
+        from . import propensity
+
+        digest = journal.inputs_hash({"part": "propensity", "options": opts, "cases": a.propensity_cases,
+                                      "seed": a.propensity_seed}, [os.path.join(os.path.dirname(__file__), f) for f in
+                                                                   ("propensity.py", "onedof.py")])
+
+        def go():
+            r = propensity.run(opts, out, a.propensity_cases, a.propensity_seed)
+            propensity.figure(out)
+            return True, {"result": {"fraction": r["fraction"], "cases": r["cases"]}}
+
+        steps.journal = journal.Journal(out)
+        steps.journal.run("propensity", digest, ["propensity.json", "propensity.csv", "propensity.png"], go,
+                          what=f"the propensity: {a.propensity_cases} cases, classified by rollerref's 1-DOF (docs/squeal.md 9.4)")
+
+
+def report_step(steps, scene, out, src, only):
+    """scene.json, then the report (rollerreport.report) with every step's command; 1 when a step failed."""
+    j = lambda f: os.path.join(out, f)  # noqa: E731
     with open(j("scene.json"), "w") as fh:
         json.dump(scene, fh, indent=1)
     parts = [p for p in report.PARTS if only is None or p in only]

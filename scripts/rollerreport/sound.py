@@ -101,9 +101,9 @@ def envelope_rate(samples, rate, f0, periods=2.0):
     return float(np.polyfit(tc[ok], np.log(rms[ok]), 1)[0]) if ok.sum() >= 3 else math.nan
 
 
-def spectrogram_png(path, samples_pa, rate, pitch=None, title="Spectrogram at the listener"):
+def spectrogram_png(path, samples_pa, rate, pitch=None, title="Spectrogram at the listener", fmax=None, nfft=None):
     """The spectrogram of the pressure (Pa) in dB SPL (re 20 uPa) as a PNG, 60 dB below its loudest bin; the
-    predicted pitch as a dashed line."""
+    predicted pitch as a dashed line (the frequency axis to 4 times it, or fmax; nfft: the window's samples)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -111,7 +111,7 @@ def spectrogram_png(path, samples_pa, rate, pitch=None, title="Spectrogram at th
 
     x = np.asarray(samples_pa, float)
     fig, ax = plt.subplots(figsize=(7, 3.5))
-    nfft = 2048 if len(x) >= 8192 else max(64, 2 ** int(math.log2(max(len(x) // 4, 64))))
+    nfft = nfft or (2048 if len(x) >= 8192 else max(64, 2 ** int(math.log2(max(len(x) // 4, 64)))))
     # psd in Pa^2/Hz -> dB re P_REF^2/Hz
     _, _, _, im = ax.specgram(x / P_REF, NFFT=nfft, Fs=rate, noverlap=3 * nfft // 4, cmap="magma", scale="dB")
     top = float(np.nanmax(im.get_array()))
@@ -119,7 +119,7 @@ def spectrogram_png(path, samples_pa, rate, pitch=None, title="Spectrogram at th
     fig.colorbar(im, ax=ax, label="dB re (20 uPa)^2/Hz")
     if pitch:
         ax.axhline(pitch, color="c", ls="--", lw=0.8, label=f"predicted {pitch:.0f} Hz")
-        ax.set_ylim(0, min(rate / 2, 4 * pitch))
+        ax.set_ylim(0, min(rate / 2, fmax or 4 * pitch))
         ax.legend(loc="upper right")
     ax.set_xlabel("time (s, the simulated span)")
     ax.set_ylabel("frequency (Hz)")

@@ -1,0 +1,153 @@
+"""The report's stick-slip, forced and propensity mechanisms (scripts/rollerreport: cycle, onedof, propensity,
+mechanisms, heard.write_cycle; docs/squeal.md 9.4) on synthetic monitor CSVs, no roller run:
+- limit-cycle detection (rollerreport.cycle.detect) on rollerref's event-driven start from rest of
+  jobs/axle_bistable.yaml's 1-DOF (the cycle the finite elements reach, docs/validation.md 10.5), sampled at the
+  scene's step with a node-passing ripple of 3 % added: the period within 0.5 % of rollerref's own cycle, the amplitude
+  within 4 %, stuck in every period, sustained; a decaying oscillation is not sustained, a sustained one without stick
+  is not stick-slip, a series of two periods is too short;
+- the report of that folder: verdict "squeals" by stick-slip, flutter "not run: -modes does not take -axle" with the
+  1-DOF closed form as its stated stand-in; squeal.wav as long as the simulated span times the time scale, its pitch
+  (measured here by the autocorrelation of its last two thirds) within 2 % of the cycle's, its envelope sustained (the
+  RMS of the last two spans of four periods within 10 %), full scale the stated 94 dB SPL; the friction force's dipole against its
+  closed form cos(phi) w F W / (4 pi c d);
+- the forced response's lock-in (a ripple's line beside a decaying free oscillation) within 0.5 %, and the forced
+  mechanism's ratio to the 1-DOF closed form;
+- the propensity: a Latin hypercube has one point in each stratum of every axis, Wilson's interval at known values,
+  the scene's own point maps onto the scene, 8 cases classified with the summary's keys."""
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import wave
+
+import numpy as np
+
+from rollertest import SOURCE, Checker
+from rollerreport import cycle, mechanisms, onedof, propensity, radiation, run  # noqa: E402
+from rollerref import stickslip  # noqa: E402
+
+c = Checker("rollerreport_mechanisms")
+opts = run.scene_options(os.path.join(SOURCE, "jobs", "axle_bistable.yaml"), [])
+DT, T_END = 0.0632, 260.0
+
+
+def write_csv(path, cols):
+    names = list(cols)
+    with open(path, "w") as f:
+        f.write(",".join(names) + "\n")
+        for k in range(len(cols["t"])):
+            f.write(",".join(repr(float(cols[n][k])) for n in names) + "\n")
+
+
+# ---- the cycle of the 1-DOF start from rest, as the monitor would write it
+p = onedof.torsion(opts, ripple=False)
+ref = stickslip.stick_slip_cycle(p)
+res = stickslip.simulate(p, T_END, dt_out=DT / 4)
+t = np.arange(1, int(T_END / DT)) * DT
+rate = np.interp(t, res.t, res.u[:, 0])
+stuck = np.interp(t, res.t, (res.mode[:, 0] == 0).astype(float)) > 0.5
+force = np.interp(t, res.t, res.F[:, 0])
+ripple = 0.03 * ref["rate_amplitude"] * np.sin(2 * math.pi * 0.47 * t)  # the node passing's ripple
+d = tempfile.mkdtemp(prefix="rollerreport_mech_")
+cols = {"step": np.arange(len(t) + 1), "t": np.concatenate([[0.0], t]), "friction_force": np.concatenate([[0.0], -force]),
+        "stick_nodes": np.concatenate([[0], np.where(stuck, 11, 0)]), "slip_nodes": np.concatenate([[11], np.where(stuck, 0, 11)]),
+        "hub_rate": np.concatenate([[0.0], rate + ripple]), "R": 0.0 * np.concatenate([[0.0], t])}
+write_csv(os.path.join(d, "stickslip.csv"), cols)
+surf = {"step": cols["step"], "t": cols["t"], "theta": 0 * cols["t"], "ur0": 0 * cols["t"], "ur1c": 1e-7 * cols["friction_force"],
+        "ur1s": 0 * cols["t"]}
+write_csv(os.path.join(d, "stickslip_surface.csv"), surf)
+cyc = cycle.detect(t, rate + ripple, np.where(stuck, 11, 0), t_min=25.0)
+c.check(ref["exists"] and abs(cyc["period"] / ref["period"] - 1) < 0.005 and abs(cyc["amplitude"] / ref["rate_amplitude"] - 1) < 0.04
+        and cyc["stick_slip"] and cyc["sustained"] and cyc["stick_every_period"],
+        f"the 1-DOF start from rest at dt {DT} with a 3 % ripple (the half peak-to-peak takes it in): period {cyc['period']:.4f} (rollerref {ref['period']:.4f}), amplitude "
+        f"{cyc['amplitude']:.6f} ({ref['rate_amplitude']:.6f}), {cyc['why']}")
+w = p.omega
+dec = cycle.detect(t, w + 0.002 * np.exp(-0.0079 * t) * np.cos(2 * math.pi * 0.0503 * t), 0 * t, t_min=25.0)
+sus = cycle.detect(t, w + 0.002 * np.cos(2 * math.pi * 0.0503 * t), 0 * t, t_min=25.0)
+short = cycle.detect(t[t < 60], w + 0.002 * np.cos(2 * math.pi * 0.0503 * t[t < 60]), None, t_min=25.0)
+c.check(not dec["sustained"] and dec["growth_rate"] < -0.007 and sus["sustained"] and not sus["stick_slip"]
+        and sus["stick_every_period"] is False and not short["sustained"] and "needed" in short["why"],
+        f"a decaying oscillation ({dec['growth_rate']:+.5f}, the envelope -0.0079): not sustained; a steady one without stick: "
+        f"sustained, not stick-slip; a short series: {short['why']}")
+
+# ---- the report of the folder
+sc = run.scene_json("axle_bistable", opts, run.detect_units(opts), {"distance_m": 1.0, "width_m": 0.03, "angle_deg": 45.0})
+json.dump(sc, open(os.path.join(d, "scene.json"), "w"))
+lin = sc["onedof"]
+c.check(sc["axle"] and sc["drive_started"] == 25.0 and lin["stable"] and abs(lin["growth_rate"] / -0.007939 - 1) < 1e-3
+        and lin["start_from_rest"] == "cycle", f"scene.json on the axle: the 1-DOF closed form {lin['growth_rate']:+.6f} (docs/validation.md "
+        f"10.5: -0.007939), its start from rest {lin['start_from_rest']}, the drive started at {sc['drive_started']}")
+given = run.scene_json("axle_bistable", opts, "nd", None, seconds_per_unit=0.003)
+c.check(given["seconds_per_unit"] == 0.003 and "given" in given["time_scale_note"]
+        and abs(given["newtons_per_metre_per_unit"] / (1200.0 * (0.025 / 0.003) ** 2 * 0.025) - 1) < 1e-12
+        and abs(sc["newtons_per_metre_per_unit"] / (1200.0 * 23.6 ** 2 / (10 / 2.98) * 0.025) - 1) < 1e-12,
+        f"the time scale given (--seconds-per-unit 0.003) or the printer roller's ({sc['seconds_per_unit']:.5g} s per unit); the force "
+        f"scale rho_ref (L/s)^2 L: {given['newtons_per_metre_per_unit']:.5g}, {sc['newtons_per_metre_per_unit']:.5g} N/m per unit")
+r = subprocess.run([sys.executable, "-m", "rollerreport", d], capture_output=True, text=True)
+out = json.load(open(os.path.join(d, "report.json"))) if r.returncode == 0 else {}
+mech = {m["kind"]: m for m in out.get("mechanisms", [])}
+s = sc["seconds_per_unit"]
+ss = mech.get("stick-slip", {})
+c.check(out.get("verdict") == "squeals" and out.get("squeals_by") == ["stick-slip"] and ss.get("squeals") is True and abs(ss["frequency_hz"] * s * cyc["period"] - 1) < 1e-9
+        and mech["flutter"]["status"] == "not run: -modes does not take -axle" and "stand-in" in mech["flutter"]["evidence"][0]
+        and mech["forced"]["status"].startswith("not run"),
+        f"report.json: verdict {out.get('verdict')}, stick-slip at {ss.get('frequency_hz', 0):.3f} Hz; flutter {mech.get('flutter', {}).get('status')} "
+        f"({r.stderr.strip()[-300:]})")
+with wave.open(os.path.join(d, "squeal.wav"), "rb") as f:
+    rate_wav, n = f.getframerate(), f.getnframes()
+    x = np.frombuffer(f.readframes(n), "<i2").astype(float)
+src = out["wav_source"]
+span = (src["t1"] - src["t0"]) * s
+k = len(x) // 3
+y = x[k:] - x[k:].mean()
+ac = np.correlate(y, y, "full")[len(y) - 1:] / (len(y) - np.arange(len(y)))
+z = int(np.argmax(ac < 0))  # the first maximum above half the zero lag after the first zero
+lag = z + next(i for i in range(len(ac) - z - 2) if ac[z + i + 1] > 0.5 * ac[0] and ac[z + i + 1] >= ac[z + i] and ac[z + i + 1] >= ac[z + i + 2]) + 1
+pitch = rate_wav / lag
+four = int(round(4 * rate_wav / ss["frequency_hz"]))  # four periods of the cycle
+rms = [math.sqrt(np.mean(x[a:a + four] ** 2)) for a in (len(x) - 2 * four, len(x) - four)]
+c.check(src["file"] == "stickslip.csv" and abs(n / rate_wav - span) <= 1.5 / rate_wav and abs(pitch / ss["frequency_hz"] - 1) < 0.02
+        and abs(rms[1] / rms[0] - 1) < 0.10 and out["sound"]["wav_reference"]["full_scale_db_spl"] == 94.0 and math.isfinite(out["spl_db"]),
+        f"squeal.wav: {n / rate_wav:.4f} s (span x scale {span:.4f}), pitch {pitch:.3f} Hz (the cycle's {ss['frequency_hz']:.3f}), "
+        f"the RMS of the last two spans of four periods {rms[0]:.1f}, {rms[1]:.1f}; {out['spl_db']:.1f} dB SPL at full scale 94 dB")
+tt = np.arange(20000) / 20000.0
+F0, f0, phi, dist = 0.3, 200.0, 30.0, 2.0
+pd = radiation.force_dipole(tt, F0 * np.sin(2 * math.pi * f0 * tt), dist, phi)
+mid = pd[5000:15000]
+want = math.cos(math.radians(phi)) * 2 * math.pi * f0 * F0 / (4 * math.pi * radiation.C_AIR * dist)
+c.check(abs(0.5 * np.ptp(mid) / want - 1) < 1e-3, f"the force dipole: {0.5 * np.ptp(mid):.6g} Pa against cos(phi) w F / (4 pi c d) = {want:.6g}")
+
+# ---- the forced response: the ripple's line beside a decaying free oscillation
+f_r, A_r = 0.03, 2.9e-4
+hub = w + A_r * np.sin(2 * math.pi * f_r * t + 0.4) + 3e-4 * np.exp(-0.0079 * t) * np.sin(2 * math.pi * 0.0503 * t)  # 1-DOF's
+amp, ph = cycle.lock_in(t[t > 100], hub[t > 100], f_r, free=[(0.0503, -0.0079)])
+c.check(abs(amp / A_r - 1) < 0.005 and abs(ph - 0.4) < 0.01, f"lock-in at the ripple: {amp:.5g} ({A_r}), phase {ph:.4f} (0.4)")
+df = tempfile.mkdtemp(prefix="rollerreport_forced_")
+write_csv(os.path.join(df, "forced.csv"), {"step": np.arange(len(t)), "t": t, "hub_rate": hub, "stick_nodes": 0 * t})
+scf = dict(sc, ripple={"amplitude": 1e-3, "frequency": f_r, "one_dof": {"rate_amplitude": A_r / 1.01}})
+json.dump(scf, open(os.path.join(df, "scene.json"), "w"))
+r = subprocess.run([sys.executable, "-m", "rollerreport", df], capture_output=True, text=True)
+fo = {m["kind"]: m for m in json.load(open(os.path.join(df, "report.json")))["mechanisms"]}.get("forced", {}) if r.returncode == 0 else {}
+c.check(fo.get("status") == "run" and abs(fo["response_rate_amplitude"] / A_r - 1) < 0.01 and any("+1.0 %" in e for e in fo["evidence"]),
+        f"forced: {fo.get('status')}, {fo.get('response_rate_amplitude')}; {fo.get('evidence')} ({r.stderr.strip()[-300:]})")
+
+# ---- the propensity
+u = propensity.latin_hypercube(64, 6, 1)
+c.check(all(sorted((u[:, j] * 64).astype(int).tolist()) == list(range(64)) for j in range(6)),
+        "a Latin hypercube of 64 points in 6 dimensions: one point in each of the 64 strata of every axis")
+w0, w32 = propensity.wilson(0, 64), propensity.wilson(32, 64)
+c.check(w0[0] == 0 and abs(w0[1] - 0.05654) < 1e-4 and abs(w32[0] - 0.3801) < 1e-3 and abs(w32[1] - 0.6199) < 1e-3,
+        f"Wilson's 95 % interval: 0/64 {w0}, 32/64 {w32}")
+mid_sample = {nm: (math.sqrt(lo_ * hi_) if nm != "friction_static_over_kinetic" else 1.25) for nm, (_, lo_, hi_) in propensity.SPREAD.items()}
+case = propensity.case_options(opts, mid_sample)
+same = {k: onedof.value(opts, k) for k in case}
+c.check(all(abs(case[k] / same[k] - 1) < 1e-12 for k in case), f"the ranges' centres map onto the scene: {case}")
+dp = tempfile.mkdtemp(prefix="rollerreport_prop_")
+pr = propensity.run(opts, dp, n=8, seed=3)
+rows = open(os.path.join(dp, "propensity.csv")).read().splitlines()
+c.check(pr["cases"] == 8 and len(rows) == 9 and pr["fraction"] == pr["squeaking"] / 8 and pr["confidence_95"][0] <= pr["fraction"] <= pr["confidence_95"][1]
+        and set(pr) >= {"cases", "fraction", "by_mechanism", "ranges", "sampling", "ranking"} and pr["sampling"]["seed"] == 3,
+        f"8 cases: {pr['squeaking']} squeak ({pr['by_class']}), interval {[round(x, 3) for x in pr['confidence_95']]}")
+c.close()
