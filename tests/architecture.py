@@ -9,7 +9,7 @@ import sys
 
 from rollertest import SOURCE
 
-LAYERS = ["mesh", "model", "verify", "contact", "io", "integrate", "modes", "app"]  # low to high
+LAYERS = ["mesh", "model", "verify", "contact", "io", "integrate", "modes", "rom", "app"]  # low to high
 MAX_LINES, MAX_FIELDS = 400, 20
 src = os.path.join(SOURCE, "src")
 failures = []

@@ -39,6 +39,7 @@ PETSC_INTERN PetscErrorCode RollerSchemeBalance(Roller, RollerStepInfo *);
 #define ROLLER_SCHEME_KEPT 8
 PETSC_INTERN PetscErrorCode RollerSchemeKept(Roller, PetscInt *, Vec[], const char *[]); /* at most ROLLER_SCHEME_KEPT */
 PETSC_INTERN const char    *RollerSchemeName(Roller);
+PETSC_INTERN PetscErrorCode RollerSchemePhase(Roller, PetscReal, PetscReal *); /* the run's scheme's phase error per step at x = w dt */
 PETSC_INTERN PetscErrorCode RollerSchemesDestroy(Roller);
 
 /* diagnostics.c: the works every step, the rest of a step's row when an observer asks (ctx->info) */

@@ -225,6 +225,7 @@ static PetscErrorCode ComposedUsable(RollerScheme s, Roller ctx, const char **wh
   if (ctx->obstacle.friction > 0) *why = "Coulomb friction cannot change sign in a composition's negative stage (a three-level scheme takes it)";
   else if (ctx->disc.static_solve) *why = "-static is the DMF's one step with A = K";
   else if (coriolis) *why = "-coriolis_velocity is the three-level schemes' (this one splits the Coriolis force off exactly)";
+  else if (ctx->rom) *why = "-rom steps with a three-level scheme (the composition's exact Coriolis flow is nodal)";
   PetscFunctionReturn(0);
 }
 

@@ -160,6 +160,12 @@ PetscErrorCode RollerModesSolve(Roller ctx)
       PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], zr, zi));
       PetscCall(KeptToFull(kept, zr, xr[j]));
       PetscCall(KeptToFull(kept, zi, xi[j]));
+    } else if (ctx->ops.V) { /* -rom: the shape V z of the reduced model's coordinates z */
+      if (!zr) PetscCall(MatCreateVecs(ctx->ops.V, &zr, NULL));
+      if (!zi) PetscCall(VecDuplicate(zr, &zi));
+      PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], zr, zi));
+      PetscCall(MatMult(ctx->ops.V, zr, xr[j]));
+      PetscCall(MatMult(ctx->ops.V, zi, xi[j]));
     } else PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], xr[j], xi[j]));
     PetscCall(RollerPEPGetError(pep, j, &e->error[j]));
     PetscCall(Normalize(xr[j], xi[j], w));
