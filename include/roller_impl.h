@@ -153,8 +153,9 @@ typedef struct {
   PetscReal I0;          /* x . M x, the rigid body's polar moment over rho (the shaft torque, integrate/diagnostics.c) */
   Vec       w_R, w_alpha;
   /* -rom (src/rom): M, K, the loads, w_R, w_alpha and the state are the reduced model's; R90 its R(-pi/2) on M products
-     (NULL: the nodal one), V its basis in the full space (the modes' shapes); reduced: PETSC_TRUE then */
-  Mat       R90, V;
+     (NULL: the nodal one), V its basis in the full space (the modes' shapes), M_full the full model's M (their
+     classification); reduced: PETSC_TRUE then */
+  Mat       R90, V, M_full;
   PetscBool reduced;
 } RollerOperators;
 

@@ -57,7 +57,8 @@ static PetscErrorCode View(Roller ctx, RollerRom rom)
                         rom->modes_req    ? ", -rom_modes"
                         : rom->cutoff > 0 ? ", -rom_cutoff"
                                           : ": the default, where the step's relative frequency error reaches -ts_phase_error",
-                        rom->nq, N, rom->nmodes ? (double)PetscSqrtReal(rom->lambda[rom->nmodes - 1]) : 0.0, rom->nmodes ? (double)(PetscSqrtReal(rom->lambda[rom->nmodes - 1]) * ctx->ts.dt) : 0.0, (double)rom->offdiag, rom->t_modes, rom->t_reduce));
+                        rom->nq, N, rom->nmodes ? (double)PetscSqrtReal(rom->lambda[rom->nmodes - 1] / ctx->material.density) : 0.0, rom->nmodes ? (double)(PetscSqrtReal(rom->lambda[rom->nmodes - 1] / ctx->material.density) * ctx->ts.dt) : 0.0,
+                        (double)rom->offdiag, rom->t_modes, rom->t_reduce));
   PetscFunctionReturn(0);
 }
 
@@ -87,6 +88,7 @@ PetscErrorCode RollerRomDestroy(Roller ctx)
   PetscFunctionBeginUser;
   PetscCall(MatDestroy(&ctx->ops.R90));
   PetscCall(MatDestroy(&ctx->ops.V));
+  PetscCall(MatDestroy(&ctx->ops.M_full));
   if (!ctx->rom) PetscFunctionReturn(0);
   PetscCall(MatDestroy(&ctx->rom->V));
   PetscCall(PetscFree(ctx->rom->lambda));

@@ -10,10 +10,11 @@
    solve, repeated until the last converged eigenvalue passes w_cut^2. */
 static PetscErrorCode ModesSolve(Roller ctx, RollerRom rom, EPS *eps, PetscInt *nkeep)
 {
-  ST        st;
-  KSP       ksp;
-  PetscInt  nev = rom->modes_req > 0 ? rom->modes_req : 40, nconv, N;
-  PetscReal lam_last;
+  ST              st;
+  KSP             ksp;
+  PetscInt        nev = rom->modes_req > 0 ? rom->modes_req : 40, nconv, N;
+  PetscReal       lam_last;
+  const PetscReal lam_cut = ctx->material.density * rom->w_cut * rom->w_cut; /* ops.M is the unit density's: lambda = rho w^2 */
 
   PetscFunctionBeginUser;
   PetscCall(MatGetSize(ctx->ops.K, &N, NULL));
@@ -41,18 +42,18 @@ static PetscErrorCode ModesSolve(Roller ctx, RollerRom rom, EPS *eps, PetscInt *
       *nkeep = PetscMin(nconv, rom->modes_req);
       break;
     }
-    if (lam_last >= rom->w_cut * rom->w_cut || nev == N - 1) { /* every mode below the cutoff has converged */
+    if (lam_last >= lam_cut || nev == N - 1) { /* every mode below the cutoff has converged */
       *nkeep = 0;
       for (PetscInt i = 0; i < nconv; ++i) {
         PetscReal lam;
 
         PetscCall(EPSGetEigenvalue(*eps, i, &lam, NULL));
-        if (lam < rom->w_cut * rom->w_cut) *nkeep = i + 1;
+        if (lam < lam_cut) *nkeep = i + 1;
       }
       break;
     }
-    PetscCheck(pass < 8, ctx->comm, PETSC_ERR_CONV_FAILED, "-rom_cutoff: %" PetscInt_FMT " modes did not reach the cutoff %g (last w %g)", nconv, (double)(rom->w_cut / (2 * PETSC_PI)), (double)PetscSqrtReal(lam_last));
-    nev = (PetscInt)PetscCeilReal(1.2 * nconv * rom->w_cut * rom->w_cut / lam_last) + 10;
+    PetscCheck(pass < 8, ctx->comm, PETSC_ERR_CONV_FAILED, "-rom_cutoff: %" PetscInt_FMT " modes did not reach the cutoff %g (last w %g)", nconv, (double)(rom->w_cut / (2 * PETSC_PI)), (double)PetscSqrtReal(lam_last / ctx->material.density));
+    nev = (PetscInt)PetscCeilReal(1.2 * nconv * lam_cut / lam_last) + 10;
   }
   PetscFunctionReturn(0);
 }

@@ -133,7 +133,7 @@ PetscErrorCode RollerRomReduce(Roller ctx, RollerRom rom)
   PetscCall(Replace(ctx, rom, tmpl, PETSC_FALSE, &ctx->ops.L_centrifugal));
   PetscCall(Replace(ctx, rom, tmpl, PETSC_FALSE, &ctx->ops.w_R));
   PetscCall(Replace(ctx, rom, tmpl, PETSC_FALSE, &ctx->ops.w_alpha));
-  PetscCall(MatDestroy(&ctx->ops.M));
+  ctx->ops.M_full = ctx->ops.M;
   PetscCall(MatDestroy(&ctx->ops.K));
   ctx->ops.M   = M;
   ctx->ops.K   = K;
