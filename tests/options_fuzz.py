@@ -32,6 +32,8 @@ VALID = {
     ("-ic_amplitude", "0"): "zero amplitude", ("-checkpoint_every", "0"): "only on a signal",
     ("-sheet_speed", "-1"): "the sheet backwards", ("-sheet_speed", "0"): "a still sheet",
     ("-obstacle_depth", "0"): "touching only", ("-friction", "0"): "frictionless",
+    ("-rom_modes", "0"): "the modes below -rom_cutoff", ("-rom_cutoff", "0"): "the default cutoff",
+    ("-rom_cutoff", "1e300"): "unused without -rom (with it: refused above the step's Nyquist frequency 1/(2 dt))",
     ("-friction_decay", "0"): "no weakening (needs -friction_static = -friction: refused here)",
     ("-contact_max_resolves", "0"): "no re-solve", ("-contact_margin", "0"): "the predicted gap only",
     ("-contact_margin", "-1"): "shrinks the candidate set (refused: > -r_outer)",
