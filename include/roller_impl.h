@@ -71,6 +71,12 @@ typedef struct {
   PetscInt  iterations, fallback;
 } RollerStepFriction;
 
+/* The axle's columns of a step (docs/model.md section 8): the hub's lab-vertical displacement, its lab angular velocity,
+   the drive's torque on it, the sheet's speed. Without -axle: 0, theta'(t), the shaft's torque, -sheet_speed. */
+typedef struct {
+  PetscReal y, hub_rate, drive_torque, sheet_speed;
+} RollerStepAxle;
+
 /* What the diagnostics of one step give (docs/model.md section 6, CSV columns and extras). */
 typedef struct {
   PetscReal R, alpha, energy;
@@ -84,6 +90,7 @@ typedef struct {
   PetscInt           contact_flips, contact_reversals; /* Gamma_C nodes whose state (on the obstacle or not) changed from
                                                  t_{k-1} to t_k; of these, those back in their state of t_{k-2} */
   RollerStepFriction friction;
+  RollerStepAxle     axle;
 } RollerStepInfo;
 
 /* The context, split by lifetime and owner (docs/architecture.md). Each part is filled by the component
@@ -106,25 +113,64 @@ typedef struct {
   PetscBool radii_set[2], gmsh_verbose, view_info, h_restart;
 } RollerMesh;
 
-/* Material (set once): plane-strain Lame constants from E, nu */
+/* The rubber's damping (-rubber, docs/model.md section 1.1): Kelvin-Voigt (-viscosity) or a generalized Maxwell solid
+   (Prony series) of deviatoric branches, the bulk elastic (model/rubber.c) */
+typedef enum { ROLLER_RUBBER_KELVIN_VOIGT, ROLLER_RUBBER_MAXWELL } RollerRubber;
+PETSC_EXTERN const char *const RollerRubbers[];
+#define ROLLER_MAX_BRANCHES 16
+
+/* Material (set once): plane-strain Lame constants from E, nu (the relaxed, static moduli); with -rubber maxwell the
+   branches: shear moduli g_i mu (g_i relative to the relaxed shear modulus mu) relaxing with times tau_i, fitted to the
+   loss factor loss_factor over the band [band[0], band[1]] (cycles per unit time; fit_error: the largest relative error
+   of the fitted loss factor over the band) or given (loss_factor 0) */
 typedef struct {
-  PetscReal young, poisson, density, lambda, mu;
-  PetscReal viscosity; /* tau of Kelvin-Voigt damping sigma = C:(eps + tau eps_t) */
+  PetscReal    young, poisson, density, lambda, mu;
+  PetscReal    viscosity; /* tau of Kelvin-Voigt damping sigma = C:(eps + tau eps_t) */
+  RollerRubber rubber;
+  PetscInt     nbranch;
+  PetscReal    tau[ROLLER_MAX_BRANCHES], g[ROLLER_MAX_BRANCHES];
+  PetscReal    band[2], loss_factor, fit_error;
 } RollerMaterial;
 
-/* The driving rotation theta(t) = omega (t - t0) + a cos(b (t - t0)) from t0 = -theta_start on, theta = a before */
+/* The driving rotation theta(t) = omega (t - t0) + a cos(b (t - t0)) from t0 = -theta_start on, theta = a before; with
+   -drive_ramp T the speed rises smoothly from 0 to omega over [t0, t0 + T], and -drive_ripple adds the motor's ripple
+   ripple s(t) sin(2 pi f (t - t0)) (s the ramp's speed fraction) at -drive_ripple_frequency f (model/forcing.c). With -axle
+   this is the motor's angle; without, the hub's. */
 typedef struct {
   PetscReal omega, a, b, start;
+  PetscReal ramp, ripple, ripple_frequency;
 } RollerRotation;
+
+/* -friction_table (friction/law.c): n points (v_i, mu_i) of the friction coefficient mu(|v|), 0 <= v_1 < ... < v_n,
+   and the slopes s_i of their monotone cubic interpolant; n = 0 without it */
+typedef struct {
+  PetscInt   n;
+  PetscReal *v, *mu, *s;
+} RollerFrictionTable;
 
 /* The obstacle (the sheet): height g(t) = min(speed t, depth) - r_outer, lab-frame position X(t) = sheet_speed t
    along e1, and Coulomb friction mu(v) = mu + (mu_s - mu) exp(-|v|/v_c) (friction = 0: frictionless; decay = 0:
-   constant mu) */
+   constant mu), or the interpolant of a table (then friction = mu_n, its value beyond the last speed, and
+   friction_static = mu_1, its value at rest; decay 0) */
 typedef struct {
-  PetscBool on;
-  PetscReal speed, depth, sheet_speed;
-  PetscReal friction, friction_static, friction_decay;
+  PetscBool           on;
+  PetscReal           speed, depth, sheet_speed;
+  PetscReal           friction, friction_static, friction_decay;
+  RollerFrictionTable table;
+  PetscReal           sheet_mass, sheet_resistance; /* -sheet_mass: the sheet moves by its own forces (contact/contact_sheet.c); 0: kinematic */
 } RollerObstacle;
+
+/* The axle and drive (-axle, model/axle.c, docs/model.md section 8): the hub a rigid body that translates (mass,
+   vertical spring preloaded to the nip force per unit width, ramped in over nip_ramp, and a stiff horizontal spring: the
+   bracket) and turns (inertia), driven through a torsional spring and damper by the motor, whose angle is the
+   frame's theta(t). Off: the hub is clamped to theta(t), as before. hub: the rigid hub's coupling with the body and its
+   state (model/axle.h), NULL when off. */
+typedef struct {
+  PetscBool            on;
+  PetscReal            mass, inertia, stiffness, stiffness_x, nip_force, nip_ramp;
+  PetscReal            drive_stiffness, drive_damping;
+  struct _n_RollerHub *hub;
+} RollerAxle;
 
 /* The discretization choices (model/fe.c) */
 typedef struct {
@@ -147,7 +193,8 @@ typedef struct {
    T^T G T and the loads are T^T L (model/mass.c). */
 typedef struct {
   Mat       M, K;
-  Mat       G; /* the gyroscopic matrix int rho N^T R(pi/2) N: only for the centred Coriolis velocity (its step matrix) */
+  Mat       Kd; /* with -rubber maxwell: the deviatoric stiffness at the relaxed shear modulus, int 2 mu dev eps[u] : dev eps[v] (else NULL) */
+  Mat       G;  /* the gyroscopic matrix int rho N^T R(pi/2) N: only for the centred Coriolis velocity (its step matrix) */
   Vec       L_euler, L_centrifugal;
   Vec       coordinates; /* nodal positions x_n of every free dof pair */
   PetscReal I0;          /* x . M x, the rigid body's polar moment over rho (the shaft torque, integrate/diagnostics.c) */
@@ -159,28 +206,32 @@ typedef struct {
   PetscBool reduced;
 } RollerOperators;
 
-/* A step matrix of a time scheme (model/solver.c): A = c_M M + c_K K (- c_G G with the centred Coriolis term, which
-   makes it non-symmetric: LU), factored once. A scheme has one or a fixed few (integrate/scheme*.c); the contact
-   layer keeps its condensation S = E^T A^{-1} E per operator, by id. */
+/* A step matrix of a time scheme (model/solver.c): A = c_M M + c_K K + c_D K_d (- c_G G with the centred Coriolis term,
+   which makes it non-symmetric: LU), factored once; c_D K_d: the Maxwell branches (ops.Kd; 0 without them). A scheme
+   has one or a fixed few (integrate/scheme*.c); the contact layer keeps its condensation S = E^T A^{-1} E per
+   operator, by id. */
 typedef struct {
-  Mat       A, A0, G; /* A0 = c_M M + c_K K and G: only with the centred Coriolis term (A = A0 - c_G G, re-made when theta' varies) */
-  KSP       ksp;
-  PetscReal c_M, c_K;
-  PetscInt  id;
+  Mat                     A, A0, G; /* A0 = c_M M + c_K K + c_D K_d and G: only with the centred Coriolis term (A = A0 - c_G G, re-made when theta' varies) */
+  KSP                     ksp;
+  PetscReal               c_M, c_K, c_D;
+  PetscInt                id;
+  struct _n_RollerBorder *border; /* -axle: the hub's unknowns eliminated, A_eff = A - C Dz C^T (model/axle.h); NULL otherwise */
 } RollerStepOperator;
 
 /* Time stepping (integrate/timestep.c) */
 typedef struct {
-  PetscReal     dt, max_time;
-  PetscBool     dt_set;      /* -ts_dt given (or from the checkpoint); otherwise chosen from -ts_phase_error (model/accuracy.c) */
-  PetscBool     dt_restart;  /* dt from the -restart checkpoint (integrate/checkpoint.c) */
-  PetscReal     phase_error; /* -ts_phase_error: the accuracy target that sets the default dt and h */
-  PetscBool     view;        /* -ts_view: print the chosen discretization and why */
-  PetscInt      max_steps;
-  PetscBool     quiet, monitor; /* -quiet: no progress line; -ts_monitor: a line every step */
-  char          scheme[64];     /* -ts_scheme (empty: the one that meets -ts_phase_error with the fewest solves) */
-  RollerScheme *schemes;        /* every registered scheme, set from options; the run's is chosen at set-up */
-  PetscInt      nschemes;
+  PetscReal      dt, max_time;
+  PetscBool      dt_set;                     /* -ts_dt given (or from the checkpoint); otherwise chosen from -ts_phase_error (model/accuracy.c) */
+  PetscBool      dt_restart, scheme_restart; /* dt, the scheme from the -restart checkpoint (integrate/checkpoint.c) */
+  PetscReal      phase_error;                /* -ts_phase_error: the accuracy target that sets the default dt and h */
+  PetscBool      view;                       /* -ts_view: print the chosen discretization and why */
+  PetscInt       max_steps;
+  PetscReal      max_wall;       /* -ts_max_wall: stop with a checkpoint before this many seconds of the process (0: none) */
+  PetscLogDouble wall_start;     /* the process's start (integrate/timestep.c) */
+  PetscBool      quiet, monitor; /* -quiet: no progress line; -ts_monitor: a line every step */
+  char           scheme[64];     /* -ts_scheme (empty: the one that meets -ts_phase_error with the fewest solves) */
+  RollerScheme  *schemes;        /* every registered scheme, set from options; the run's is chosen at set-up */
+  PetscInt       nschemes;
 } RollerTimeParams;
 
 /* The lowest radial breathing and torsional angular frequencies of the annulus (model/accuracy.c) and the radii
@@ -227,10 +278,25 @@ typedef struct {
   PetscReal  skew_defect[2]; /* the damped lab frame's ||A + A^T||/||A|| of A_L and B_L (-1: not built) */
 } RollerEigen;
 
-/* Checkpoint and restart (integrate/checkpoint.c) */
+/* A component's own state in the checkpoint (RollerCheckpointAddVec, RollerCheckpointAddReals in
+   integrate/checkpoint.c): a vector whose points have positions (restarted on any number of ranks by matching
+   them), or n reals that every rank holds */
+#define ROLLER_CHECKPOINT_ITEMS (3 + 4 * ROLLER_MAX_BRANCHES + 16) /* the scheme's kept vectors (Maxwell: 4 a branch) and the components' state */
 typedef struct {
-  char     file[PETSC_MAX_PATH_LEN], restart[PETSC_MAX_PATH_LEN];
-  PetscInt every;
+  char       name[64];
+  Vec       *v;              /* the address of a vector (followed when a step swaps it), or NULL: the reals below */
+  Vec        where;          /* the positions of v's points, (x, y) per point, v having the same number of points */
+  char       where_name[64]; /* its dataset ("nodes": the displacement's free nodes, ops.coordinates) */
+  PetscInt   n;
+  PetscReal *values;
+} RollerCheckpointItem;
+
+/* Checkpoint and restart (integrate/checkpoint*.c) */
+typedef struct {
+  char                 file[PETSC_MAX_PATH_LEN], restart[PETSC_MAX_PATH_LEN];
+  PetscInt             every;
+  PetscInt             nitems;
+  RollerCheckpointItem items[ROLLER_CHECKPOINT_ITEMS];
 } RollerCheckpoint;
 
 /* Initial state and verification (integrate/initial.c, verify/mms.c) */
@@ -251,6 +317,7 @@ struct _n_Roller {
   RollerMaterial       material;
   RollerRotation       rotation;
   RollerObstacle       obstacle;
+  RollerAxle           axle;
   RollerDiscretization disc;
   RollerOperators      ops;
   RollerTimeParams     ts;

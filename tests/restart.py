@@ -30,15 +30,20 @@ c = Checker("restart")
 contact = ["-obstacle", "-obstacle_speed", "0.05", "-obstacle_depth", "0.01"]
 # friction: the cumulative shaft, sheet and friction works and the shaft torque continue from the checkpoint
 friction = contact + ["-friction", "0.8", "-sheet_speed", "0.155", "-viscosity", "0.0115"]
-for scene, extra in (("free", []), ("contact", contact + ["-damping", "1"]), ("friction", friction)):
+# the generalized Maxwell rubber: its branches' internal variables (z_i and K_d z_i of the kept levels) continue from
+# the checkpoint; rolling with friction (the trapezoidal rule, z at half levels) and free with dmf (z at two levels)
+maxwell = ["-rubber", "maxwell", "-rubber_loss_factor", "0.1", "-rubber_band", "0.1,10"]
+scenes = (("free", []), ("contact", contact + ["-damping", "1"]), ("friction", friction),
+          ("maxwell", contact + ["-friction", "0.8", "-sheet_speed", "0.155"] + maxwell), ("maxwell_dmf", maxwell + ["-ts_scheme", "dmf"]))
+for scene, extra in scenes:
     base = ["-mesh_h", "0.05", "-ts_max_time", "4", "-quiet"] + extra
-    cm = (lambda tag: ["-contact_monitor", f"ascii:{scene}_{tag}_contact.csv:ascii_csv"]) if extra else (lambda tag: [])
+    cm = (lambda tag: ["-contact_monitor", f"ascii:{scene}_{tag}_contact.csv:ascii_csv"]) if "-obstacle" in extra else (lambda tag: [])
     run(base + ["-monitor_csv", f"{scene}_full.csv"] + cm("full"))
     run(base + ["-ts_max_steps", "150", "-checkpoint_every", "50", "-checkpoint", f"{scene}.h5", "-monitor_csv", f"{scene}_cut.csv"])
     run(base + ["-restart", f"{scene}.h5", "-monitor_csv", f"{scene}_cut.csv"] + cm("restart"))
     same = open(f"{scene}_full.csv").read() == open(f"{scene}_cut.csv").read()
     c.check(same, f"{scene}: stopped at step 150, restarted from the step-150 checkpoint: CSV identical to the uninterrupted run")
-    if extra:  # the contact monitor after a restart: its first rows are the uninterrupted run's (not 0 nodes)
+    if "-obstacle" in extra:  # the contact monitor after a restart: its first rows are the uninterrupted run's (not 0 nodes)
         full = open(f"{scene}_full_contact.csv").read().splitlines()
         restarted = open(f"{scene}_restart_contact.csv").read().splitlines()
         first = restarted[1] if len(restarted) > 1 else ""
@@ -65,7 +70,11 @@ c.check(proc.returncode == 0 and "-restart term.h5" in out and os.path.exists("t
 run(base + ["-restart", "term.h5", "-monitor_csv", "term_cut.csv"])
 c.check(open("term_full.csv").read() == open("term_cut.csv").read(), "SIGTERM + restart: CSV identical to the uninterrupted run")
 
-# SIGKILL while checkpointing every step: the latest checkpoint is always complete
+# SIGKILL while checkpointing every step: the latest checkpoint is always complete (an earlier run's file removed first:
+# the wait below must see this run's)
+for stale in ("kill.h5", "kill.h5.tmp"):
+    if os.path.exists(stale):
+        os.remove(stale)
 proc = subprocess.Popen([EXE] + base + ["-checkpoint", "kill.h5", "-checkpoint_every", "1"], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
 wait_for("kill.h5")
 time.sleep(0.5)

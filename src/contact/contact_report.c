@@ -6,7 +6,7 @@
 /* The KKT residual of (xi, lambda) for the step's QP (docs/contact.md), with F = max(||b||, ||E N lambda||):
    max of  max(0, -min gap)/r_C,  max(0, -min lambda)/F,  max |lambda_n gap_n|/(F r_C),
    ||A xi - b - E N lambda||/F. Also returns the least gap over all Gamma_C nodes. With M xi and K xi (or NULL), A xi =
-   c_M M xi + c_K K xi costs no product (A without the centred Coriolis term). */
+   c_M M xi + c_K K xi costs no product (A without the centred Coriolis term and the Maxwell branches' c_D K_d). */
 PetscErrorCode RollerContactKKT(Roller ctx, RollerContact c, Vec xi, Vec Mxi, Vec Kxi, const PetscReal lambda[], PetscReal *gap_min, PetscReal *kkt)
 {
   RollerContactAccepted *acc = &c->acc;
@@ -16,8 +16,18 @@ PetscErrorCode RollerContactKKT(Roller ctx, RollerContact c, Vec xi, Vec Mxi, Ve
   PetscCall(RollerContactGather(c, xi, c->nodes.red));
   PetscCall(RollerContactGaps(c, c->nodes.red, c->step.gap, gap_min));
   PetscCall(RollerContactForce(c, lambda, lambda == acc->result.lambda ? acc->result.lambda_t : NULL, acc->force));
-  if (Mxi && Kxi && !c->step.op->G) PetscCall(VecAXPBYPCZ(acc->work, c->step.op->c_M, c->step.op->c_K, 0.0, Mxi, Kxi));
+  if (Mxi && Kxi && !c->step.op->G && c->step.op->c_D == 0) PetscCall(VecAXPBYPCZ(acc->work, c->step.op->c_M, c->step.op->c_K, 0.0, Mxi, Kxi));
   else PetscCall(MatMult(c->step.op->A, xi, acc->work));
+  if (c->step.op->border) { /* -axle: A_eff xi = A xi - C Dz C^T xi (model/axle.h) */
+    PetscScalar d[3];
+    PetscReal   r[3], w[3];
+
+    PetscCall(VecMDot(xi, 3, c->step.op->border->C, d));
+    for (PetscInt i = 0; i < 3; ++i) r[i] = PetscRealPart(d[i]);
+    RollerMat3Vec(ctx->axle.hub->s.Dz, r, w);
+    for (PetscInt i = 0; i < 3; ++i) d[i] = -w[i];
+    PetscCall(VecMAXPY(acc->work, 3, d, c->step.op->border->C));
+  }
   PetscCall(VecAXPBYPCZ(acc->work, -1.0, -1.0, 1.0, acc->b, acc->force));
   PetscCall(VecNorm(acc->work, NORM_2, &nr));
   PetscCall(VecNorm(acc->b, NORM_2, &nb));

@@ -173,7 +173,7 @@ static PetscErrorCode ComposedSetUp(RollerScheme s, Roller ctx)
     cp->op[i] = NULL;
     for (PetscInt k = 0; k < i; ++k)
       if (cp->gamma[k] == cp->gamma[i]) cp->op[i] = cp->op[k];
-    if (!cp->op[i]) PetscCall(RollerSchemeAddOperator(s, ctx, 2.0 * rho / (h * h) + delta * ctx->disc.damping / h, 0.5 + delta * ctx->material.viscosity / h, NULL, 0.0, &cp->op[i]));
+    if (!cp->op[i]) PetscCall(RollerSchemeAddOperator(s, ctx, 2.0 * rho / (h * h) + delta * ctx->disc.damping / h, 0.5 + delta * ctx->material.viscosity / h, 0.0, NULL, 0.0, &cp->op[i]));
   }
   for (PetscInt j = 0; j < 2; ++j) {
     PetscCall(VecDuplicate(ctx->state.cur, &cp->X[j]));
@@ -187,15 +187,15 @@ static PetscErrorCode ComposedSetUp(RollerScheme s, Roller ctx)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode ComposedKept(RollerScheme s, Roller ctx, PetscInt *n, Vec v[], const char *names[])
+static PetscErrorCode ComposedKept(RollerScheme s, Roller ctx, PetscInt *n, Vec *v[], const char *names[])
 {
   Composed *cp = (Composed *)s->data;
 
   PetscFunctionBeginUser;
   *n       = 3;
-  v[0]     = ctx->state.velocity;
-  v[1]     = ctx->state.Mcur;
-  v[2]     = cp->Mv;
+  v[0]     = &ctx->state.velocity;
+  v[1]     = &ctx->state.Mcur;
+  v[2]     = &cp->Mv;
   names[0] = "v_k";
   names[1] = "M_xi_k";
   names[2] = "M_v_k";
@@ -224,8 +224,10 @@ static PetscErrorCode ComposedUsable(RollerScheme s, Roller ctx, const char **wh
   PetscCall(PetscOptionsHasName(NULL, NULL, "-coriolis_velocity", &coriolis));
   if (ctx->obstacle.friction > 0) *why = "Coulomb friction cannot change sign in a composition's negative stage (a three-level scheme takes it)";
   else if (ctx->disc.static_solve) *why = "-static is the DMF's one step with A = K";
+  else if (ctx->axle.on) *why = "the hub's unknowns (-axle) are the three-level schemes'";
   else if (coriolis) *why = "-coriolis_velocity is the three-level schemes' (this one splits the Coriolis force off exactly)";
   else if (ctx->rom) *why = "-rom steps with a three-level scheme (the composition's exact Coriolis flow is nodal)";
+  else if (ctx->material.rubber == ROLLER_RUBBER_MAXWELL) *why = "-rubber maxwell's branches are the three-level schemes' (dmf, trapezoidal)";
   PetscFunctionReturn(0);
 }
 

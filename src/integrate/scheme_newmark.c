@@ -1,50 +1,35 @@
-/* The three-level schemes (docs/model.md sections 2 and 2.1): Newmark with gamma = 1/2 in three-level form,
+/* The three-level schemes (docs/model.md sections 2, 2.1, 2.2): Newmark with gamma = 1/2 in three-level form,
      rho (xi^k - 2 xi^{k-1} + xi^{k-2})/dt^2 + K (beta xi^k + (1 - 2 beta) xi^{k-1} + beta xi^{k-2})
        + eta M (xi^k - xi^{k-2})/(2 dt) + tau K (xi^k - xi^{k-2})/(2 dt) = F^{k-1} (+ the contact force at t_k),
-   each step the minimization of a convex quadratic with the constant SPD matrix
-     A = rho/dt^2 M + (beta + tau/(2 dt)) K + eta/(2 dt) M:
+   (+ the Maxwell branches' forces, scheme_maxwell.c), each step the minimization of a convex quadratic with the
+   constant SPD matrix A = rho/dt^2 M + (beta + tau/(2 dt)) K + eta/(2 dt) M (+ c_D K_d):
      dmf          beta = 1/2, the paper's "Crank-Nicolson" discrete Morse flow (paper (3.1)-(3.2)); bit-identical to
                   Roller's step before the schemes were components (tests/regression.py);
-     trapezoidal  beta = 1/4, the trapezoidal rule (average acceleration): cos(W dt) = (1 - x^2/4)/(1 + x^2/4),
-                  x = w dt, a phase error x^3/12 per step instead of the DMF's 5 x^3/24, the same cost per step.
-   Energy: E^k = rho/2 |xi^k - xi^{k-1}|^2_M/dt^2 + beta/2 (a(xi^k, xi^k) + a(xi^{k-1}, xi^{k-1}))
-                 + (1 - 2 beta)/2 a(xi^k, xi^{k-1});
-   multiplying the step by (xi^k - xi^{k-2})/2 gives the balance of docs/model.md section 2 for any beta (the
-   beta terms telescope). The products M xi of the last three levels are kept (state.Mcur, Mprev, Mprev2; M xi^k from
-   the step's equation), so that the load F^{k-1}, the trapezoidal right-hand side and the angular momentum cost no
-   product with M; the energy costs one, when a row is written. */
-#include "scheme_impl.h"
+     trapezoidal  beta = 1/4, the trapezoidal rule: cos(W dt) = (1 - x^2/4)/(1 + x^2/4), x = w dt, a phase error x^3/12
+                  per step instead of the DMF's 5 x^3/24, the same cost per step.
+   Energy: E^k = rho/2 |xi^k - xi^{k-1}|^2_M/dt^2 + beta/2 (a(xi^k, xi^k) + a(xi^{k-1}, xi^{k-1})) + (1 - 2 beta)/2
+   a(xi^k, xi^{k-1}) (+ the branches'); the step times (xi^k - xi^{k-2})/2 gives the balance of docs/model.md section 2
+   for any beta (the beta terms telescope). The products M xi of the last three levels are kept (M xi^k from the step's
+   equation), so that the load F^{k-1}, the trapezoidal right-hand side and the angular momentum cost no product with
+   M; the energy costs one, when a row is written. */
+#include "scheme_newmark.h"
 #include "model/model.h"
 
-typedef struct {
-  PetscReal           beta;
-  RollerStepOperator *op;
-  Vec                 Mprev, Mprev2, Mv; /* M xi^{k-1}, M xi^{k-2} (state.Mcur = M xi^k); scratch */
-  PetscReal           kinetic;           /* (xi^k - xi^{k-1}) . M (xi^k - xi^{k-1}) of step kinetic_step (made when asked) */
-  PetscInt            kinetic_step;
-} Newmark;
-
-/* v^{k-1} of the explicit Coriolis term as c1 xi^{k-1} + c2 xi^{k-2} + c3 xi^{k-3} (docs/model.md section 2);
-   centred: none (it is in A). */
+/* v^{k-1} of the explicit Coriolis term, c1 xi^{k-1} + c2 xi^{k-2} + c3 xi^{k-3} (docs/model.md section 2; centred: in A) */
 static void CoriolisVelocity(Roller ctx, PetscReal c[3])
 {
-  const PetscReal dt = ctx->ts.dt;
+  static const PetscReal coefficients[3][3] = {
+    {1.0, -1.0, 0.0}, /* backward */
+    {1.5, -2.0, 0.5}, /* extrapolated: (3 xi^{k-1} - 4 xi^{k-2} + xi^{k-3})/(2 dt) */
+    {0.0, 0.0,  0.0}  /* centred */
+  };
 
-  c[0] = c[1] = c[2] = 0.0;
-  if (ctx->disc.coriolis == ROLLER_CORIOLIS_BACKWARD) {
-    c[0] = 1.0 / dt;
-    c[1] = -1.0 / dt;
-  } else if (ctx->disc.coriolis == ROLLER_CORIOLIS_EXTRAPOLATED) {
-    c[0] = 3.0 / (2.0 * dt);
-    c[1] = -4.0 / (2.0 * dt);
-    c[2] = 1.0 / (2.0 * dt);
-  }
+  for (PetscInt i = 0; i < 3; ++i) c[i] = coefficients[ctx->disc.coriolis][i] / ctx->ts.dt;
 }
 
-/* rot = R(-pi/2) M (theta'' xi^{k-1} + 2 theta' v^{k-1}) from the kept products (M commutes with R(-pi/2)), and
-   the external load F^{k-1} = rho (rot + theta'^2 M xi^{k-1}) + rho (theta'' L_euler + theta'^2 L_centrifugal)
-   (the manufactured load is added by the caller): its work closes the energy balance. Before the levels move:
-   Mcur = M xi^{k-1}. */
+/* rot = R(-pi/2) M (theta'' xi^{k-1} + 2 theta' v^{k-1}) from the kept products (M commutes with R(-pi/2)), and the
+   external load F^{k-1} = rho (rot + theta'^2 M xi^{k-1}) + rho (theta'' L_euler + theta'^2 L_centrifugal) (the
+   manufactured load: the caller's), whose work closes the energy balance. Before the levels move: Mcur = M xi^{k-1}. */
 static PetscErrorCode LoadFromProducts(Roller ctx, Newmark *nm, PetscReal t1, Vec rot)
 {
   const PetscReal rho = ctx->material.density;
@@ -93,10 +78,9 @@ static PetscErrorCode RightHandSideDMF(Roller ctx, PetscReal t1, Vec b)
   PetscFunctionReturn(0);
 }
 
-/* Any beta, from the kept products (no product with M): with M w = rho 2/dt^2 M xi^{k-1} + (eta/(2 dt) - rho/dt^2)
-   M xi^{k-2} + (F^{k-1} - the rigid loads),
-     b = M w - (1 - 2 beta) K xi^{k-1} - (beta - tau/(2 dt)) K xi^{k-2} + the rigid loads
-       = rho 2/dt^2 M xi^{k-1} + (eta/(2 dt) - rho/dt^2) M xi^{k-2} - (1 - 2 beta) K xi^{k-1} - (beta - tau/(2 dt)) K xi^{k-2} + F^{k-1}. */
+/* Any beta, from the kept products (no product with M): b = M w - (1 - 2 beta) K xi^{k-1} - (beta - tau/(2 dt)) K xi^{k-2}
+   + the rigid loads, i.e. (M w = rho 2/dt^2 M xi^{k-1} + (eta/(2 dt) - rho/dt^2) M xi^{k-2} + F^{k-1} - the rigid loads)
+     b = rho 2/dt^2 M xi^{k-1} + (eta/(2 dt) - rho/dt^2) M xi^{k-2} - (1 - 2 beta) K xi^{k-1} - (beta - tau/(2 dt)) K xi^{k-2} + F^{k-1}. */
 static PetscErrorCode RightHandSide(Roller ctx, Newmark *nm, Vec b)
 {
   const PetscReal rho = ctx->material.density, dt = ctx->ts.dt;
@@ -108,12 +92,21 @@ static PetscErrorCode RightHandSide(Roller ctx, Newmark *nm, Vec b)
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode HubStepBegin(Roller ctx, Newmark *nm, PetscReal t1)
+{
+  PetscReal c[3];
+
+  PetscFunctionBeginUser;
+  CoriolisVelocity(ctx, c);
+  PetscCall(RollerHubStepBegin(ctx, nm->op, nm->mx, nm->beta, t1, c, ctx->state.rhs, ctx->state.load, ctx->state.work));
+  PetscFunctionReturn(0);
+}
+
 /* Without contact (and the centred Coriolis term) the trapezoidal family solves for the second difference
    Delta = xi^k - 2 xi^{k-1} + xi^{k-2} (b - A (2 xi^{k-1} - xi^{k-2}), no scalar of dt in front of M):
      A Delta = F^{k-1} - K xi^{k-1} - tau/dt K (xi^{k-1} - xi^{k-2}) - eta/dt M (xi^{k-1} - xi^{k-2}).
-   The same scheme; but b's rho/dt^2 M xi terms, rounded once for the run, do not cancel A's rounded entries exactly,
-   and the mismatch, the same every step, drifted the energy linearly (2.8e-17 E a step at dt = 0.0125, 1.8e-18 at
-   dt = 2^-6 where the scalars are exact; 5.2e-12 over 1e5 steps, 1.1e-13 in this form: docs/model.md section 2.1). */
+   The same scheme; but b's rho/dt^2 M xi terms, rounded once for the run, do not cancel A's rounded entries, and the
+   mismatch, the same every step, drifted the energy linearly (docs/model.md section 2.1: 5.2e-12 over 1e5 steps, 1.1e-13 in this form). */
 static PetscErrorCode RightHandSideSecondDifference(Roller ctx, Newmark *nm, Vec r)
 {
   const PetscReal dt = ctx->ts.dt, eta = ctx->disc.damping, tau = ctx->material.viscosity;
@@ -136,6 +129,7 @@ static PetscErrorCode NewLevel(Roller ctx, Newmark *nm, PetscBool product)
 
   PetscFunctionBeginUser;
   PetscCall(MatMult(ctx->ops.K, ctx->state.cur, ctx->state.Kcur));
+  if (nm->mx) PetscCall(RollerMaxwellNewLevel(nm->mx, ctx)); /* K_d xi^k, the branches' update */
   tmp             = nm->Mprev2;
   nm->Mprev2      = nm->Mprev;
   nm->Mprev       = ctx->state.Mcur;
@@ -146,6 +140,8 @@ static PetscErrorCode NewLevel(Roller ctx, Newmark *nm, PetscBool product)
       PetscCall(RollerContactForceVector(ctx->contact, ctx->state.Mcur));
       PetscCall(VecAXPY(ctx->state.Mcur, 1.0, ctx->state.rhs));
     } else PetscCall(VecCopy(ctx->state.rhs, ctx->state.Mcur));
+    if (nm->mx) PetscCall(VecAXPY(ctx->state.Mcur, -op->c_D, RollerMaxwellKdCur(nm->mx)));
+    if (op->border) PetscCall(VecMAXPY(ctx->state.Mcur, 3, ctx->axle.hub->s.delta, op->border->C)); /* b = b_eff + C Dz b_q, minus C q^k */
     PetscCall(VecAXPBY(ctx->state.Mcur, -op->c_K / op->c_M, 1.0 / op->c_M, ctx->state.Kcur));
   }
   PetscCall(VecWAXPY(ctx->state.velocity, -1.0, ctx->state.prev, ctx->state.cur));
@@ -159,7 +155,7 @@ static PetscErrorCode NewmarkStep(RollerScheme s, Roller ctx)
 {
   Newmark        *nm = (Newmark *)s->data;
   const PetscReal dt = ctx->ts.dt, t1 = ctx->state.step * dt, t = (ctx->state.step + 1) * dt;
-  const PetscBool second = (PetscBool)(nm->beta != 0.5 && !ctx->contact && !nm->op->G && nm->op->c_M != 0);
+  const PetscBool second = (PetscBool)(nm->beta != 0.5 && !ctx->contact && !nm->op->G && nm->op->c_M != 0 && !ctx->axle.on);
   Vec             tmp;
   PetscReal       norm;
 
@@ -180,6 +176,8 @@ static PetscErrorCode NewmarkStep(RollerScheme s, Roller ctx)
     PetscCall(VecAXPY(ctx->state.load, 1.0, ctx->state.next));
   }
   if (second) PetscCall(RightHandSideSecondDifference(ctx, nm, ctx->state.rhs));
+  if (nm->mx) PetscCall(RollerMaxwellRightHandSide(nm->mx, second, ctx->state.rhs));
+  if (ctx->axle.on) PetscCall(HubStepBegin(ctx, nm, t1)); /* the hub's load, history and elimination (scheme_hub.c) */
   if (ctx->contact) {
     const RollerContactStage stage = {
       nm->op, ctx->state.time, ctx->state.cur, ctx->state.prev, {2.0, -1.0},
@@ -206,6 +204,7 @@ static PetscErrorCode NewmarkStep(RollerScheme s, Roller ctx)
   PetscCall(VecNorm(ctx->state.next, NORM_INFINITY, &norm));
   PetscCheck(!PetscIsInfOrNanReal(norm), ctx->comm, PETSC_ERR_FP, "The solution is not finite at step %" PetscInt_FMT ", t = %g; the last good state (step %" PetscInt_FMT ") is in the checkpoint %s", ctx->state.step + 1, (double)t, ctx->state.step,
              ctx->ck.file);
+  if (ctx->axle.on) PetscCall(RollerHubStepEnd(ctx, nm->op, nm->beta, ctx->state.next));
   tmp               = ctx->state.prev2;
   ctx->state.prev2  = ctx->state.prev;
   ctx->state.prev   = ctx->state.cur;
@@ -215,82 +214,10 @@ static PetscErrorCode NewmarkStep(RollerScheme s, Roller ctx)
   ctx->state.Kprev2 = ctx->state.Kprev;
   ctx->state.Kprev  = ctx->state.Kcur;
   ctx->state.Kcur   = tmp;
+  if (ctx->axle.on) PetscCall(RollerHubShift(ctx, ctx->state.cur)); /* before NewLevel: the branches' update reads q^k */
   PetscCall(NewLevel(ctx, nm, second));
   ctx->state.step++;
   ctx->state.time = ctx->state.step * dt;
-  PetscFunctionReturn(0);
-}
-
-/* The kinetic term d . M d, d = xi^k - xi^{k-1}, when asked: for the DMF with its own product (its golden energy
-   bits), else from the kept products, M xi^k - M xi^{k-1} (no product; the cancellation costs 1e-15 of E). */
-static PetscErrorCode NewmarkEnergy(RollerScheme s, Roller ctx, PetscReal *energy)
-{
-  Newmark        *nm = (Newmark *)s->data;
-  const PetscReal dt = ctx->ts.dt;
-  PetscScalar     pot1, pot2, cross = 0.0;
-
-  PetscFunctionBeginUser;
-  if (nm->kinetic_step != ctx->state.step) {
-    Vec         d = ctx->state.work, Md = ctx->state.next; /* scratch between steps */
-    PetscScalar kin;
-
-    PetscCall(VecWAXPY(d, -1.0, ctx->state.prev, ctx->state.cur));
-    if (nm->beta == 0.5) PetscCall(MatMult(ctx->ops.M, d, Md)); /* the DMF's historical bits */
-    else PetscCall(VecWAXPY(Md, -1.0, nm->Mprev, ctx->state.Mcur));
-    PetscCall(VecDot(d, Md, &kin));
-    nm->kinetic      = PetscRealPart(kin);
-    nm->kinetic_step = ctx->state.step;
-  }
-  PetscCall(VecDot(ctx->state.cur, ctx->state.Kcur, &pot1));
-  PetscCall(VecDot(ctx->state.prev, ctx->state.Kprev, &pot2));
-  if (nm->beta != 0.5) PetscCall(VecDot(ctx->state.cur, ctx->state.Kprev, &cross));
-  *energy = 0.5 * ctx->material.density * nm->kinetic / (dt * dt) + 0.5 * nm->beta * PetscRealPart(pot1 + pot2) + 0.5 * (1.0 - 2.0 * nm->beta) * PetscRealPart(cross);
-  PetscFunctionReturn(0);
-}
-
-/* The energy balance of the step from xi^{k-1} to xi^k (docs/model.md section 2): with D = xi^k - xi^{k-2},
-     E^k - E^{k-1} = 1/2 F^{k-1} . D + 1/2 (E N lambda^k) . D - eta/(4 dt) D . M D - tau/(4 dt) D . K D,
-   the load's work, the contact's (contact layer), the mass damping's and the Kelvin-Voigt dissipation. */
-static PetscErrorCode NewmarkBalance(RollerScheme s, Roller ctx, RollerStepInfo *info)
-{
-  Newmark        *nm = (Newmark *)s->data;
-  const PetscReal dt = ctx->ts.dt;
-  Vec             D = ctx->state.work, W = ctx->state.next; /* scratch between steps */
-  PetscScalar     dot;
-
-  PetscFunctionBeginUser;
-  if (ctx->state.step == 0) PetscFunctionReturn(0);
-  PetscCall(VecWAXPY(D, -1.0, ctx->state.prev2, ctx->state.cur));
-  PetscCall(VecDot(ctx->state.load, D, &dot));
-  info->load_work = 0.5 * PetscRealPart(dot);
-  if (ctx->disc.damping > 0) {
-    PetscCall(VecWAXPY(W, -1.0, nm->Mprev2, ctx->state.Mcur));
-    PetscCall(VecDot(D, W, &dot));
-    info->damping_dissipation = ctx->disc.damping / (4.0 * dt) * PetscRealPart(dot);
-  }
-  if (ctx->material.viscosity > 0) {
-    PetscCall(VecWAXPY(W, -1.0, ctx->state.Kprev2, ctx->state.Kcur));
-    PetscCall(VecDot(D, W, &dot));
-    info->viscous_dissipation = ctx->material.viscosity / (4.0 * dt) * PetscRealPart(dot);
-  }
-  if (ctx->contact) PetscCall(RollerContactEnergyAdd(ctx, ctx->contact, ctx->state.prev2, ctx->state.time - 2.0 * dt, 0.5, info));
-  PetscFunctionReturn(0);
-}
-
-/* M xi of the three levels: made from the step's equation, a product of the level would differ in its last bits, so a
-   restart reads them from the checkpoint. */
-static PetscErrorCode NewmarkKept(RollerScheme s, Roller ctx, PetscInt *n, Vec v[], const char *names[])
-{
-  Newmark *nm = (Newmark *)s->data;
-
-  PetscFunctionBeginUser;
-  *n       = 3;
-  v[0]     = ctx->state.Mcur;
-  v[1]     = nm->Mprev;
-  v[2]     = nm->Mprev2;
-  names[0] = "M_xi_k";
-  names[1] = "M_xi_k1";
-  names[2] = "M_xi_k2";
   PetscFunctionReturn(0);
 }
 
@@ -302,12 +229,13 @@ static PetscErrorCode NewmarkSetUp(RollerScheme s, Roller ctx)
   const PetscReal dt = ctx->ts.dt, rho = ctx->material.density;
 
   PetscFunctionBeginUser;
-  if (ctx->disc.static_solve) PetscCall(RollerSchemeAddOperator(s, ctx, 0.0, 1.0, NULL, 0.0, &nm->op));
+  PetscCall(RollerMaxwellCreate(ctx, nm->beta, &nm->mx));
+  if (ctx->disc.static_solve) PetscCall(RollerSchemeAddOperator(s, ctx, 0.0, 1.0, 0.0, NULL, 0.0, &nm->op));
   else {
     PetscReal td0;
 
     RollerTheta(ctx, 0.0, NULL, &td0, NULL); /* centred Coriolis: theta'(0), re-made every step only if theta' varies */
-    PetscCall(RollerSchemeAddOperator(s, ctx, rho / (dt * dt) + ctx->disc.damping / (2.0 * dt), nm->beta + ctx->material.viscosity / (2.0 * dt), ctx->ops.G, rho * td0 / dt, &nm->op));
+    PetscCall(RollerSchemeAddOperator(s, ctx, rho / (dt * dt) + ctx->disc.damping / (2.0 * dt), nm->beta + ctx->material.viscosity / (2.0 * dt), RollerMaxwellStiffness(nm->mx), ctx->ops.G, rho * td0 / dt, &nm->op));
   }
   PetscCall(VecDuplicate(ctx->state.cur, &nm->Mprev));
   PetscCall(VecDuplicate(ctx->state.cur, &nm->Mprev2));
@@ -318,6 +246,7 @@ static PetscErrorCode NewmarkSetUp(RollerScheme s, Roller ctx)
   PetscCall(VecWAXPY(ctx->state.velocity, -1.0, ctx->state.prev, ctx->state.cur));
   PetscCall(VecScale(ctx->state.velocity, 1.0 / dt));
   nm->kinetic_step = -1;
+  if (ctx->axle.on) PetscCall(RollerHubSetUp(ctx));
   PetscFunctionReturn(0);
 }
 
@@ -348,6 +277,7 @@ static PetscErrorCode NewmarkDestroy(RollerScheme s)
   PetscCall(VecDestroy(&nm->Mprev));
   PetscCall(VecDestroy(&nm->Mprev2));
   PetscCall(VecDestroy(&nm->Mv));
+  PetscCall(RollerMaxwellDestroy(&nm->mx));
   PetscFunctionReturn(0);
 }
 
@@ -374,9 +304,9 @@ static PetscErrorCode NewmarkCreate(RollerScheme s, PetscReal beta)
   s->ops->phase   = NewmarkPhase;
   s->ops->setup   = NewmarkSetUp;
   s->ops->step    = NewmarkStep;
-  s->ops->energy  = NewmarkEnergy;
-  s->ops->balance = NewmarkBalance;
-  s->ops->kept    = NewmarkKept;
+  s->ops->energy  = RollerNewmarkEnergy;
+  s->ops->balance = RollerNewmarkBalance;
+  s->ops->kept    = RollerNewmarkKept;
   s->ops->view    = NewmarkView;
   s->ops->destroy = NewmarkDestroy;
   PetscFunctionReturn(0);

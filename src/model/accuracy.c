@@ -50,20 +50,23 @@ static PetscErrorCode LowestRoot(Roller ctx, Determinant det, const char *what, 
 {
   const PetscReal ri = ctx->mesh.r_inner, ro = ctx->mesh.r_outer, L = ro - ri;
   const PetscInt  n = 4000;
-  PetscReal       a = 1e-3 / L, fa = det(a, ri, ro, ctx->material.lambda, ctx->material.mu), b = a, fb = fa;
+  PetscReal       lambda, mu, a, fa, b, fb;
   PetscInt        i;
 
   PetscFunctionBeginUser;
+  RollerRubberInstantaneous(&ctx->material, &lambda, &mu);
+  a = b = 1e-3 / L;
+  fa = fb = det(a, ri, ro, lambda, mu);
   for (i = 1; i <= n; i++) {
     b  = 40.0 * i / (n * L);
-    fb = det(b, ri, ro, ctx->material.lambda, ctx->material.mu);
+    fb = det(b, ri, ro, lambda, mu);
     if ((fa < 0) != (fb < 0)) break;
     a  = b;
     fa = fb;
   }
   PetscCheck(i <= n, ctx->comm, PETSC_ERR_PLIB, "No %s mode found below k = %g for -r_inner %g -r_outer %g", what, (double)(40.0 / L), (double)ri, (double)ro);
   for (i = 0; i < 100 && b - a > 1e-15 * b; i++) {
-    const PetscReal m = 0.5 * (a + b), fm = det(m, ri, ro, ctx->material.lambda, ctx->material.mu);
+    const PetscReal m = 0.5 * (a + b), fm = det(m, ri, ro, lambda, mu);
 
     if ((fa < 0) == (fm < 0)) {
       a  = m;
@@ -75,14 +78,18 @@ static PetscErrorCode LowestRoot(Roller ctx, Determinant det, const char *what, 
 }
 
 /* Angular frequencies of the breathing (P) and torsional (S) modes of the annulus at rest, computed when the
-   radii are not those of the last computation (the material is set once, before either). */
+   radii are not those of the last computation (the material is set once, before either). With -rubber maxwell, of the
+   instantaneous (unrelaxed) solid: the highest the modes reach, at frequencies far above the branches' 1/tau_i (the
+   time step's phase error is that of the fastest mode; docs/model.md section 6.2). */
 PetscErrorCode RollerModeFrequencies(Roller ctx, PetscReal *w_breathing, PetscReal *w_torsion)
 {
-  const PetscReal c_p = PetscSqrtReal((ctx->material.lambda + 2 * ctx->material.mu) / ctx->material.density), c_s = PetscSqrtReal(ctx->material.mu / ctx->material.density);
-  RollerModes    *modes = &ctx->modes;
-  PetscReal       k;
+  RollerModes *modes = &ctx->modes;
+  PetscReal    k, lambda, mu, c_p, c_s;
 
   PetscFunctionBeginUser;
+  RollerRubberInstantaneous(&ctx->material, &lambda, &mu);
+  c_p = PetscSqrtReal((lambda + 2 * mu) / ctx->material.density);
+  c_s = PetscSqrtReal(mu / ctx->material.density);
   if (modes->r_inner != ctx->mesh.r_inner || modes->r_outer != ctx->mesh.r_outer) {
     PetscCall(LowestRoot(ctx, BreathingDeterminant, "radial breathing", &k));
     modes->breathing = k * c_p;
@@ -104,23 +111,25 @@ PetscErrorCode RollerModeFrequencies(Roller ctx, PetscReal *w_breathing, PetscRe
    scheme's error is then set by the second and third modes as much as by the first. */
 PetscErrorCode RollerRadialModes(Roller ctx, PetscInt nmax, PetscReal w[], PetscReal a[], PetscInt *n)
 {
-  const PetscReal ri = ctx->mesh.r_inner, ro = ctx->mesh.r_outer, L = ro - ri, c_p = PetscSqrtReal((ctx->material.lambda + 2 * ctx->material.mu) / ctx->material.density);
+  const PetscReal ri = ctx->mesh.r_inner, ro = ctx->mesh.r_outer, L = ro - ri;
   const PetscInt  nq = 200, nscan = 40000;
-  PetscReal      *xq, *wq, k0 = 1e-3 / L, f0, sum = 0.0;
+  PetscReal      *xq, *wq, k0 = 1e-3 / L, f0, sum = 0.0, lambda, mu, c_p;
 
   PetscFunctionBeginUser;
+  RollerRubberInstantaneous(&ctx->material, &lambda, &mu); /* the unrelaxed solid's, as RollerModeFrequencies */
+  c_p = PetscSqrtReal((lambda + 2 * mu) / ctx->material.density);
   PetscCall(PetscMalloc2(nq, &xq, nq, &wq));
   PetscCall(PetscDTGaussQuadrature(nq, ri, ro, xq, wq));
-  f0 = BreathingDeterminant(k0, ri, ro, ctx->material.lambda, ctx->material.mu);
+  f0 = BreathingDeterminant(k0, ri, ro, lambda, mu);
   *n = 0;
   for (PetscInt i = 1; i <= nscan && *n < nmax; i++) {
-    const PetscReal k1 = (PetscReal)i * 4.0 * nmax / (nscan * L), f1 = BreathingDeterminant(k1, ri, ro, ctx->material.lambda, ctx->material.mu);
+    const PetscReal k1 = (PetscReal)i * 4.0 * nmax / (nscan * L), f1 = BreathingDeterminant(k1, ri, ro, lambda, mu);
 
     if ((f0 < 0) != (f1 < 0)) {
       PetscReal lo = k0, hi = k1, flo = f0, k, B, m = 0.0, F = 0.0;
 
       for (PetscInt it = 0; it < 100 && hi - lo > 1e-14 * hi; it++) {
-        const PetscReal mid = 0.5 * (lo + hi), fm = BreathingDeterminant(mid, ri, ro, ctx->material.lambda, ctx->material.mu);
+        const PetscReal mid = 0.5 * (lo + hi), fm = BreathingDeterminant(mid, ri, ro, lambda, mu);
 
         if ((flo < 0) == (fm < 0)) {
           lo  = mid;
@@ -155,6 +164,24 @@ PetscReal RollerEndTime(Roller ctx, PetscReal w_fast)
   return PetscMax(ctx->ts.max_time, 2 * PETSC_PI / w_fast);
 }
 
+/* The torsional mode's frequency as the rubber runs it: with -rubber maxwell w = w_r sqrt(G'(w)/mu) (a pure shear mode:
+   its frequency scales with the shear modulus, w_r the relaxed solid's), by fixed-point iteration from the
+   instantaneous solid's w_t (G' increases with w: the iterates decrease to the root); w_t itself otherwise. */
+static PetscReal TorsionAtItsFrequency(const RollerMaterial *m, PetscReal w_t)
+{
+  PetscReal sum = 0.0, w = w_t;
+
+  if (m->rubber != ROLLER_RUBBER_MAXWELL) return w_t;
+  for (PetscInt i = 0; i < m->nbranch; ++i) sum += m->g[i];
+  for (PetscInt it = 0; it < 200; ++it) {
+    PetscReal re, im;
+
+    RollerRubberModulus(m->nbranch, m->tau, m->g, 0.0, w, &re, &im);
+    w = w_t * PetscSqrtReal(re / (1.0 + sum));
+  }
+  return w;
+}
+
 /* -mesh_h when not given: C_k w_t T (h/L)^q = 0.7 P. Needs the radii from the options (a mesh file sets its own h). */
 PetscErrorCode RollerChooseMeshSize(Roller ctx)
 {
@@ -168,6 +195,7 @@ PetscErrorCode RollerChooseMeshSize(Roller ctx)
     ctx->mesh.curved = PETSC_TRUE;
   }
   PetscCall(RollerModeFrequencies(ctx, &w_b, &w_t));
+  w_t         = TorsionAtItsFrequency(&ctx->material, w_t); /* the spatial error of the mode alpha swings at */
   T           = RollerEndTime(ctx, PetscMax(w_b, ctx->rotation.b));
   ctx->mesh.h = L * PetscPowReal(0.7 * ctx->ts.phase_error / (calibration_C[ctx->disc.degree] * w_t * T), 1.0 / calibration_q[ctx->disc.degree]);
   ctx->mesh.h = PetscMin(ctx->mesh.h, 0.5 * L); /* at least two elements across the wall */

@@ -1,5 +1,5 @@
-/* The constant operators of the model (docs/model.md section 2): mass M, stiffness K, the gyroscopic G (only for the
-   centred Coriolis velocity), the loads of the rigid part of f,
+/* The constant operators of the model (docs/model.md section 2): mass M, stiffness K, the Maxwell branches' deviatoric
+   stiffness K_d (only with -rubber maxwell), the gyroscopic G (only for the centred Coriolis velocity), the loads of the rigid part of f,
    the nodal positions; with -contact_mass redistributed M, G and the loads are T^T M T, T^T G T, T^T L
    (mass.c). Each bilinear form and load is assembled on a DM of its own (RollerOperatorDMCreate), whose
    PetscDS holds exactly its kernel and the constants that kernel reads, set once: no assembly changes what
@@ -77,6 +77,10 @@ PetscErrorCode RollerOperatorsSetUp(Roller ctx)
   PetscCall(RollerAssembleMatrix(ctx, "M", g0_mass, NULL, NULL, &ctx->ops.M));
   if (T) PetscCall(RollerMassReduce(T, 1.0, &ctx->ops.M));
   PetscCall(RollerAssembleMatrix(ctx, "K", NULL, NULL, g3_elastic, &ctx->ops.K));
+  if (ctx->material.rubber == ROLLER_RUBBER_MAXWELL) { /* the branches' K_d, on K's pattern (the same DM and quadrature) */
+    PetscCall(RollerAssembleMatrix(ctx, "K_d", NULL, NULL, g3_deviatoric, &ctx->ops.Kd));
+    PetscCall(MatSetOption(ctx->ops.Kd, MAT_SPD, PETSC_TRUE));
+  }
   if (ctx->disc.coriolis == ROLLER_CORIOLIS_CENTERED && !ctx->eig.on) {
     /* the centred Coriolis term's step matrix A - rho theta'/dt G (integrate/scheme_newmark.c): G on the pattern of
        the step matrix, K + M (T^T G T couples more nodes than G) */

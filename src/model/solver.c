@@ -1,4 +1,4 @@
-/* The step solvers: a step matrix A = c_M M + c_K K of a time scheme (RollerStepOperator), assembled and
+/* The step solvers: a step matrix A = c_M M + c_K K (+ c_D K_d) of a time scheme (RollerStepOperator), assembled and
    factored once and reused by every step, and the defaults of every factorization Roller makes. */
 #include "model/model.h"
 
@@ -122,19 +122,23 @@ static PetscErrorCode UnitPassiveDiagonal(Mat A)
 }
 
 /*
-  RollerStepOperatorCreate - A = c_M M + c_K K (M, K of ctx->ops), factored: the matrix of a step (or a stage) of a
-  time scheme. With G (the gyroscopic matrix of the centred Coriolis term, or NULL), A = A0 - c_G G, A0 = c_M M + c_K K:
+  RollerStepOperatorCreate - A = c_M M + c_K K + c_D K_d (M, K, K_d of ctx->ops; c_D != 0 only with the Maxwell
+  branches, whose K_d has K's pattern), factored: the matrix of a step (or a stage) of a time scheme. With G (the
+  gyroscopic matrix of the centred Coriolis term, or NULL), A = A0 - c_G G, A0 = c_M M + c_K K + c_D K_d:
   non-symmetric, factored by LU (RollerStepOperatorUpdateGyroscopic changes c_G).
 */
-PetscErrorCode RollerStepOperatorCreate(Roller ctx, PetscReal c_M, PetscReal c_K, Mat G, PetscReal c_G, PetscInt id, RollerStepOperator *op)
+PetscErrorCode RollerStepOperatorCreate(Roller ctx, PetscReal c_M, PetscReal c_K, PetscReal c_D, Mat G, PetscReal c_G, PetscInt id, RollerStepOperator *op)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(op, sizeof(*op)));
   op->c_M = c_M;
   op->c_K = c_K;
+  op->c_D = c_D;
   op->id  = id;
+  PetscCheck(c_D == 0 || ctx->ops.Kd, ctx->comm, PETSC_ERR_PLIB, "A step matrix with the Maxwell branches needs K_d (-rubber maxwell)");
   PetscCall(MatDuplicate(ctx->ops.K, MAT_COPY_VALUES, &op->A));
   PetscCall(MatScale(op->A, c_K));
+  if (c_D != 0) PetscCall(MatAXPY(op->A, c_D, ctx->ops.Kd, SAME_NONZERO_PATTERN));
   if (c_M != 0) PetscCall(MatAXPY(op->A, c_M, ctx->ops.M, UNKNOWN_NONZERO_PATTERN)); /* T^T M T (massless contact nodes) couples more nodes than K */
   if (G) {
     PetscCall(PetscObjectReference((PetscObject)G));
@@ -162,7 +166,8 @@ PetscErrorCode RollerStepOperatorUpdateGyroscopic(RollerStepOperator *op, PetscR
   PetscFunctionReturn(0);
 }
 
-/* x = A^{-1} b, checked: a direct solve fails only on a zero pivot, an iterative one may diverge. */
+/* x = A^{-1} b, checked: a direct solve fails only on a zero pivot, an iterative one may diverge. With the hub's
+   border (-axle), the eliminated system's x = A_eff^{-1} b = A^{-1} b + Y W Y^T b (Woodbury, model/axle.h). */
 PetscErrorCode RollerStepOperatorSolve(Roller ctx, const RollerStepOperator *op, Vec b, Vec x, PetscReal t)
 {
   KSPConvergedReason reason;
@@ -171,12 +176,76 @@ PetscErrorCode RollerStepOperatorSolve(Roller ctx, const RollerStepOperator *op,
   PetscCall(KSPSolve(op->ksp, b, x));
   PetscCall(KSPGetConvergedReason(op->ksp, &reason));
   PetscCheck(reason > 0, ctx->comm, PETSC_ERR_NOT_CONVERGED, "The step solve at t = %g diverged: %s", (double)t, KSPConvergedReasons[reason]);
+  if (op->border) {
+    PetscScalar yb[3];
+    PetscReal   c[3], w[3];
+
+    PetscCall(VecMDot(b, 3, op->border->Y, yb));
+    for (PetscInt i = 0; i < 3; ++i) c[i] = PetscRealPart(yb[i]);
+    RollerMat3Vec(op->border->W, c, w);
+    for (PetscInt i = 0; i < 3; ++i) yb[i] = w[i];
+    PetscCall(VecMAXPY(x, 3, yb, op->border->Y));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The hub's border of a step matrix (-axle): C = c_M C_M + c_K C_K + c_D C_D (the step matrix's own coefficients on
+   the couplings), Y = A^{-1} C (three solves, once) and C^T Y. Its W follows the step (RollerStepOperatorUpdateBorder). */
+PetscErrorCode RollerStepOperatorSetBorder(Roller ctx, RollerStepOperator *op)
+{
+  struct _n_RollerBorder *bd;
+  const RollerHub        *hub = ctx->axle.hub;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(&bd));
+  for (PetscInt j = 0; j < 3; ++j) {
+    PetscCall(VecDuplicate(hub->c.CM[j], &bd->C[j]));
+    PetscCall(VecAXPBYPCZ(bd->C[j], op->c_M, op->c_K, 0.0, hub->c.CM[j], hub->c.CK[j]));
+    if (op->c_D != 0) PetscCall(VecAXPY(bd->C[j], op->c_D, hub->c.CD[j])); /* the Maxwell branches' instantaneous stiffness */
+    PetscCall(VecDuplicate(hub->c.CM[j], &bd->Y[j]));
+    PetscCall(VecZeroEntries(bd->Y[j]));
+    PetscCall(RollerStepOperatorSolve(ctx, op, bd->C[j], bd->Y[j], 0.0)); /* op->border not set yet: A^{-1} C */
+  }
+  for (PetscInt i = 0; i < 3; ++i)
+    for (PetscInt j = 0; j < 3; ++j) {
+      PetscScalar d;
+
+      PetscCall(VecDot(bd->C[i], bd->Y[j], &d));
+      bd->CtY[3 * i + j] = PetscRealPart(d);
+    }
+  for (PetscInt i = 0; i < 3; ++i)
+    for (PetscInt j = 0; j < i; ++j) bd->CtY[3 * i + j] = bd->CtY[3 * j + i] = 0.5 * (bd->CtY[3 * i + j] + bd->CtY[3 * j + i]);
+  op->border = bd;
+  PetscFunctionReturn(0);
+}
+
+/* The step's W = Z (Z^T (D_A - C^T Y) Z)^{-1} Z^T at t (the constraint's Z of the new level). */
+PetscErrorCode RollerStepOperatorUpdateBorder(Roller ctx, RollerStepOperator *op, PetscReal t, const PetscReal DA[9])
+{
+  PetscReal Sigma[9];
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < 9; ++i) Sigma[i] = DA[i] - op->border->CtY[i];
+  RollerAxleProject(ctx, t, Sigma, op->border->W);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerBorderDestroy(struct _n_RollerBorder **bd)
+{
+  PetscFunctionBeginUser;
+  if (!*bd) PetscFunctionReturn(0);
+  for (PetscInt j = 0; j < 3; ++j) {
+    PetscCall(VecDestroy(&(*bd)->C[j]));
+    PetscCall(VecDestroy(&(*bd)->Y[j]));
+  }
+  PetscCall(PetscFree(*bd));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode RollerStepOperatorDestroy(RollerStepOperator *op)
 {
   PetscFunctionBeginUser;
+  PetscCall(RollerBorderDestroy(&op->border));
   PetscCall(KSPDestroy(&op->ksp));
   PetscCall(MatDestroy(&op->A));
   PetscCall(MatDestroy(&op->A0));

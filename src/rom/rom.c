@@ -19,6 +19,9 @@ PetscErrorCode RollerRomSetFromOptions(Roller ctx)
   RollerCheckOption(ctx->comm, "-rom_cutoff", cutoff, cutoff >= 0, ">= 0 (0: the default)");
   if (!on) PetscFunctionReturn(0);
   PetscCheck(!ctx->init.mms, ctx->comm, PETSC_ERR_ARG_INCOMP, "-rom steps the roller's own loads: -mms is the full model's");
+  PetscCheck(!ctx->axle.on, ctx->comm, PETSC_ERR_SUP, "-rom with -axle: the hub's unknowns are not in the reduced model (clamped at the shaft)");
+  PetscCheck(ctx->material.rubber != ROLLER_RUBBER_MAXWELL, ctx->comm, PETSC_ERR_SUP, "-rom with -rubber maxwell: the branches' internal variables are not reduced (Kelvin-Voigt -viscosity is)");
+  PetscCheck(!ctx->ck.restart[0], ctx->comm, PETSC_ERR_SUP, "-rom with -restart %s: a checkpoint holds the full model's nodal state", ctx->ck.restart);
   PetscCall(PetscNew(&ctx->rom));
   ctx->rom->modes_req = modes;
   ctx->rom->cutoff    = cutoff;

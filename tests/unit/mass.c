@@ -158,7 +158,7 @@ static PetscErrorCode CheckDefinite(Roller ctx)
   RollerStepOperator op;
 
   PetscFunctionBeginUser;
-  PetscCall(RollerStepOperatorCreate(ctx, ctx->material.density / (ctx->ts.dt * ctx->ts.dt), 0.5, NULL, 0.0, 0, &op));
+  PetscCall(RollerStepOperatorCreate(ctx, ctx->material.density / (ctx->ts.dt * ctx->ts.dt), 0.5, 0.0, NULL, 0.0, 0, &op));
   PetscCall(MatDuplicate(op.A, MAT_COPY_VALUES, &B));
   PetscCall(RollerStepOperatorDestroy(&op));
   PetscCall(MatSetOption(B, MAT_SPD, PETSC_FALSE)); /* MUMPS's general symmetric mode, which reports the inertia */
