@@ -106,6 +106,15 @@ typedef struct {
   PetscInt  *own_point; /*   their mesh point (vertex, or edge for a P2 midpoint) */
   VecScatter scatter;   /* global Vec -> redundant Vec of the Gamma_C dofs */
   Vec        red, red1, red2;
+  /* -rom (contact_reduced.c): the displacement is V q; the Gamma_C rows of V, phi (2 nc x nq, row-major, on every
+     rank), gather u_C = phi q and spread f_q = phi^T f_C; within a step only the rows of the window's nodes (those
+     the obstacle can reach) are computed, the others' displacement reads 0 */
+  PetscInt   nq;
+  PetscReal *phi;
+  PetscInt   nwin, *win; /* the window's nodes; windowed false: all of them */
+  PetscBool  windowed;
+  VecScatter qscatter; /* reduced Vec -> qall on every rank */
+  Vec        qall;
 } RollerContactNodes;
 
 /* The step (contact_candidates.c): time, rotation, obstacle height, contact basis (t^k, n^k), candidate set,
@@ -198,6 +207,13 @@ PETSC_INTERN PetscErrorCode RollerContactGaps(RollerContact, Vec, PetscReal[], P
 PETSC_INTERN void           RollerContactObstacleAt(Roller, PetscReal, PetscReal[2], PetscReal *);
 PETSC_INTERN PetscErrorCode RollerContactGapsAt(Roller, RollerContact, Vec, PetscReal, PetscReal[]);
 PETSC_INTERN PetscErrorCode RollerContactForce(RollerContact, const PetscReal[], const PetscReal[], Vec);
+
+/* contact_reduced.c (-rom) */
+PETSC_INTERN PetscErrorCode RollerContactReducedGather(RollerContact, Vec, Vec);
+PETSC_INTERN PetscErrorCode RollerContactReducedForce(RollerContact, const PetscReal[], const PetscReal[], Vec);
+PETSC_INTERN void           RollerContactReducedWindow(Roller, RollerContact);
+PETSC_INTERN PetscErrorCode RollerContactReducedColumns(RollerContact, Mat, PetscInt, PetscReal[]);
+PETSC_INTERN PetscErrorCode RollerContactReducedDestroy(RollerContact);
 PETSC_INTERN PetscReal      RollerContactGapTolerance(Roller);
 
 /* contact_candidates.c */

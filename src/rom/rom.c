@@ -2,6 +2,7 @@
    reduced model in the context, and -ts_view's account of it. */
 #include "rom/rom.h"
 #include "integrate/integrate.h"
+#include "contact/contact.h"
 
 PetscErrorCode RollerRomSetFromOptions(Roller ctx)
 {
@@ -72,7 +73,6 @@ PetscErrorCode RollerRomSetUp(Roller ctx)
 
   PetscFunctionBeginUser;
   PetscCheck(!ctx->ops.G, ctx->comm, PETSC_ERR_ARG_INCOMP, "-rom: the centred -coriolis_velocity puts the Coriolis matrix in the step matrix; the reduced model takes it explicitly (backward or extrapolated)");
-  PetscCheck(!ctx->obstacle.on, ctx->comm, PETSC_ERR_SUP, "-rom with -obstacle: contact on the reduced model is not built yet (docs/performance.md)");
   PetscCheck(rom->cutoff * ctx->ts.dt <= 0.5, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-rom_cutoff %g must not exceed the step's Nyquist frequency 1/(2 dt) = %g", (double)rom->cutoff, (double)(0.5 / ctx->ts.dt));
   if (rom->cutoff > 0) rom->w_cut = 2 * PETSC_PI * rom->cutoff;
   else PetscCall(DefaultCutoff(ctx, &rom->w_cut));
@@ -80,6 +80,7 @@ PetscErrorCode RollerRomSetUp(Roller ctx)
   PetscCall(RollerRomBasis(ctx, rom));
   PetscCall(PetscTime(&t1));
   PetscCall(RollerRomReduce(ctx, rom));
+  if (ctx->contact) PetscCall(RollerContactSetBasis(ctx, ctx->contact, rom->V, ctx->state.cur)); /* u_C = Phi q */
   PetscCall(PetscTime(&t2));
   rom->t_modes  = t1 - t0;
   rom->t_reduce = t2 - t1;
