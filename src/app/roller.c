@@ -27,7 +27,7 @@ PetscErrorCode RollerSetUp(Roller ctx)
     if (help) PetscCall(RollerContactHelp(ctx)); /* -help lists every option, the contact ones too */
   }
   if (ctx->rom) PetscCall(RollerRomSetUp(ctx)); /* the reduced model replaces the operators and the state */
-  if (!ctx->eig.on) { /* the step matrices (the contact's condensation with them), and what the scheme and the components keep */
+  if (!ctx->eig.on) {                           /* the step matrices (the contact's condensation with them), and what the scheme and the components keep */
     PetscCall(RollerSchemeSetUp(ctx));
     PetscCall(RollerCheckpointRegister(ctx));
     if (ctx->ck.restart[0]) PetscCall(RollerCheckpointReadItems(ctx, ctx->ck.restart));
