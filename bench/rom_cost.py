@@ -42,8 +42,8 @@ def main():
     lines = [
         f"# bench/rom_cost.py --rounds {o.rounds} --max-time {o.max_time} {o.rom_options}",
         f"# machine: {platform.node()}, {os.cpu_count()} cores, load average at the end {os.getloadavg()[0]:.1f} (shared)",
-        f"full model, 10 ms: CPU median {cf:.1f} s (rounds {', '.join(f'{r['cpu']:.1f}' for r in full)})",
-        f"reduced, {o.max_time:g} s: CPU median {cr:.1f} s (rounds {', '.join(f'{r['cpu']:.1f}' for r in red)}), wall {wall:.1f} s",
+        f"full model, 10 ms: CPU median {cf:.1f} s (rounds {', '.join('%.1f' % r['cpu'] for r in full)})",
+        f"reduced, {o.max_time:g} s: CPU median {cr:.1f} s (rounds {', '.join('%.1f' % r['cpu'] for r in red)}), wall {wall:.1f} s",
         f"reduced by stage (wall, median): set-up {setup:.1f} s; per step ({steps_t} steps): " + ", ".join(f"{k.split()[1]} {1e3 * v / steps_t:.3f} ms" for k, v in per.items()),
         f"reduced 1 s {'measured' if o.max_time == 1.0 else 'extrapolated from the stages'}: {est:.1f} s CPU = {est / cf:.2f} x the full 10 ms (target <= 2)",
     ]
