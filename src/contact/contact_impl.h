@@ -10,6 +10,7 @@
    contact_energy.c      the contact terms of the energy balance, flips and reversals
    contact_candidates.c  the step's basis and bounds, the candidate set, the penetrating nodes it gains
    contact_nodes.c       the Gamma_C nodes (gathered redundantly on every rank, in angle order), gaps, force
+   contact_reduced.c     -rom: the basis' Gamma_C rows Phi, the window's gathers Phi q, the force Phi^T f, S's columns
    Friction (only with -friction > 0; docs/friction.md), a part of the condensed solver; the law mu(v) and Coulomb's
    law on dense data by the semismooth Newton method are the friction layer's (friction/law.c, friction/coulomb.c),
    which calls nothing here. Contact calls the friction files (create, solve, info, state); they call back none of

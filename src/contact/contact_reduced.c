@@ -24,7 +24,8 @@ PetscErrorCode RollerContactSetBasis(Roller ctx, RollerContact c, Mat V, Vec q)
     const PetscScalar *r;
 
     PetscCall(MatDenseGetColumnVecRead(V, j, &v));
-    PetscCall(RollerContactGather(c, v, c->nodes.red));
+    PetscCall(VecScatterBegin(c->nodes.scatter, v, c->nodes.red, INSERT_VALUES, SCATTER_FORWARD)); /* the nodal gather */
+    PetscCall(VecScatterEnd(c->nodes.scatter, v, c->nodes.red, INSERT_VALUES, SCATTER_FORWARD));
     PetscCall(MatDenseRestoreColumnVecRead(V, j, &v));
     PetscCall(VecGetArrayRead(c->nodes.red, &r));
     for (PetscInt i = 0; i < n; ++i) phi[(size_t)i * nq + j] = PetscRealPart(r[i]);
