@@ -7,16 +7,25 @@
    2 nc nq. */
 #include "contact_impl.h"
 
+/* -rom's contact is the condensed solver's (before the basis is made: a refusal costs no eigensolve). */
+PetscErrorCode RollerContactCheckReduced(Roller ctx, RollerContact c)
+{
+  PetscBool condensed;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrcmp(c->opt.solver, "condensed", &condensed));
+  PetscCheck(condensed && !c->opt.check, ctx->comm, PETSC_ERR_ARG_INCOMP, "-rom takes -contact_solver condensed (the reduced model's S = Phi A_r^-1 Phi^T), not %s%s", c->opt.solver, c->opt.check ? " or -contact_check" : "");
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode RollerContactSetBasis(Roller ctx, RollerContact c, Mat V, Vec q)
 {
   const PetscInt n = 2 * c->nodes.nc;
   PetscInt       nq;
   PetscReal     *phi;
-  PetscBool      condensed;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscStrcmp(c->opt.solver, "condensed", &condensed));
-  PetscCheck(condensed && !c->opt.check, ctx->comm, PETSC_ERR_ARG_INCOMP, "-rom takes -contact_solver condensed (the reduced model's S = Phi A_r^-1 Phi^T), not %s%s", c->opt.solver, c->opt.check ? " or -contact_check" : "");
+  PetscCall(RollerContactCheckReduced(ctx, c));
   PetscCall(MatGetSize(V, NULL, &nq));
   PetscCall(PetscMalloc2((size_t)n * nq, &phi, c->nodes.nc, &c->nodes.win));
   for (PetscInt j = 0; j < nq; ++j) { /* column j of V gathered at Gamma_C: column j of Phi */

@@ -76,6 +76,7 @@ PetscErrorCode RollerRomSetUp(Roller ctx)
   PetscCheck(rom->cutoff * ctx->ts.dt <= 0.5, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-rom_cutoff %g must not exceed the step's Nyquist frequency 1/(2 dt) = %g", (double)rom->cutoff, (double)(0.5 / ctx->ts.dt));
   if (rom->cutoff > 0) rom->w_cut = 2 * PETSC_PI * rom->cutoff;
   else PetscCall(DefaultCutoff(ctx, &rom->w_cut));
+  if (ctx->contact) PetscCall(RollerContactCheckReduced(ctx, ctx->contact));
   PetscCall(PetscTime(&t0));
   PetscCall(RollerRomBasis(ctx, rom));
   PetscCall(PetscTime(&t1));
