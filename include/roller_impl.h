@@ -50,6 +50,7 @@ PETSC_EXTERN const char *const RollerContactMasses[];
 typedef struct _n_RollerContact  *RollerContact;
 typedef struct _n_RollerScheme   *RollerScheme;   /* the time scheme (integrate/scheme*.c, docs/model.md section 2.1) */
 typedef struct _n_RollerMonitors *RollerMonitors; /* the observers of the run (integrate/monitor.c) */
+typedef struct _n_RollerRom      *RollerRom;      /* -rom: the reduced-order model (src/rom, docs/performance.md) */
 
 /* Indices into ctx->stage for -log_view. */
 enum { ROLLER_STAGE_SETUP, ROLLER_STAGE_STEP, ROLLER_STAGE_CONTACT, ROLLER_STAGE_DIAGNOSTICS, ROLLER_STAGE_OUTPUT, ROLLER_STAGE_MODES, ROLLER_NUM_STAGES };
@@ -198,6 +199,11 @@ typedef struct {
   Vec       coordinates; /* nodal positions x_n of every free dof pair */
   PetscReal I0;          /* x . M x, the rigid body's polar moment over rho (the shaft torque, integrate/diagnostics.c) */
   Vec       w_R, w_alpha;
+  /* -rom (src/rom): M, K, the loads, w_R, w_alpha and the state are the reduced model's; R90 its R(-pi/2) on M products
+     (NULL: the nodal one), V its basis in the full space (the modes' shapes), M_full the full model's M (their
+     classification); reduced: PETSC_TRUE then */
+  Mat       R90, V, M_full;
+  PetscBool reduced;
 } RollerOperators;
 
 /* A step matrix of a time scheme (model/solver.c): A = c_M M + c_K K + c_D K_d (- c_G G with the centred Coriolis term,
@@ -322,6 +328,7 @@ struct _n_Roller {
   RollerInitial        init;
   RollerContact        contact;
   RollerScheme         scheme; /* the run's time scheme, one of ts.schemes */
+  RollerRom            rom;    /* -rom: the reduced model (NULL without) */
   RollerMonitors       monitors;
   RollerStepInfo       info;
   PetscLogStage        stage[ROLLER_NUM_STAGES];

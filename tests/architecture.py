@@ -9,7 +9,7 @@ import sys
 
 from rollertest import SOURCE
 
-LAYERS = ["mesh", "model", "verify", "friction", "contact", "io", "integrate", "modes", "app"]  # low to high
+LAYERS = ["mesh", "model", "verify", "friction", "contact", "io", "integrate", "modes", "rom", "app"]  # low to high
 FOLDERS = {"sweep": "app"}  # a folder of its own at a layer's level (-sweep: app-level, docs/architecture.md)
 
 

@@ -101,6 +101,8 @@ cases = [
     (["-obstacle", "-friction_decay", "0.1", "-friction_table", "0:1,0.1:0.5"], "-friction_table", "without -friction_decay"),
     (["-friction_table", "0:1,0.1:0.5"], "-friction_table", "-obstacle"),
     (["-obstacle", "-sweep", "bad_sweep.csv", "-sweep_friction", "0.3,0.8", "-friction_table", "0:1,0.1:0.5"], "-sweep_friction", "-friction_table"),
+    (["-rom", "-axle", "-drive_stiffness", "1"], "-axle", "-rom"),
+    (["-rom", "-obstacle", "-contact_solver", "vi"], "-contact_solver", "not vi"),
 ]
 for args, name, value in cases:
     code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet"] + args if args[0] != "-mesh_h" else args + ["-ts_max_steps", "2"], check=False)

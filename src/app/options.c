@@ -3,6 +3,7 @@
    in one place (RollerSetFromOptions, "cross-component checks"). */
 #include "integrate/integrate.h"
 #include "modes/modes.h"
+#include "rom/rom.h"
 #include "sweep/sweep.h"
 
 const char *const RollerInitialConditions[] = {"rest", "bump", "mms", "mode", "RollerInitialCondition", "ROLLER_IC_", NULL};
@@ -119,6 +120,7 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
 
   PetscCall(RollerCheckpointSetFromOptions(ctx));
   PetscCall(RollerModesSetFromOptions(ctx));
+  PetscCall(RollerRomSetFromOptions(ctx));
   {
     PetscBool help;
 

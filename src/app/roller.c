@@ -2,6 +2,7 @@
    destroy them all. */
 #include "integrate/integrate.h"
 #include "modes/modes.h"
+#include "rom/rom.h"
 
 PetscErrorCode RollerSetUp(Roller ctx)
 {
@@ -25,7 +26,8 @@ PetscErrorCode RollerSetUp(Roller ctx)
     PetscCall(PetscOptionsHasHelp(NULL, &help));
     if (help) PetscCall(RollerContactHelp(ctx)); /* -help lists every option, the contact ones too */
   }
-  if (!ctx->eig.on) { /* the step matrices (the contact's condensation with them), and what the scheme and the components keep */
+  if (ctx->rom) PetscCall(RollerRomSetUp(ctx)); /* the reduced model replaces the operators and the state */
+  if (!ctx->eig.on) {                           /* the step matrices (the contact's condensation with them), and what the scheme and the components keep */
     PetscCall(RollerSchemeSetUp(ctx));
     PetscCall(RollerCheckpointRegister(ctx));
     if (ctx->ck.restart[0]) PetscCall(RollerCheckpointReadItems(ctx, ctx->ck.restart));
@@ -70,6 +72,7 @@ PetscErrorCode RollerDestroy(Roller *roller)
   PetscCall(PetscViewerDestroy(&ctx->init.mms_view));
   PetscCall(RollerContactDestroy(&ctx->contact));
   PetscCall(RollerModesDestroy(ctx));
+  PetscCall(RollerRomDestroy(ctx));
   PetscCall(RollerFrictionTableDestroy(&ctx->obstacle.table));
   PetscCall(RollerSchemesDestroy(ctx));
   PetscCall(RollerAxleDestroy(ctx));

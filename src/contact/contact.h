@@ -31,6 +31,10 @@ PETSC_INTERN PetscErrorCode RollerContactInfo(Roller, RollerContact, Vec, Vec, V
 PETSC_INTERN PetscErrorCode RollerContactEnergyAdd(Roller, RollerContact, Vec, PetscReal, PetscReal, RollerStepInfo *);
 PETSC_INTERN PetscErrorCode RollerContactFields(Roller, RollerContact, Vec, Vec, Vec); /* pressure, traction, state: P1 scalar Vecs on the mesh */
 PETSC_INTERN PetscBool      RollerContactHasFriction(RollerContact);
+/* -rom: the displacement becomes V q (V dense, N x nq, the full model's layout; q a Vec of the reduced layout): the
+   Gamma_C rows of V taken before the operators are replaced (contact_reduced.c) */
+PETSC_INTERN PetscErrorCode RollerContactSetBasis(Roller, RollerContact, Mat, Vec);
+PETSC_INTERN PetscErrorCode RollerContactCheckReduced(Roller, RollerContact); /* -contact_solver condensed, no -contact_check */
 /* -sheet_mass (contact_sheet.c): the sheet moves by its own forces; its part of E^k, its speed, its state for the
    checkpoint (4 reals: X^k, X^{k-1}, X^{k-2} and its case; NULL for the kinematic sheet) */
 PETSC_INTERN PetscBool  RollerContactSheetMoves(RollerContact);

@@ -15,6 +15,7 @@ PetscErrorCode RollerContactSetTime(Roller ctx, RollerContact c, PetscReal t)
   st->tangent[0] = st->normal[1];
   st->tangent[1] = -st->normal[0];
   for (PetscInt i = 0; i < c->nodes.nc; ++i) st->lower[i] = st->g - (c->nodes.xc[2 * i] * st->normal[0] + c->nodes.xc[2 * i + 1] * st->normal[1]);
+  if (c->nodes.phi) RollerContactReducedWindow(ctx, c); /* -rom: the nodes this step gathers */
   PetscFunctionReturn(0);
 }
 

@@ -135,6 +135,7 @@ static PetscErrorCode CondensedColumns(Roller ctx, RollerContact c, const Roller
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &gsize, 1, MPI_INT, MPI_MAX, ctx->comm)); /* the same path on every rank */
     redundant = (PetscBool)(gsize == 1);
   }
+  if (c->nodes.phi) redundant = PETSC_FALSE; /* -rom: the reduced columns below */
   if (redundant) PetscCall(CondensedColumnsSplit(ctx, c, pc, cs, need, m));
   for (PetscInt j0 = 0; !redundant && j0 < 2 * m; j0 += nb) {
     const PetscInt mb = PetscMin(nb, 2 * m - j0);
@@ -145,13 +146,25 @@ static PetscErrorCode CondensedColumns(Roller ctx, RollerContact c, const Roller
     for (PetscInt jj = 0; jj < mb; ++jj) {
       const PetscInt j = j0 + jj, row = c->nodes.gidx[need[j / 2]] + j % 2;
 
-      if (row >= rstart && row < rend) PetscCall(MatSetValue(B, row, jj, 1.0, INSERT_VALUES));
+      if (c->nodes.phi) { /* -rom: the column E e_j of the reduced model is Phi^T e_j, the row j of Phi */
+        const PetscReal *p = c->nodes.phi + (size_t)(2 * need[j / 2] + j % 2) * c->nodes.nq;
+
+        for (PetscInt i = rstart; i < PetscMin(rend, c->nodes.nq); ++i) PetscCall(MatSetValue(B, i, jj, p[i], INSERT_VALUES));
+      } else if (row >= rstart && row < rend) PetscCall(MatSetValue(B, row, jj, 1.0, INSERT_VALUES));
     }
     PetscCall(MatAssemblyBegin(B, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(B, MAT_FINAL_ASSEMBLY));
     PetscCall(MatDuplicate(B, MAT_DO_NOT_COPY_VALUES, &X));
     PetscCall(KSPMatSolve(op->ksp, B, X));
-    for (PetscInt jj = 0; jj < mb; ++jj) {
+    if (c->nodes.phi) { /* -rom: S's columns Phi X, every Gamma_C row (the window only bounds a step's gathers) */
+      PetscReal *out;
+
+      PetscCall(PetscMalloc1((size_t)n * mb, &out));
+      PetscCall(RollerContactReducedColumns(c, X, mb, out));
+      for (PetscInt jj = 0; jj < mb; ++jj) PetscCall(PetscArraycpy(cs->S + (size_t)(2 * need[(j0 + jj) / 2] + (j0 + jj) % 2) * n, out + (size_t)jj * n, n));
+      PetscCall(PetscFree(out));
+    }
+    for (PetscInt jj = 0; !c->nodes.phi && jj < mb; ++jj) {
       const PetscInt     j = j0 + jj, col = 2 * need[j / 2] + j % 2;
       Vec                v;
       const PetscScalar *r;

@@ -10,6 +10,7 @@
    contact_energy.c      the contact terms of the energy balance, flips and reversals
    contact_candidates.c  the step's basis and bounds, the candidate set, the penetrating nodes it gains
    contact_nodes.c       the Gamma_C nodes (gathered redundantly on every rank, in angle order), gaps, force
+   contact_reduced.c     -rom: the basis' Gamma_C rows Phi, the window's gathers Phi q, the force Phi^T f, S's columns
    Friction (only with -friction > 0; docs/friction.md), a part of the condensed solver; the law mu(v) and Coulomb's
    law on dense data by the semismooth Newton method are the friction layer's (friction/law.c, friction/coulomb.c),
    which calls nothing here. Contact calls the friction files (create, solve, info, state); they call back none of
@@ -106,6 +107,15 @@ typedef struct {
   PetscInt  *own_point; /*   their mesh point (vertex, or edge for a P2 midpoint) */
   VecScatter scatter;   /* global Vec -> redundant Vec of the Gamma_C dofs */
   Vec        red, red1, red2;
+  /* -rom (contact_reduced.c): the displacement is V q; the Gamma_C rows of V, phi (2 nc x nq, row-major, on every
+     rank), gather u_C = phi q and spread f_q = phi^T f_C; within a step only the rows of the window's nodes (those
+     the obstacle can reach) are computed, the others' displacement reads 0 */
+  PetscInt   nq;
+  PetscReal *phi;
+  PetscInt   nwin, *win; /* the window's nodes; windowed false: all of them */
+  PetscBool  windowed;
+  VecScatter qscatter; /* reduced Vec -> qall on every rank */
+  Vec        qall;
 } RollerContactNodes;
 
 /* The step (contact_candidates.c): time, rotation, obstacle height, contact basis (t^k, n^k), candidate set,
@@ -201,6 +211,13 @@ PETSC_INTERN PetscErrorCode RollerContactGaps(RollerContact, Vec, PetscReal[], P
 PETSC_INTERN void           RollerContactObstacleAt(Roller, PetscReal, PetscReal[2], PetscReal *);
 PETSC_INTERN PetscErrorCode RollerContactGapsAt(Roller, RollerContact, Vec, PetscReal, PetscReal[]);
 PETSC_INTERN PetscErrorCode RollerContactForce(RollerContact, const PetscReal[], const PetscReal[], Vec);
+
+/* contact_reduced.c (-rom) */
+PETSC_INTERN PetscErrorCode RollerContactReducedGather(RollerContact, Vec, Vec);
+PETSC_INTERN PetscErrorCode RollerContactReducedForce(RollerContact, const PetscReal[], const PetscReal[], Vec);
+PETSC_INTERN void           RollerContactReducedWindow(Roller, RollerContact);
+PETSC_INTERN PetscErrorCode RollerContactReducedColumns(RollerContact, Mat, PetscInt, PetscReal[]);
+PETSC_INTERN PetscErrorCode RollerContactReducedDestroy(RollerContact);
 PETSC_INTERN PetscReal      RollerContactGapTolerance(Roller);
 
 /* contact_candidates.c */

@@ -122,6 +122,7 @@ PetscErrorCode RollerContactNodesCreate(Roller ctx, RollerContact c)
 PetscErrorCode RollerContactNodesDestroy(RollerContact c)
 {
   PetscFunctionBeginUser;
+  PetscCall(RollerContactReducedDestroy(c));
   PetscCall(VecScatterDestroy(&c->nodes.scatter));
   PetscCall(VecDestroy(&c->nodes.red));
   PetscCall(VecDestroy(&c->nodes.red1));
@@ -135,6 +136,10 @@ PetscErrorCode RollerContactNodesDestroy(RollerContact c)
 PetscErrorCode RollerContactGather(RollerContact c, Vec v, Vec red)
 {
   PetscFunctionBeginUser;
+  if (c->nodes.phi) {
+    PetscCall(RollerContactReducedGather(c, v, red)); /* -rom: v is q */
+    PetscFunctionReturn(0);
+  }
   PetscCall(VecScatterBegin(c->nodes.scatter, v, red, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecScatterEnd(c->nodes.scatter, v, red, INSERT_VALUES, SCATTER_FORWARD));
   PetscFunctionReturn(0);
@@ -148,6 +153,10 @@ PetscErrorCode RollerContactForce(RollerContact c, const PetscReal lambda[], con
   PetscScalar *fa;
 
   PetscFunctionBeginUser;
+  if (c->nodes.phi) {
+    PetscCall(RollerContactReducedForce(c, lambda, lambda_t, f)); /* -rom: f is reduced */
+    PetscFunctionReturn(0);
+  }
   PetscCall(VecZeroEntries(f));
   PetscCall(VecGetArray(f, &fa));
   for (PetscInt k = 0; k < c->nodes.nown; ++k) {

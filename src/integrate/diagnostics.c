@@ -21,7 +21,7 @@ static PetscErrorCode AngularMomentum(Roller ctx, PetscReal *L_rel)
   RollerTheta(ctx, ctx->state.time, NULL, &td, NULL);
   PetscCall(VecDot(xi, Mx, &a));
   PetscCall(VecDot(xi, ctx->state.Mcur, &b));
-  PetscCall(RollerApplyRotate90(ctx->state.velocity, v));
+  PetscCall(RollerApplyRotate90(ctx, ctx->state.velocity, v));
   PetscCall(VecWAXPY(w, 1.0, Mx, ctx->state.Mcur));
   PetscCall(VecDot(v, w, &c));
   *L_rel = ctx->material.density * (PetscRealPart(c) + td * (2.0 * PetscRealPart(a) + PetscRealPart(b)));

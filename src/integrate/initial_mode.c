@@ -39,7 +39,7 @@ static PetscErrorCode CorotatingRate(Roller ctx, Mat M0, Mat D, Vec u, Vec v)
   PetscCall(VecDuplicate(u, &t));
   PetscCall(MatMult(D, u, ctx->state.rhs));
   PetscCall(DirectSolve(ctx, M0, ctx->state.rhs, v)); /* d_phi u */
-  PetscCall(RollerApplyRotate90(u, t));               /* R(-pi/2) u = -J u */
+  PetscCall(RollerApplyRotate90(ctx, u, t));          /* R(-pi/2) u = -J u */
   PetscCall(VecAXPY(v, 1.0, t));
   PetscCall(VecScale(v, ctx->rotation.omega));
   PetscCall(VecDestroy(&t));

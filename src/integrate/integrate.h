@@ -41,6 +41,7 @@ PETSC_INTERN PetscErrorCode RollerSchemeEnergy(Roller, PetscReal *);
 PETSC_INTERN PetscErrorCode RollerSchemeBalance(Roller, RollerStepInfo *);
 #define ROLLER_SCHEME_KEPT (3 + 4 * ROLLER_MAX_BRANCHES) /* at most, the vectors a scheme keeps beyond the levels (checkpointed): M xi of three levels; z_i and K_d z_i of two levels per Maxwell branch */
 PETSC_INTERN const char    *RollerSchemeName(Roller);
+PETSC_INTERN PetscErrorCode RollerSchemePhase(Roller, PetscReal, PetscReal *); /* the run's scheme's phase error per step at x = w dt */
 PETSC_INTERN PetscErrorCode RollerSchemesDestroy(Roller);
 
 /* diagnostics.c: the works every step, the rest of a step's row when an observer asks (ctx->info) */

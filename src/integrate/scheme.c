@@ -305,6 +305,14 @@ PetscErrorCode RollerSchemeBalance(Roller ctx, RollerStepInfo *info)
   PetscFunctionReturn(0);
 }
 
+/* The phase error per step of the run's scheme at x = w dt (its ops->phase; -rom's default cutoff). */
+PetscErrorCode RollerSchemePhase(Roller ctx, PetscReal x, PetscReal *e)
+{
+  PetscFunctionBeginUser;
+  PetscCall((*ctx->scheme->ops->phase)(ctx->scheme, x, e));
+  PetscFunctionReturn(0);
+}
+
 const char *RollerSchemeName(Roller ctx)
 {
   return ctx->scheme ? ctx->scheme->name : "";

@@ -226,6 +226,7 @@ static PetscErrorCode ComposedUsable(RollerScheme s, Roller ctx, const char **wh
   else if (ctx->disc.static_solve) *why = "-static is the DMF's one step with A = K";
   else if (ctx->axle.on) *why = "the hub's unknowns (-axle) are the three-level schemes'";
   else if (coriolis) *why = "-coriolis_velocity is the three-level schemes' (this one splits the Coriolis force off exactly)";
+  else if (ctx->rom) *why = "-rom steps with a three-level scheme (the composition's exact Coriolis flow is nodal)";
   else if (ctx->material.rubber == ROLLER_RUBBER_MAXWELL) *why = "-rubber maxwell's branches are the three-level schemes' (dmf, trapezoidal)";
   PetscFunctionReturn(0);
 }

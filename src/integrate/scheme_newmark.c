@@ -41,7 +41,7 @@ static PetscErrorCode LoadFromProducts(Roller ctx, Newmark *nm, PetscReal t1, Ve
   CoriolisVelocity(ctx, c);
   PetscCall(VecAXPBYPCZ(nm->Mv, tdd + 2.0 * td * c[0], 2.0 * td * c[1], 0.0, ctx->state.Mcur, nm->Mprev));
   if (c[2] != 0) PetscCall(VecAXPY(nm->Mv, 2.0 * td * c[2], nm->Mprev2));
-  PetscCall(RollerApplyRotate90(nm->Mv, rot));
+  PetscCall(RollerApplyRotate90(ctx, nm->Mv, rot));
   PetscCall(VecAXPBYPCZ(F, rho, rho * td * td, 0.0, rot, ctx->state.Mcur));
   PetscCall(VecAXPBYPCZ(F, rho * tdd, rho * td * td, 1.0, ctx->ops.L_euler, ctx->ops.L_centrifugal));
   PetscFunctionReturn(0);
@@ -70,7 +70,7 @@ static PetscErrorCode RightHandSideDMF(Roller ctx, PetscReal t1, Vec b)
     PetscCall(VecAXPBYPCZ(b, tdd, -td / dt, 0.0, ctx->state.cur, ctx->state.prev));
     break;
   }
-  PetscCall(RollerApplyRotate90(b, w));
+  PetscCall(RollerApplyRotate90(ctx, b, w));
   PetscCall(VecAXPBYPCZ(w, rho * (2.0 / (dt * dt) + td * td), -rho / (dt * dt) + ctx->disc.damping / (2.0 * dt), rho, ctx->state.cur, ctx->state.prev));
   PetscCall(MatMult(ctx->ops.M, w, b));
   PetscCall(VecAXPY(b, -(0.5 - ctx->material.viscosity / (2.0 * dt)), ctx->state.Kprev));
@@ -134,7 +134,7 @@ static PetscErrorCode NewLevel(Roller ctx, Newmark *nm, PetscBool product)
   nm->Mprev2      = nm->Mprev;
   nm->Mprev       = ctx->state.Mcur;
   ctx->state.Mcur = tmp;
-  if (op->G || op->c_M == 0 || product) PetscCall(MatMult(ctx->ops.M, ctx->state.cur, ctx->state.Mcur));
+  if (op->G || op->c_M == 0 || product || ctx->ops.reduced) PetscCall(MatMult(ctx->ops.M, ctx->state.cur, ctx->state.Mcur)); /* -rom: M diagonal, its residual forces massless */
   else {
     if (ctx->contact) {
       PetscCall(RollerContactForceVector(ctx->contact, ctx->state.Mcur));

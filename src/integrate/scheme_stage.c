@@ -42,11 +42,11 @@ static PetscErrorCode Kick(Roller ctx, RollerStageWork *cp, PetscReal t, PetscRe
   PetscFunctionBeginUser;
   RollerTheta(ctx, t, NULL, &td, &tdd);
   if (td == 0 && tdd == 0) PetscFunctionReturn(0);
-  PetscCall(RollerApplyRotate90(Mx, cp->dv)); /* M dv = tau (tdd R M xi + td^2 M xi) */
+  PetscCall(RollerApplyRotate90(ctx, Mx, cp->dv)); /* M dv = tau (tdd R M xi + td^2 M xi) */
   PetscCall(VecAXPBY(cp->dv, tau * td * td, tau * tdd, Mx));
   PetscCall(VecDot(cp->V, cp->dv, &a));
   PetscCall(VecAXPY(cp->MV, 1.0, cp->dv));
-  PetscCall(RollerApplyRotate90(x, cp->dv)); /* dv itself */
+  PetscCall(RollerApplyRotate90(ctx, x, cp->dv)); /* dv itself */
   PetscCall(VecAXPBY(cp->dv, tau * td * td, tau * tdd, x));
   PetscCall(VecDot(cp->dv, cp->MV, &b)); /* dv . M (v + dv) */
   cp->load_work += 0.5 * rho * (PetscRealPart(a) + PetscRealPart(b));

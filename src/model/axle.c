@@ -251,7 +251,7 @@ PetscErrorCode RollerAxleSetUp(Roller ctx)
     PetscCall(VecWAXPY(c->CM[j], -1.0, Mr, L[j]));
     PetscCall(MatMult(ctx->ops.K, r[j], c->CK[j]));
     PetscCall(VecScale(c->CK[j], -1.0));
-    PetscCall(RollerApplyRotate90(c->CM[j], c->RCM[j]));
+    PetscCall(RollerApplyRotate90(ctx, c->CM[j], c->RCM[j]));
   }
   PetscCall(VecDuplicate(r[0], &c->cx));
   PetscCall(MatMult(ctx->ops.M, ctx->ops.coordinates, Mr));

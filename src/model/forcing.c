@@ -94,14 +94,19 @@ PetscReal RollerSheetPosition(Roller ctx, PetscReal t)
 }
 
 /* y = R(-pi/2) x at every node: (a, b) -> (b, -a). Displacement dofs are stored in (x, y) pairs, and a
-   Dirichlet node drops both, so pairs stay aligned in the global vector. */
-PetscErrorCode RollerApplyRotate90(Vec x, Vec y)
+   Dirichlet node drops both, so pairs stay aligned in the global vector. A reduced model (-rom, src/rom) applies
+   its own: V^T R(-pi/2) M V on its coordinates, M V = V with its M-orthonormal basis. */
+PetscErrorCode RollerApplyRotate90(Roller ctx, Vec x, Vec y)
 {
   const PetscScalar *xa;
   PetscScalar       *ya;
   PetscInt           n;
 
   PetscFunctionBeginUser;
+  if (ctx->ops.R90) {
+    PetscCall(MatMult(ctx->ops.R90, x, y));
+    PetscFunctionReturn(0);
+  }
   PetscCall(VecGetLocalSize(x, &n));
   PetscCall(VecGetArrayRead(x, &xa));
   PetscCall(VecGetArrayWrite(y, &ya));

@@ -34,7 +34,7 @@ PETSC_INTERN PetscErrorCode RollerRotationSetFromOptions(Roller);
 PETSC_INTERN void           RollerTheta(Roller, PetscReal, PetscReal *, PetscReal *, PetscReal *);
 PETSC_INTERN PetscReal      RollerSheetPosition(Roller, PetscReal);
 PETSC_INTERN PetscReal      RollerObstacleHeight(Roller, PetscReal);
-PETSC_INTERN PetscErrorCode RollerApplyRotate90(Vec, Vec);
+PETSC_INTERN PetscErrorCode RollerApplyRotate90(Roller, Vec, Vec);    /* nodal, or the reduced model's ops.R90 (-rom) */
 PETSC_INTERN PetscErrorCode RollerApplyRotation(Vec, PetscReal, Vec); /* cos(phi) x + sin(phi) R(-pi/2) x, nodal */
 
 /* fe.c */

@@ -73,6 +73,17 @@ static PetscErrorCode StepSolverSetUp(Roller ctx, RollerStepOperator *op)
   PetscBool    direct;
 
   PetscFunctionBeginUser;
+  if (ctx->ops.reduced) { /* -rom: a diagonal A on the reduced coordinates (src/rom), exact by Jacobi */
+    PC pc;
+
+    PetscCall(KSPCreate(ctx->comm, &op->ksp));
+    PetscCall(KSPSetOperators(op->ksp, op->A, op->A));
+    PetscCall(KSPSetType(op->ksp, KSPPREONLY));
+    PetscCall(KSPGetPC(op->ksp, &pc));
+    PetscCall(PCSetType(pc, PCJACOBI));
+    PetscCall(KSPSetUp(op->ksp));
+    PetscFunctionReturn(0);
+  }
   PetscCall(DMPlexCreateRigidBody(ctx->mesh.dm, 0, &nsp));
   PetscCall(MatSetNearNullSpace(op->A, nsp));
   PetscCall(MatNullSpaceDestroy(&nsp));
@@ -86,6 +97,27 @@ static PetscErrorCode StepSolverSetUp(Roller ctx, RollerStepOperator *op)
   PetscCall(PetscObjectTypeCompare((PetscObject)op->ksp, KSPPREONLY, &direct));
   PetscCall(KSPSetInitialGuessNonzero(op->ksp, (PetscBool)!direct));
   PetscCall(KSPSetUp(op->ksp));
+  PetscFunctionReturn(0);
+}
+
+/* -rom: the reduced model's passive unknowns (its residual forces at Gamma_C, src/rom) have no mass and no stiffness
+   in the scheme's operators; a unit diagonal there makes the step's solve copy them from the right-hand side. */
+static PetscErrorCode UnitPassiveDiagonal(Mat A)
+{
+  Vec          d;
+  PetscScalar *a;
+  PetscInt     n;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatCreateVecs(A, &d, NULL));
+  PetscCall(MatGetDiagonal(A, d));
+  PetscCall(VecGetLocalSize(d, &n));
+  PetscCall(VecGetArray(d, &a));
+  for (PetscInt i = 0; i < n; ++i)
+    if (a[i] == 0.0) a[i] = 1.0;
+  PetscCall(VecRestoreArray(d, &a));
+  PetscCall(MatDiagonalSet(A, d, INSERT_VALUES));
+  PetscCall(VecDestroy(&d));
   PetscFunctionReturn(0);
 }
 
@@ -117,6 +149,7 @@ PetscErrorCode RollerStepOperatorCreate(Roller ctx, PetscReal c_M, PetscReal c_K
     PetscCall(MatSetOption(op->A, MAT_SPD, PETSC_TRUE));
     PetscCall(MatSetOption(op->A, MAT_SPD_ETERNAL, PETSC_TRUE));
   }
+  if (ctx->ops.reduced) PetscCall(UnitPassiveDiagonal(op->A));
   PetscCall(PetscObjectSetName((PetscObject)op->A, "A"));
   PetscCall(StepSolverSetUp(ctx, op));
   PetscFunctionReturn(0);

@@ -32,7 +32,7 @@ PetscErrorCode RollerModeClassifierCreate(Roller ctx, RollerModeClassifier *p)
   PetscCall(VecDuplicate(ctx->ops.coordinates, &ones));
   PetscCall(VecDuplicate(ctx->ops.coordinates, &mass));
   PetscCall(VecSet(ones, 1.0));
-  PetscCall(MatMult(ctx->ops.M, ones, mass));
+  PetscCall(MatMult(ctx->ops.M_full ? ctx->ops.M_full : ctx->ops.M, ones, mass)); /* -rom: the full model's */
   PetscCall(VecGetLocalSize(mass, &n));
   c->n = n / 2;
   PetscCall(PetscMalloc3(c->n, &c->phi, c->n, &c->weight, 2 * c->n, &c->cs));

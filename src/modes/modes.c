@@ -176,6 +176,12 @@ PetscErrorCode RollerModesSolve(Roller ctx)
       PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], zr, zi));
       PetscCall(KeptToFull(kept, zr, ar ? ar : xr[j]));
       PetscCall(KeptToFull(kept, zi, ai ? ai : xi[j]));
+    } else if (ctx->ops.V) { /* -rom: the shape V z of the reduced model's coordinates z (-rom refuses -axle) */
+      if (!zr) PetscCall(MatCreateVecs(ctx->ops.V, &zr, NULL));
+      if (!zi) PetscCall(VecDuplicate(zr, &zi));
+      PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], zr, zi));
+      PetscCall(MatMult(ctx->ops.V, zr, xr[j]));
+      PetscCall(MatMult(ctx->ops.V, zi, xi[j]));
     } else PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], ar ? ar : xr[j], ai ? ai : xi[j]));
     if (ar) { /* the body's part, and the hub's */
       PetscCall(RollerAxleModeSplit(ar, xr[j], qr));

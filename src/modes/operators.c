@@ -52,7 +52,14 @@ PetscErrorCode RollerModeOperators(Roller ctx, Mat *M, Mat *C, Mat *K)
   PetscCall(MatDuplicate(ctx->ops.M, MAT_COPY_VALUES, M));
   PetscCall(MatScale(*M, rho));
   PetscCall(MatDuplicate(ctx->ops.K, MAT_COPY_VALUES, K));
-  if (ctx->eig.frame == ROLLER_FRAME_ROTATING) {
+  PetscCheck(!ctx->ops.reduced || ctx->eig.frame == ROLLER_FRAME_ROTATING, ctx->comm, PETSC_ERR_SUP, "-rom reduces the co-rotating frame's operators: -modes_frame lab is the full model's");
+  if (ctx->ops.reduced) { /* -rom (src/rom): the scheme's Coriolis force 2 rho theta' R(-pi/2) M v is ops.R90 on M v = v */
+    PetscCall(MatDuplicate(ctx->ops.K, MAT_COPY_VALUES, C));
+    PetscCall(MatScale(*C, ctx->material.viscosity));
+    PetscCall(MatAXPY(*C, -2.0 * w * rho, ctx->ops.R90, DIFFERENT_NONZERO_PATTERN));
+    PetscCall(MatAXPY(*C, ctx->disc.damping, ctx->ops.M, DIFFERENT_NONZERO_PATTERN));
+    PetscCall(MatAXPY(*K, -w * w * rho, ctx->ops.M, DIFFERENT_NONZERO_PATTERN));
+  } else if (ctx->eig.frame == ROLLER_FRAME_ROTATING) {
     Mat G;
 
     PetscCall(RollerAssembleMatrix(ctx, "G", g0_gyro, NULL, NULL, &G));

@@ -44,7 +44,7 @@ int main(int argc, char **argv)
     PetscCall(VecSetValue(x, 3, 4.0, INSERT_VALUES));
     PetscCall(VecAssemblyBegin(x));
     PetscCall(VecAssemblyEnd(x));
-    PetscCall(RollerApplyRotate90(x, y));
+    PetscCall(RollerApplyRotate90(&ctx, x, y)); /* ops.R90 NULL: the nodal rotation */
     PetscCall(VecGetArrayRead(y, &ya));
     /* R(-pi/2)(a, b) = (b, -a) */
     PetscCheck(ya[0] == 2.0 && ya[1] == -1.0 && ya[2] == 4.0 && ya[3] == 3.0, PETSC_COMM_WORLD, PETSC_ERR_PLIB, "R(-pi/2): got (%g, %g), (%g, %g)", (double)ya[0], (double)ya[1], (double)ya[2], (double)ya[3]);

@@ -36,7 +36,7 @@ static PetscErrorCode CheckAffine(Roller ctx, Mat M)
   PetscCall(VecDuplicate(one, &w));
   PetscCall(VecDuplicate(one, &x));
   PetscCall(VecSet(one, 1.0));
-  PetscCall(RollerApplyRotate90(ctx->ops.coordinates, Rx));
+  PetscCall(RollerApplyRotate90(ctx, ctx->ops.coordinates, Rx));
   PetscCall(VecWAXPY(x, 0.3, one, ctx->ops.coordinates)); /* off the centre of mass, so x^T M 1 != 0 */
   f[0] = one;
   f[1] = x;

@@ -1,0 +1,250 @@
+/* The reduced basis (docs/performance.md "Reduced-order transient"): the modes of the roller clamped at the shaft,
+   K phi = w^2 M phi (free dofs: Gamma_D removed), below the cutoff w_cut (or the -rom_modes lowest), by SLEPc's
+   Krylov-Schur with shift-and-invert about 0 (one Cholesky factorization of K, the ranks the run is given); then the
+   static responses to the rigid-body loads, K s = L_centrifugal and K s = L_euler, M-orthogonalized against the modes
+   (which makes them K-orthogonal to the modes too: phi^T K s = phi^T L = w^2 phi^T M s) and against each other, and
+   rotated to diagonalize their own 2 x 2 block of K. V = [phi, s] is M-orthonormal and V^T K V diagonal. */
+#include "rom/rom.h"
+
+/* The modes: nev from -rom_modes, or from the cutoff by the two-dimensional Weyl law N(w) ~ w^2 fitted to a first
+   solve, repeated until the last converged eigenvalue passes w_cut^2. */
+static PetscErrorCode ModesSolve(Roller ctx, RollerRom rom, EPS *eps, PetscInt *nkeep)
+{
+  ST              st;
+  KSP             ksp;
+  PetscInt        nev = rom->modes_req > 0 ? rom->modes_req : 40, nconv, N;
+  PetscReal       lam_last;
+  const PetscReal lam_cut = ctx->material.density * rom->w_cut * rom->w_cut; /* ops.M is the unit density's: lambda = rho w^2 */
+
+  PetscFunctionBeginUser;
+  PetscCall(MatGetSize(ctx->ops.K, &N, NULL));
+  PetscCall(EPSCreate(ctx->comm, eps));
+  PetscCall(EPSSetOptionsPrefix(*eps, "rom_"));
+  PetscCall(EPSSetOperators(*eps, ctx->ops.K, ctx->ops.M));
+  PetscCall(EPSSetProblemType(*eps, EPS_GHEP));
+  PetscCall(EPSSetType(*eps, EPSKRYLOVSCHUR));
+  PetscCall(EPSSetTarget(*eps, 0.0));
+  PetscCall(EPSSetWhichEigenpairs(*eps, EPS_TARGET_MAGNITUDE));
+  PetscCall(EPSSetTolerances(*eps, 1e-12, PETSC_DEFAULT));
+  PetscCall(EPSGetST(*eps, &st));
+  PetscCall(STSetType(st, STSINVERT));
+  PetscCall(STGetKSP(st, &ksp));
+  PetscCall(RollerDirectSolverDefaults(ksp, PCCHOLESKY));
+  PetscCall(EPSSetFromOptions(*eps));
+  for (PetscInt pass = 0;; ++pass) {
+    nev = PetscMin(nev, N - 1);
+    PetscCall(EPSSetDimensions(*eps, nev, PETSC_DEFAULT, PETSC_DEFAULT));
+    PetscCall(EPSSolve(*eps));
+    PetscCall(EPSGetConverged(*eps, &nconv));
+    PetscCheck(nconv > 0, ctx->comm, PETSC_ERR_CONV_FAILED, "-rom: no mode of the clamped roller converged (asked for %" PetscInt_FMT ")", nev);
+    PetscCall(EPSGetEigenvalue(*eps, nconv - 1, &lam_last, NULL));
+    if (rom->modes_req > 0) {
+      *nkeep = PetscMin(nconv, rom->modes_req);
+      break;
+    }
+    if (lam_last >= lam_cut || nev == N - 1) { /* every mode below the cutoff has converged */
+      *nkeep = 0;
+      for (PetscInt i = 0; i < nconv; ++i) {
+        PetscReal lam;
+
+        PetscCall(EPSGetEigenvalue(*eps, i, &lam, NULL));
+        if (lam < lam_cut) *nkeep = i + 1;
+      }
+      break;
+    }
+    PetscCheck(pass < 8, ctx->comm, PETSC_ERR_CONV_FAILED, "-rom_cutoff: %" PetscInt_FMT " modes did not reach the cutoff %g (last w %g)", nconv, (double)(rom->w_cut / (2 * PETSC_PI)), (double)PetscSqrtReal(lam_last / ctx->material.density));
+    nev = (PetscInt)PetscCeilReal(1.2 * nconv * lam_cut / lam_last) + 10;
+  }
+  PetscFunctionReturn(0);
+}
+
+/* x <- x / |x|_M */
+static PetscErrorCode MNormalize(Mat M, Vec x, Vec w)
+{
+  PetscScalar n2;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatMult(M, x, w));
+  PetscCall(VecDot(x, w, &n2));
+  PetscCall(VecScale(x, 1.0 / PetscSqrtReal(PetscRealPart(n2))));
+  PetscFunctionReturn(0);
+}
+
+/* s <- s - V_k (V_k^T M s) over the first k columns of V, twice (classical Gram-Schmidt, repeated). */
+static PetscErrorCode MOrthogonalize(Roller ctx, Mat V, PetscInt k, Vec s, Vec w)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt pass = 0; pass < 2; ++pass) {
+    PetscCall(MatMult(ctx->ops.M, s, w));
+    for (PetscInt j = 0; j < k; ++j) {
+      Vec         v;
+      PetscScalar c;
+
+      PetscCall(MatDenseGetColumnVecRead(V, j, &v));
+      PetscCall(VecDot(v, w, &c));
+      PetscCall(VecAXPY(s, -c, v));
+      PetscCall(MatDenseRestoreColumnVecRead(V, j, &v));
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The columns of a dense N x n matrix as Vecs sharing its storage, to read (the array stays where it is; *cols
+   freed by RollerRomColumnsRestore). */
+PetscErrorCode RollerRomColumnsGet(Mat A, Vec **cols)
+{
+  PetscScalar *a;
+  PetscInt     nloc, n, lda;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatGetLocalSize(A, &nloc, NULL));
+  PetscCall(MatGetSize(A, NULL, &n));
+  PetscCall(MatDenseGetLDA(A, &lda));
+  PetscCall(MatDenseGetArray(A, &a));
+  PetscCall(PetscMalloc1(n, cols));
+  for (PetscInt j = 0; j < n; ++j) PetscCall(VecCreateMPIWithArray(PetscObjectComm((PetscObject)A), 1, nloc, PETSC_DECIDE, a + (size_t)j * lda, &(*cols)[j]));
+  PetscCall(MatDenseRestoreArray(A, &a));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerRomColumnsRestore(Mat A, Vec **cols)
+{
+  PetscInt n;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatGetSize(A, NULL, &n));
+  for (PetscInt j = 0; j < n; ++j) PetscCall(VecDestroy(&(*cols)[j]));
+  PetscCall(PetscFree(*cols));
+  PetscFunctionReturn(0);
+}
+
+/* C = A^T B (n x n, column-major, the same on every rank) of two dense N x n matrices, by n VecMDot. */
+PetscErrorCode RollerRomGram(Mat A, Mat B, PetscReal C[])
+{
+  Vec         *a, *b;
+  PetscInt     n;
+  PetscScalar *c;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatGetSize(A, NULL, &n));
+  PetscCall(PetscMalloc1(n, &c));
+  PetscCall(RollerRomColumnsGet(A, &a));
+  PetscCall(RollerRomColumnsGet(B, &b));
+  for (PetscInt j = 0; j < n; ++j) {
+    PetscCall(VecMDot(b[j], n, a, c));
+    for (PetscInt i = 0; i < n; ++i) C[i + (size_t)j * n] = PetscRealPart(c[i]);
+  }
+  PetscCall(RollerRomColumnsRestore(B, &b));
+  PetscCall(RollerRomColumnsRestore(A, &a));
+  PetscCall(PetscFree(c));
+  PetscFunctionReturn(0);
+}
+
+/* The static responses in columns nm, nm + 1 of V (the factorization of K is the eigensolver's, shift 0), made
+   M-orthonormal against everything before them, and rotated so that their 2 x 2 block of K is diagonal. */
+static PetscErrorCode StaticResponses(Roller ctx, RollerRom rom, EPS eps, Vec w)
+{
+  const PetscInt nm   = rom->nmodes;
+  Vec            L[2] = {ctx->ops.L_centrifugal, ctx->ops.L_euler}, s[2], Ks[2], col;
+  ST             st;
+  KSP            ksp;
+  PetscScalar    k11, k12, k22;
+  PetscReal      phi, c, sn;
+
+  PetscFunctionBeginUser;
+  PetscCall(EPSGetST(eps, &st));
+  PetscCall(STGetKSP(st, &ksp));
+  for (PetscInt j = 0; j < 2; ++j) {
+    PetscCall(VecDuplicate(w, &s[j]));
+    PetscCall(VecDuplicate(w, &Ks[j]));
+    PetscCall(KSPSolve(ksp, L[j], s[j]));
+    PetscCall(MOrthogonalize(ctx, rom->V, nm, s[j], w));
+    if (j == 1) { /* against s[0] */
+      PetscScalar d;
+
+      PetscCall(MatMult(ctx->ops.M, s[0], w));
+      PetscCall(VecDot(s[1], w, &d));
+      PetscCall(VecAXPY(s[1], -d, s[0]));
+    }
+    PetscCall(MNormalize(ctx->ops.M, s[j], w));
+  }
+  PetscCall(MatMult(ctx->ops.K, s[0], Ks[0]));
+  PetscCall(MatMult(ctx->ops.K, s[1], Ks[1]));
+  PetscCall(VecDot(s[0], Ks[0], &k11));
+  PetscCall(VecDot(s[0], Ks[1], &k12));
+  PetscCall(VecDot(s[1], Ks[1], &k22));
+  phi = 0.5 * PetscAtan2Real(2.0 * PetscRealPart(k12), PetscRealPart(k11 - k22)); /* the Jacobi rotation of the 2 x 2 block */
+  c   = PetscCosReal(phi);
+  sn  = PetscSinReal(phi);
+  PetscCall(VecCopy(s[0], w));
+  PetscCall(VecAXPBY(s[0], sn, c, s[1])); /* c s0 + sn s1 */
+  PetscCall(VecAXPBY(s[1], -sn, c, w));   /* c s1 - sn s0 */
+  for (PetscInt j = 0; j < 2; ++j) {
+    PetscCall(MatDenseGetColumnVecWrite(rom->V, nm + j, &col));
+    PetscCall(VecCopy(s[j], col));
+    PetscCall(MatDenseRestoreColumnVecWrite(rom->V, nm + j, &col));
+    PetscCall(VecDestroy(&s[j]));
+    PetscCall(VecDestroy(&Ks[j]));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The round-off of the basis: V^T M V - I and the off-diagonal of V^T K V (relative to its largest entry); the
+   diagonal of V^T K V is the reduced stiffness. */
+static PetscErrorCode Check(Roller ctx, RollerRom rom)
+{
+  Mat            MV, KV;
+  PetscReal     *g, big = 0.0, off_k = 0.0, off_m = 0.0;
+  const PetscInt n = rom->nq;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1((size_t)n * n, &g));
+  PetscCall(MatMatMult(ctx->ops.M, rom->V, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &MV));
+  PetscCall(MatMatMult(ctx->ops.K, rom->V, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &KV));
+  PetscCall(RollerRomGram(rom->V, KV, g));
+  for (PetscInt i = 0; i < n; ++i) {
+    rom->lambda[i] = g[i + i * n];
+    big            = PetscMax(big, PetscAbsReal(rom->lambda[i]));
+  }
+  for (PetscInt i = 0; i < n; ++i)
+    for (PetscInt j = 0; j < n; ++j)
+      if (i != j) off_k = PetscMax(off_k, PetscAbsReal(g[i + j * n]) / big);
+  PetscCall(RollerRomGram(rom->V, MV, g));
+  for (PetscInt i = 0; i < n; ++i)
+    for (PetscInt j = 0; j < n; ++j) off_m = PetscMax(off_m, PetscAbsReal(g[i + j * n] - (i == j ? 1.0 : 0.0)));
+  PetscCall(MatDestroy(&MV));
+  PetscCall(MatDestroy(&KV));
+  PetscCall(PetscFree(g));
+  rom->offdiag = PetscMax(off_k, off_m);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerRomBasis(Roller ctx, RollerRom rom)
+{
+  EPS      eps;
+  PetscInt nloc, N, nkeep = 0;
+  Vec      w;
+
+  PetscFunctionBeginUser;
+  PetscCall(ModesSolve(ctx, rom, &eps, &nkeep));
+  rom->nmodes = nkeep;
+  rom->nq     = nkeep + 2;
+  PetscCall(VecGetLocalSize(ctx->state.cur, &nloc));
+  PetscCall(VecGetSize(ctx->state.cur, &N));
+  PetscCall(MatCreateDense(ctx->comm, nloc, PETSC_DECIDE, N, rom->nq, NULL, &rom->V));
+  PetscCall(PetscMalloc1(rom->nq, &rom->lambda));
+  PetscCall(VecDuplicate(ctx->state.cur, &w));
+  for (PetscInt i = 0; i < nkeep; ++i) {
+    Vec v;
+
+    PetscCall(MatDenseGetColumnVecWrite(rom->V, i, &v));
+    PetscCall(EPSGetEigenvector(eps, i, v, NULL));
+    PetscCall(MNormalize(ctx->ops.M, v, w));
+    PetscCall(MatDenseRestoreColumnVecWrite(rom->V, i, &v));
+  }
+  PetscCall(StaticResponses(ctx, rom, eps, w));
+  PetscCall(VecDestroy(&w));
+  PetscCall(EPSDestroy(&eps));
+  PetscCall(Check(ctx, rom));
+  PetscFunctionReturn(0);
+}

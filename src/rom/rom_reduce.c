@@ -1,0 +1,149 @@
+/* The reduced model put in the context (docs/performance.md "Reduced-order transient"): with the M-orthonormal
+   basis V (rom_basis.c) the coordinates q of xi = V q have M_r = I, K_r = diag(lambda) (its Kelvin-Voigt term tau K_r
+   with it), the rotating frame's R(-pi/2) M on M products G_r = V^T R(-pi/2) M V (dense, skew), the loads V^T L and the
+   functionals V^T w; the levels of the state are projected, q = V^T M xi. The schemes (integrate/scheme_newmark.c),
+   the driver, the diagnostics and the CSV then step and report the reduced model unchanged; its step matrix
+   c_M I + c_K K_r is diagonal (model/solver.c). */
+#include "rom/rom.h"
+
+/* A diagonal n x n AIJ matrix with the values d[] (every rank holds all of d). */
+static PetscErrorCode Diagonal(MPI_Comm comm, PetscInt n, const PetscReal d[], Mat *A)
+{
+  PetscInt rstart, rend;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatCreateAIJ(comm, PETSC_DECIDE, PETSC_DECIDE, n, n, 1, NULL, 0, NULL, A));
+  PetscCall(MatGetOwnershipRange(*A, &rstart, &rend));
+  for (PetscInt i = rstart; i < rend; ++i) PetscCall(MatSetValue(*A, i, i, d[i], INSERT_VALUES)); /* zeros too: the pattern of the step matrix */
+  PetscCall(MatAssemblyBegin(*A, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*A, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+/* G_r = V^T R(-pi/2) (M V) in the leading nq x nq block of an n x n AIJ matrix. */
+static PetscErrorCode Rotation(Roller ctx, RollerRom rom, PetscInt n, Mat *R)
+{
+  const PetscInt nq = rom->nq;
+  Mat            MV;
+  Vec           *cols, w;
+  PetscReal     *g;
+  PetscScalar   *row;
+  PetscInt       rstart, rend, *idx;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatMatMult(ctx->ops.M, rom->V, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &MV));
+  PetscCall(RollerRomColumnsGet(MV, &cols));
+  PetscCall(VecDuplicate(cols[0], &w));
+  for (PetscInt j = 0; j < nq; ++j) { /* the nodal R(-pi/2): ops.R90 is not set yet */
+    PetscCall(RollerApplyRotate90(ctx, cols[j], w));
+    PetscCall(VecCopy(w, cols[j]));
+  }
+  PetscCall(VecDestroy(&w));
+  PetscCall(RollerRomColumnsRestore(MV, &cols));
+  PetscCall(PetscMalloc3((size_t)nq * nq, &g, nq, &idx, nq, &row));
+  PetscCall(RollerRomGram(rom->V, MV, g));
+  for (PetscInt j = 0; j < nq; ++j) idx[j] = j;
+  PetscCall(MatCreateAIJ(ctx->comm, PETSC_DECIDE, PETSC_DECIDE, n, n, nq, NULL, nq, NULL, R));
+  PetscCall(MatGetOwnershipRange(*R, &rstart, &rend));
+  for (PetscInt i = rstart; i < PetscMin(rend, nq); ++i) {
+    for (PetscInt j = 0; j < nq; ++j) row[j] = g[i + (size_t)j * nq];
+    PetscCall(MatSetValues(*R, 1, &i, nq, idx, row, INSERT_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(*R, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*R, MAT_FINAL_ASSEMBLY));
+  PetscCall(PetscFree3(g, idx, row));
+  PetscCall(MatDestroy(&MV));
+  PetscFunctionReturn(0);
+}
+
+/* y (reduced, the layout of the reduced matrices) = V^T x, or V^T M x with mass; entries past nq are 0. */
+static PetscErrorCode Project(Roller ctx, RollerRom rom, Vec x, PetscBool mass, Vec y)
+{
+  Vec                p, Mx = NULL, all;
+  VecScatter         sc;
+  const PetscScalar *a;
+  PetscInt           rstart, rend;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatCreateVecs(rom->V, &p, NULL));
+  if (mass) {
+    PetscCall(VecDuplicate(x, &Mx));
+    PetscCall(MatMult(ctx->ops.M, x, Mx));
+  }
+  PetscCall(MatMultTranspose(rom->V, mass ? Mx : x, p));
+  PetscCall(VecScatterCreateToAll(p, &sc, &all));
+  PetscCall(VecScatterBegin(sc, p, all, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(sc, p, all, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecZeroEntries(y));
+  PetscCall(VecGetOwnershipRange(y, &rstart, &rend));
+  PetscCall(VecGetArrayRead(all, &a));
+  for (PetscInt i = rstart; i < PetscMin(rend, rom->nq); ++i) PetscCall(VecSetValue(y, i, a[i], INSERT_VALUES));
+  PetscCall(VecRestoreArrayRead(all, &a));
+  PetscCall(VecAssemblyBegin(y));
+  PetscCall(VecAssemblyEnd(y));
+  PetscCall(VecScatterDestroy(&sc));
+  PetscCall(VecDestroy(&all));
+  PetscCall(VecDestroy(&p));
+  PetscCall(VecDestroy(&Mx));
+  PetscFunctionReturn(0);
+}
+
+/* A full-space vector replaced by its reduced image (V^T v, or V^T M v). */
+static PetscErrorCode Replace(Roller ctx, RollerRom rom, Vec tmpl, PetscBool mass, Vec *v)
+{
+  Vec r;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(tmpl, &r));
+  PetscCall(Project(ctx, rom, *v, mass, r));
+  PetscCall(VecDestroy(v));
+  *v = r;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerRomReduce(Roller ctx, RollerRom rom)
+{
+  const PetscInt n  = rom->nq;
+  RollerState   *st = &ctx->state;
+  PetscReal     *one, *lam;
+  Mat            M, K, R;
+  Vec            tmpl, *work[] = {&st->next, &st->Kcur, &st->Kprev, &st->Kprev2, &st->Mcur, &st->velocity, &st->rhs, &st->load, &st->work};
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc2(n, &one, n, &lam));
+  for (PetscInt i = 0; i < rom->nq; ++i) {
+    one[i] = 1.0;
+    lam[i] = rom->lambda[i];
+  }
+  PetscCall(Diagonal(ctx->comm, n, one, &M));
+  PetscCall(Diagonal(ctx->comm, n, lam, &K));
+  PetscCall(PetscFree2(one, lam));
+  PetscCall(Rotation(ctx, rom, n, &R));
+  PetscCall(MatCreateVecs(K, &tmpl, NULL));
+  /* the state: the levels projected (M-orthonormal V: q = V^T M xi), the rest recomputed */
+  PetscCall(Replace(ctx, rom, tmpl, PETSC_TRUE, &st->cur));
+  PetscCall(Replace(ctx, rom, tmpl, PETSC_TRUE, &st->prev));
+  PetscCall(Replace(ctx, rom, tmpl, PETSC_TRUE, &st->prev2));
+  for (size_t k = 0; k < sizeof(work) / sizeof(work[0]); ++k) {
+    PetscCall(VecDestroy(work[k]));
+    PetscCall(VecDuplicate(tmpl, work[k]));
+  }
+  /* the operators */
+  PetscCall(Replace(ctx, rom, tmpl, PETSC_FALSE, &ctx->ops.L_euler));
+  PetscCall(Replace(ctx, rom, tmpl, PETSC_FALSE, &ctx->ops.L_centrifugal));
+  PetscCall(Replace(ctx, rom, tmpl, PETSC_FALSE, &ctx->ops.w_R));
+  PetscCall(Replace(ctx, rom, tmpl, PETSC_FALSE, &ctx->ops.w_alpha));
+  ctx->ops.M_full = ctx->ops.M;
+  PetscCall(MatDestroy(&ctx->ops.K));
+  ctx->ops.M   = M;
+  ctx->ops.K   = K;
+  ctx->ops.R90 = R;
+  PetscCall(PetscObjectReference((PetscObject)rom->V));
+  ctx->ops.V       = rom->V;
+  ctx->ops.reduced = PETSC_TRUE;
+  PetscCall(MatMult(K, st->cur, st->Kcur));
+  PetscCall(MatMult(K, st->prev, st->Kprev));
+  PetscCall(MatMult(K, st->prev2, st->Kprev2));
+  PetscCall(VecDestroy(&tmpl));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,10 @@
+# The reduced-order transient (-rom, docs/performance.md "Reduced-order transient"), without contact: the reduced
+# model's eigenvalues below the cutoff against the full model's (0.1 %), its energy balance to round-off, and its
+# transient against the full one (about 40 s)
+roller_test(rom_free rom_free.py LABELS quick TIMEOUT 600)
+# Contact and friction on the reduced model: the printer on a coarse mesh, 4 ms, 150 modes: its energy identity with
+# contact and friction to round-off, no penetration, KKT and Coulomb residuals (about 1 min)
+roller_test(rom_contact rom_contact.py LABELS quick TIMEOUT 900)
+# The issue's agreement over 30 ms of the printer: the reduced model's mean contact and friction forces within 1 % and
+# 2 % of the full model's, the friction force's largest line within 1 % and 2 dB (about 10 min of CPU)
+roller_test(rom_printer rom_printer.py LABELS long TIMEOUT 5400)
