@@ -1,6 +1,7 @@
 /* -modes (docs/squeal.md): instead of stepping, the modes of the scene, the quadratic eigenproblem of
    operators.c solved by pep.c, each eigenvalue classified (classify.c), written one row per eigenvalue to the
-   CSV (-modes_csv F: re,im,frequency,growth_rate,order,wave,error, sorted by frequency; written as F.part and
+   CSV (-modes_csv F: re,im,frequency,growth_rate,order,wave,error,loss_factor,rubber_loss_factor, sorted by
+   frequency; loss_factor = -2 re/im, rubber_loss_factor the rubber's for the shape at im, branches.c; written as F.part and
    renamed when complete) and printed; the shapes to HDF5 + XDMF (-modes_output F.h5, io/output_modes.c). */
 #include "modes/modes.h"
 
@@ -25,7 +26,7 @@ PetscErrorCode RollerModesSetFromOptions(Roller ctx)
                              ctx->eig.stick_margin, &ctx->eig.stick_margin, NULL));
   PetscCall(PetscOptionsEnum("-modes_slip_difference", "With -obstacle: the steady state's slip along Gamma_C from the displacement at a candidate and its upstream neighbour (docs/squeal.md 3, 4.4.4): box (the slip at their midpoint: the stick CEA converges), upwind (at the candidate) or upwind2 (three points at the candidate: not monotone, fragmented stick zones)", "RollerSlipDifference", RollerSlipDifferences,
                              (PetscEnum)ctx->eig.slip_difference, (PetscEnum *)&ctx->eig.slip_difference, NULL));
-  PetscCall(PetscOptionsString("-modes_csv", "Eigenvalue CSV: re,im,frequency,growth_rate,order,wave,error", NULL, ctx->eig.csv, ctx->eig.csv, sizeof(ctx->eig.csv), NULL));
+  PetscCall(PetscOptionsString("-modes_csv", "Eigenvalue CSV: re,im,frequency,growth_rate,order,wave,error,loss_factor,rubber_loss_factor", NULL, ctx->eig.csv, ctx->eig.csv, sizeof(ctx->eig.csv), NULL));
   PetscCall(PetscOptionsString("-modes_steady_csv", "With -obstacle: the steady state's contact nodes x,y,normal_force,tangential_force,gap,slip_velocity,mu,state", NULL, ctx->eig.steady_csv, ctx->eig.steady_csv, sizeof(ctx->eig.steady_csv), NULL));
   PetscCall(PetscOptionsString("-modes_output", "Mode shapes: HDF5 file F.h5 (+ XDMF index F.xmf for ParaView)", NULL, ctx->eig.output, ctx->eig.output, sizeof(ctx->eig.output), NULL));
   PetscOptionsEnd();
@@ -100,9 +101,10 @@ static PetscErrorCode WriteCsv(Roller ctx)
   PetscFunctionBeginUser;
   PetscCall(RollerPartFileOpen(ctx->comm, e->csv, "-modes_csv", part, sizeof(part), &fp));
   if (fp) {
-    PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "re,im,frequency,growth_rate,order,wave,error\n"));
+    PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "re,im,frequency,growth_rate,order,wave,error,loss_factor,rubber_loss_factor\n"));
     for (PetscInt j = 0; j < e->n; ++j)
-      PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%s,%.3e\n", (double)e->re[j], (double)e->im[j], (double)e->im[j], (double)e->re[j], e->order[j], RollerWaves[e->wave[j]], (double)e->error[j]));
+      PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%s,%.3e,%.17g,%.17g\n", (double)e->re[j], (double)e->im[j], (double)e->im[j], (double)e->re[j], e->order[j], RollerWaves[e->wave[j]], (double)e->error[j],
+                             e->im[j] > 0 ? (double)(-2 * e->re[j] / e->im[j]) : 0.0, (double)e->rubber_loss[j]));
   }
   PetscCall(RollerPartFileClose(ctx->comm, &fp, part, e->csv));
   PetscFunctionReturn(0);
@@ -114,22 +116,25 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   Mat                  M, C, K;
   RollerPEP            pep;
   RollerModeClassifier cls;
-  Vec                 *xr, *xi, w, zr = NULL, zi = NULL, steady = NULL;
+  Vec                 *xr, *xi, w, zr, zi, fr = NULL, fi = NULL, steady = NULL; /* z: the PEP's vectors; f: with -obstacle, the full ones before the reduction */
   IS                   kept   = NULL; /* with -obstacle: the dofs of the reduced problem */
   PetscInt             nstick = 0;    /* and the stick nodes' multipliers after them */
+  PetscReal            band[2];       /* the Maxwell branches' relaxation band, left out */
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_MODES]));
   PetscCall(RollerModeOperators(ctx, &M, &C, &K));
+  PetscCall(RollerBranchOperators(ctx, &M, &C, &K));
   if (ctx->obstacle.on) { /* the steady state, and the linearization about it on the kept dofs */
     RollerSteady st;
     Mat          Mr, Cr, Kr;
 
     PetscCall(RollerSteadySolve(ctx, K, &st));
     PetscCall(RollerSteadyReport(ctx, &st));
+    PetscCall(MatCreateVecs(K, &fr, &fi));
     if (e->nev) PetscCall(RollerSquealOperators(ctx, &st, M, C, K, &Mr, &Cr, &Kr, &kept, &nstick));
-    steady = st.u; /* kept for the shapes' file */
-    st.u   = NULL;
+    PetscCall(VecDuplicate(ctx->ops.coordinates, &steady)); /* kept for the shapes' file: the displacement */
+    PetscCall(RollerBranchRestrict(st.u, steady));
     PetscCall(RollerSteadyDestroy(&st, PETSC_TRUE));
     PetscCall(MatDestroy(&M));
     PetscCall(MatDestroy(&C));
@@ -144,26 +149,29 @@ PetscErrorCode RollerModesSolve(Roller ctx)
     C = Cr;
     K = Kr;
   }
-  PetscCall(RollerPEPCreate(ctx->comm, M, C, K, e->nev, nstick ? PETSC_TRUE : PETSC_FALSE, &pep));
+  PetscCall(RollerPEPCreate(ctx->comm, M, C, K, e->nev, nstick ? PETSC_TRUE : PETSC_FALSE, RollerBranchRelaxationBand(ctx, band) ? band : NULL, &pep));
   PetscCall(RollerPEPSolve(pep, &e->n));
   PetscCall(RollerModeClassifierCreate(ctx, &cls));
-  PetscCall(PetscFree5(e->order, e->wave, e->re, e->im, e->error));
-  PetscCall(PetscMalloc5(e->n, &e->order, e->n, &e->wave, e->n, &e->re, e->n, &e->im, e->n, &e->error));
+  PetscCall(PetscFree6(e->order, e->wave, e->re, e->im, e->error, e->rubber_loss));
+  PetscCall(PetscMalloc6(e->n, &e->order, e->n, &e->wave, e->n, &e->re, e->n, &e->im, e->n, &e->error, e->n, &e->rubber_loss));
   PetscCall(VecDuplicateVecs(ctx->ops.coordinates, e->n, &xr));
   PetscCall(VecDuplicateVecs(ctx->ops.coordinates, e->n, &xi));
   PetscCall(VecDuplicate(ctx->ops.coordinates, &w));
+  PetscCall(MatCreateVecs(M, &zr, &zi));
   for (PetscInt j = 0; j < e->n; ++j) {
     RollerWave wave;
 
+    PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], zr, zi));
     if (kept) { /* the reduced vector into the full space; the active nodes' normal dofs are 0 */
-      if (!zr) PetscCall(MatCreateVecs(M, &zr, &zi));
-      PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], zr, zi));
-      PetscCall(KeptToFull(kept, zr, xr[j]));
-      PetscCall(KeptToFull(kept, zi, xi[j]));
-    } else PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], xr[j], xi[j]));
+      PetscCall(KeptToFull(kept, zr, fr));
+      PetscCall(KeptToFull(kept, zi, fi));
+    }
+    PetscCall(RollerBranchRestrict(kept ? fr : zr, xr[j])); /* the displacement part (all of it without branches) */
+    PetscCall(RollerBranchRestrict(kept ? fi : zi, xi[j]));
     PetscCall(RollerPEPGetError(pep, j, &e->error[j]));
     PetscCall(Normalize(xr[j], xi[j], w));
     PetscCall(RollerModeClassify(cls, xr[j], xi[j], &e->order[j], &wave));
+    PetscCall(RollerBranchLossFactor(ctx, xr[j], xi[j], e->im[j], &e->rubber_loss[j]));
     e->wave[j] = wave;
   }
   PetscCall(PetscLogStagePop());
@@ -184,6 +192,8 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   PetscCall(VecDestroy(&steady));
   PetscCall(VecDestroy(&zr));
   PetscCall(VecDestroy(&zi));
+  PetscCall(VecDestroy(&fr));
+  PetscCall(VecDestroy(&fi));
   PetscCall(ISDestroy(&kept));
   PetscCall(RollerModeClassifierDestroy(&cls));
   PetscCall(RollerPEPDestroy(&pep));
@@ -196,7 +206,7 @@ PetscErrorCode RollerModesSolve(Roller ctx)
 PetscErrorCode RollerModesDestroy(Roller ctx)
 {
   PetscFunctionBeginUser;
-  PetscCall(PetscFree5(ctx->eig.order, ctx->eig.wave, ctx->eig.re, ctx->eig.im, ctx->eig.error));
+  PetscCall(PetscFree6(ctx->eig.order, ctx->eig.wave, ctx->eig.re, ctx->eig.im, ctx->eig.error, ctx->eig.rubber_loss));
   ctx->eig.n = 0;
   PetscFunctionReturn(0);
 }
