@@ -4,7 +4,7 @@ configuration (jobs/paper/fig4.yaml: P1, h = dt = 0.0125, backward Coriolis, the
 default (no discretization option: the scheme, dt and h from -ts_phase_error 0.01), the former default (the DMF at
 dt = 0.00172 on the same mesh), and the option sets that reach 0.1 % (-ts_phase_error 0.001 and the given ones),
 run in R interleaved rounds; each run's errors of R(t) and alpha(t) against the exact axisymmetric reference
-(scripts/axisym_reference.py, n = 256), its CPU time (user + system of the whole process) as the median over the
+(scripts/rollerref/axisym.py, n = 256), its CPU time (user + system of the whole process) as the median over the
 rounds, and the ratio to the paper configuration's median (the machine is shared: the ratio is the measurement,
 absolute seconds are not). Writes the table to stdout and bench/results/headline.md.
 
@@ -22,7 +22,7 @@ import benchlib  # noqa: E402
 
 ROOT = benchlib.ROOT
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
-import axisym_reference as ar  # noqa: E402
+from rollerref import axisym as ar  # noqa: E402
 
 RUNS = [
     ("paper (jobs/paper/fig4.yaml): P1 h=dt=0.0125, dmf, CG", ["-options_file", os.path.join(ROOT, "jobs", "paper", "fig4.yaml")]),

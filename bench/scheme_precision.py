@@ -3,7 +3,7 @@
 each scheme (-ts_scheme dmf, trapezoidal, composed) at a ladder of dt on the former default P2 mesh (h = 0.0348), the
 composed scheme on finer P2 meshes and on P3 meshes, the default (P3), and the paper's configuration (jobs/paper/fig4.yaml). Each run's error is the
 larger of max|R - R_exact| / max|R_exact| and the same for alpha, against the exact axisymmetric reference
-(scripts/axisym_reference.py, n = 256); its cost the CPU time (user + system) of the whole process. With --rounds R
+(scripts/rollerref/axisym.py, n = 256); its cost the CPU time (user + system) of the whole process. With --rounds R
 the runs are interleaved R times and the median CPU is kept. Writes bench/results/scheme_precision.{md,png} and
 docs/figures/perf_schemes.png.
 
@@ -21,7 +21,7 @@ import benchlib  # noqa: E402
 
 ROOT = benchlib.ROOT
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
-import axisym_reference as ar  # noqa: E402
+from rollerref import axisym as ar  # noqa: E402
 
 H = 0.0347906  # the default P2 mesh of this scene (-ts_phase_error 0.01)
 LADDER = {"dmf": [0.0069, 0.00344, 0.00172, 0.00086], "trapezoidal": [0.0144, 0.0072, 0.0036, 0.0018],

@@ -1,14 +1,15 @@
 #!/usr/bin/python3
 """P2/P3 spatial error of the order-0 modes (torsional w_t, second torsional, and breathing when found) of the
-free annulus (-omega 0) against the exact annulus modes (scripts/annulus_modes_reference.py), per nu and h:
+free annulus (-omega 0) against the exact annulus modes (scripts/rollerref/annulus_modes.py), per nu and h:
 relative frequency error, unknowns, CPU (user+sys) of the `roller -modes` process. No transients: the mode
 error is the spatial phase error per unit time (docs/model.md 6.2).
   bench/space_modes.py [--nus 0.3,0.4,0.45,0.49] [--hs 0.1,0.07,0.05,0.035] [--degrees 2,3] [--csv F]"""
 import argparse, csv, io, os, re, subprocess, sys
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+os.environ["PYTHONPATH"] = os.path.join(root, "scripts") + os.pathsep + os.environ.get("PYTHONPATH", "")
 
 def reference(nu):
-    out = subprocess.run([sys.executable, os.path.join(root, "scripts/annulus_modes_reference.py"), "--orders", "0", "--count", "3",
+    out = subprocess.run([sys.executable, "-m", "rollerref.annulus_modes", "--orders", "0", "--count", "3",
                           "--omega", "0", "--poisson", str(nu), "--n", "96"], capture_output=True, text=True, check=True).stdout
     return sorted(float(r["frequency"]) for r in csv.DictReader(io.StringIO(out)))
 

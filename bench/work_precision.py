@@ -3,7 +3,7 @@
 
 Scenes
   free     the obstacle-free scene (paper figures 3-4, Table 1 values, 0 <= t <= T, T = 20). Error of R(t) and
-           alpha(t) against the exact axisymmetric reference (scripts/axisym_reference.py, n = 256, exact in
+           alpha(t) against the exact axisymmetric reference (scripts/rollerref/axisym.py, n = 256, exact in
            time), as max_t |q - q_ref| / max_t |q_ref|. Also split into a time part (the same DMF scheme on the
            spectral radial semi-discretization, n = 64, against the exact one) and a space part (the 2D run
            against that semi-discrete DMF at the same dt and Coriolis velocity).
@@ -161,8 +161,8 @@ def area_preserving(h, r_inner=0.25, r_outer=0.5):
 # ---------------------------------------------------------------- references
 @functools.lru_cache(maxsize=None)
 def _exact_module():
-    import axisym_reference
-    return axisym_reference
+    from rollerref import axisym
+    return axisym
 
 
 def free_exact(times, n=256):

@@ -70,6 +70,12 @@ typedef struct {
   PetscInt  iterations, fallback;
 } RollerStepFriction;
 
+/* The axle's columns of a step (docs/model.md section 8): the hub's lab-vertical displacement, its lab angular velocity,
+   the drive's torque on it, the sheet's speed. Without -axle: 0, theta'(t), the shaft's torque, -sheet_speed. */
+typedef struct {
+  PetscReal y, hub_rate, drive_torque, sheet_speed;
+} RollerStepAxle;
+
 /* What the diagnostics of one step give (docs/model.md section 6, CSV columns and extras). */
 typedef struct {
   PetscReal R, alpha, energy;
@@ -83,6 +89,7 @@ typedef struct {
   PetscInt           contact_flips, contact_reversals; /* Gamma_C nodes whose state (on the obstacle or not) changed from
                                                  t_{k-1} to t_k; of these, those back in their state of t_{k-2} */
   RollerStepFriction friction;
+  RollerStepAxle     axle;
 } RollerStepInfo;
 
 /* The context, split by lifetime and owner (docs/architecture.md). Each part is filled by the component
@@ -124,19 +131,45 @@ typedef struct {
   PetscReal    band[2], loss_factor, fit_error;
 } RollerMaterial;
 
-/* The driving rotation theta(t) = omega (t - t0) + a cos(b (t - t0)) from t0 = -theta_start on, theta = a before */
+/* The driving rotation theta(t) = omega (t - t0) + a cos(b (t - t0)) from t0 = -theta_start on, theta = a before; with
+   -drive_ramp T the speed rises smoothly from 0 to omega over [t0, t0 + T], and -drive_ripple adds the motor's ripple
+   ripple s(t) sin(2 pi f (t - t0)) (s the ramp's speed fraction) at -drive_ripple_frequency f (model/forcing.c). With -axle
+   this is the motor's angle; without, the hub's. */
 typedef struct {
   PetscReal omega, a, b, start;
+  PetscReal ramp, ripple, ripple_frequency;
 } RollerRotation;
+
+/* -friction_table (friction/law.c): n points (v_i, mu_i) of the friction coefficient mu(|v|), 0 <= v_1 < ... < v_n,
+   and the slopes s_i of their monotone cubic interpolant; n = 0 without it */
+typedef struct {
+  PetscInt   n;
+  PetscReal *v, *mu, *s;
+} RollerFrictionTable;
 
 /* The obstacle (the sheet): height g(t) = min(speed t, depth) - r_outer, lab-frame position X(t) = sheet_speed t
    along e1, and Coulomb friction mu(v) = mu + (mu_s - mu) exp(-|v|/v_c) (friction = 0: frictionless; decay = 0:
-   constant mu) */
+   constant mu), or the interpolant of a table (then friction = mu_n, its value beyond the last speed, and
+   friction_static = mu_1, its value at rest; decay 0) */
 typedef struct {
-  PetscBool on;
-  PetscReal speed, depth, sheet_speed;
-  PetscReal friction, friction_static, friction_decay;
+  PetscBool           on;
+  PetscReal           speed, depth, sheet_speed;
+  PetscReal           friction, friction_static, friction_decay;
+  RollerFrictionTable table;
+  PetscReal           sheet_mass, sheet_resistance; /* -sheet_mass: the sheet moves by its own forces (contact/contact_sheet.c); 0: kinematic */
 } RollerObstacle;
+
+/* The axle and drive (-axle, model/axle.c, docs/model.md section 8): the hub a rigid body that translates (mass,
+   vertical spring preloaded to the nip force per unit width, ramped in over nip_ramp, and a stiff horizontal spring: the
+   bracket) and turns (inertia), driven through a torsional spring and damper by the motor, whose angle is the
+   frame's theta(t). Off: the hub is clamped to theta(t), as before. hub: the rigid hub's coupling with the body and its
+   state (model/axle.h), NULL when off. */
+typedef struct {
+  PetscBool            on;
+  PetscReal            mass, inertia, stiffness, stiffness_x, nip_force, nip_ramp;
+  PetscReal            drive_stiffness, drive_damping;
+  struct _n_RollerHub *hub;
+} RollerAxle;
 
 /* The discretization choices (model/fe.c) */
 typedef struct {
@@ -172,24 +205,27 @@ typedef struct {
    has one or a fixed few (integrate/scheme*.c); the contact layer keeps its condensation S = E^T A^{-1} E per
    operator, by id. */
 typedef struct {
-  Mat       A, A0, G; /* A0 = c_M M + c_K K + c_D K_d and G: only with the centred Coriolis term (A = A0 - c_G G, re-made when theta' varies) */
-  KSP       ksp;
-  PetscReal c_M, c_K, c_D;
-  PetscInt  id;
+  Mat                     A, A0, G; /* A0 = c_M M + c_K K + c_D K_d and G: only with the centred Coriolis term (A = A0 - c_G G, re-made when theta' varies) */
+  KSP                     ksp;
+  PetscReal               c_M, c_K, c_D;
+  PetscInt                id;
+  struct _n_RollerBorder *border; /* -axle: the hub's unknowns eliminated, A_eff = A - C Dz C^T (model/axle.h); NULL otherwise */
 } RollerStepOperator;
 
 /* Time stepping (integrate/timestep.c) */
 typedef struct {
-  PetscReal     dt, max_time;
-  PetscBool     dt_set;      /* -ts_dt given (or from the checkpoint); otherwise chosen from -ts_phase_error (model/accuracy.c) */
-  PetscBool     dt_restart;  /* dt from the -restart checkpoint (integrate/checkpoint.c) */
-  PetscReal     phase_error; /* -ts_phase_error: the accuracy target that sets the default dt and h */
-  PetscBool     view;        /* -ts_view: print the chosen discretization and why */
-  PetscInt      max_steps;
-  PetscBool     quiet, monitor; /* -quiet: no progress line; -ts_monitor: a line every step */
-  char          scheme[64];     /* -ts_scheme (empty: the one that meets -ts_phase_error with the fewest solves) */
-  RollerScheme *schemes;        /* every registered scheme, set from options; the run's is chosen at set-up */
-  PetscInt      nschemes;
+  PetscReal      dt, max_time;
+  PetscBool      dt_set;                     /* -ts_dt given (or from the checkpoint); otherwise chosen from -ts_phase_error (model/accuracy.c) */
+  PetscBool      dt_restart, scheme_restart; /* dt, the scheme from the -restart checkpoint (integrate/checkpoint.c) */
+  PetscReal      phase_error;                /* -ts_phase_error: the accuracy target that sets the default dt and h */
+  PetscBool      view;                       /* -ts_view: print the chosen discretization and why */
+  PetscInt       max_steps;
+  PetscReal      max_wall;       /* -ts_max_wall: stop with a checkpoint before this many seconds of the process (0: none) */
+  PetscLogDouble wall_start;     /* the process's start (integrate/timestep.c) */
+  PetscBool      quiet, monitor; /* -quiet: no progress line; -ts_monitor: a line every step */
+  char           scheme[64];     /* -ts_scheme (empty: the one that meets -ts_phase_error with the fewest solves) */
+  RollerScheme  *schemes;        /* every registered scheme, set from options; the run's is chosen at set-up */
+  PetscInt       nschemes;
 } RollerTimeParams;
 
 /* The lowest radial breathing and torsional angular frequencies of the annulus (model/accuracy.c) and the radii
@@ -236,10 +272,25 @@ typedef struct {
   PetscReal  skew_defect[2]; /* the damped lab frame's ||A + A^T||/||A|| of A_L and B_L (-1: not built) */
 } RollerEigen;
 
-/* Checkpoint and restart (integrate/checkpoint.c) */
+/* A component's own state in the checkpoint (RollerCheckpointAddVec, RollerCheckpointAddReals in
+   integrate/checkpoint.c): a vector whose points have positions (restarted on any number of ranks by matching
+   them), or n reals that every rank holds */
+#define ROLLER_CHECKPOINT_ITEMS (3 + 4 * ROLLER_MAX_BRANCHES + 16) /* the scheme's kept vectors (Maxwell: 4 a branch) and the components' state */
 typedef struct {
-  char     file[PETSC_MAX_PATH_LEN], restart[PETSC_MAX_PATH_LEN];
-  PetscInt every;
+  char       name[64];
+  Vec       *v;              /* the address of a vector (followed when a step swaps it), or NULL: the reals below */
+  Vec        where;          /* the positions of v's points, (x, y) per point, v having the same number of points */
+  char       where_name[64]; /* its dataset ("nodes": the displacement's free nodes, ops.coordinates) */
+  PetscInt   n;
+  PetscReal *values;
+} RollerCheckpointItem;
+
+/* Checkpoint and restart (integrate/checkpoint*.c) */
+typedef struct {
+  char                 file[PETSC_MAX_PATH_LEN], restart[PETSC_MAX_PATH_LEN];
+  PetscInt             every;
+  PetscInt             nitems;
+  RollerCheckpointItem items[ROLLER_CHECKPOINT_ITEMS];
 } RollerCheckpoint;
 
 /* Initial state and verification (integrate/initial.c, verify/mms.c) */
@@ -260,6 +311,7 @@ struct _n_Roller {
   RollerMaterial       material;
   RollerRotation       rotation;
   RollerObstacle       obstacle;
+  RollerAxle           axle;
   RollerDiscretization disc;
   RollerOperators      ops;
   RollerTimeParams     ts;

@@ -8,6 +8,7 @@ packages=(
   petsc-dev slepc-dev libopenmpi-dev openmpi-bin libhdf5-openmpi-dev
   libmetis-dev gmsh libgmsh-dev libyaml-dev clang-format
   python3 python3-numpy python3-scipy python3-h5py python3-matplotlib
+  chromium ffmpeg   # the squeak report's page opened headless (tests/report_page.py), its MP4 (rollerreport.animation)
 )
 
 missing=()

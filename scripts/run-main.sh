@@ -16,8 +16,8 @@ nproc_run=${ROLLER_NP:-1}
 mpiexec -n "$nproc_run" "$root/build/roller" -options_file "$root/jobs/rolling.yaml" \
   -ts_max_time 20 -ts_view \
   -monitor_csv "$out/roller.csv" -output "$out/roller.h5" -output_every 200 "$@"
-/usr/bin/python3 "$root/scripts/plot_fields.py" "$out/roller.h5" --times 5 10 15 20 --out "$out/sigma.png"
-/usr/bin/python3 "$root/scripts/plot_series.py" --quantity R --out "$out/R.png" --label rolling "$out/roller.csv"
-/usr/bin/python3 "$root/scripts/plot_series.py" --quantity alpha --out "$out/alpha.png" --label rolling "$out/roller.csv"
+PYTHONPATH="$root/scripts" /usr/bin/python3 -m rollerplots.fields "$out/roller.h5" --times 5 10 15 20 --out "$out/sigma.png"
+PYTHONPATH="$root/scripts" /usr/bin/python3 -m rollerplots.series --quantity R --out "$out/R.png" --label rolling "$out/roller.csv"
+PYTHONPATH="$root/scripts" /usr/bin/python3 -m rollerplots.series --quantity alpha --out "$out/alpha.png" --label rolling "$out/roller.csv"
 echo "run-main: results in $out"
 ls -la "$out"

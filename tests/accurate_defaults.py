@@ -1,5 +1,5 @@
 """Accurate by default (docs/model.md section 6.2): `roller` with physical options only (no -degree, -mesh_h,
--ts_dt, -coriolis_velocity) is within 1 % of the exact axisymmetric solution (scripts/axisym_reference.py,
+-ts_dt, -coriolis_velocity) is within 1 % of the exact axisymmetric solution (scripts/rollerref/axisym.py,
 ~1e-9) in the max error of R(t) and alpha(t), relative to the reference's max, for the paper's roller
 (Table 1) and for softer, stiffer and longer runs: dt and h follow the scene's modes and end time.
 Usage: accurate_defaults.py [quick|long]. quick: E = 0.1, 0.05, 0.2 to t = 20; long: E = 0.1 to t = 60.
@@ -12,12 +12,12 @@ from rollertest import SOURCE, Checker, read_csv, rel_max_error, run
 
 MODE = sys.argv[1] if len(sys.argv) > 1 else "quick"
 CASES = [(0.1, 20.0), (0.05, 20.0), (0.2, 20.0)] if MODE == "quick" else [(0.1, 60.0)]
-REFERENCE = os.path.join(SOURCE, "scripts", "axisym_reference.py")
+REFERENCE = ["-m", "rollerref.axisym"]
 
 c = Checker(f"accurate_defaults ({MODE})")
 for young, t_end in CASES:
     name = f"E{young}_T{t_end:g}"
-    subprocess.run([sys.executable, REFERENCE, "--scheme", "exact", "--young", str(young), "--t-end", str(t_end),
+    subprocess.run([sys.executable, *REFERENCE, "--scheme", "exact", "--young", str(young), "--t-end", str(t_end),
                     "--dt-out", "0.001", "--out", f"reference_{name}.csv"], check=True)
     ref = read_csv(f"reference_{name}.csv")
     run(["-young", young, "-ts_max_time", t_end, "-quiet", "-monitor_csv", f"{name}.csv"])

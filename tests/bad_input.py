@@ -31,6 +31,7 @@ cases = [
     (["-theta_b", "-1"], "-theta_b", "-1"),
     (["-checkpoint_every", "-1"], "-checkpoint_every", "-1"),
     (["-output", "bad.h5", "-output_every", "0"], "-output_every", "0"),
+    (["-monitor_surface_csv", "bad_s.csv", "-monitor_surface_orders", "0"], "-monitor_surface_orders", "0"),
     (["-omega", "0.9"], "-omega", "0.9"),
     (["-stability_margin", "2"], "-stability_margin", "2"),
     (["-restart", "no-such-checkpoint.h5"], "no-such-checkpoint.h5", "-restart"),
@@ -89,6 +90,17 @@ cases = [
     (["-rubber", "maxwell", "-maxwell_tau", "1", "-maxwell_weight", "0.5", "-rubber_loss_factor", "0.1"], "-rubber maxwell", "not both"),
     (["-rubber", "maxwell", "-maxwell_tau", "1", "-maxwell_weight", "0.5", "-viscosity", "0.01"], "-viscosity", "-rubber maxwell"),
     (["-rubber", "maxwell", "-maxwell_tau", "1", "-maxwell_weight", "0.5", "-ts_scheme", "composed"], "-ts_scheme composed", "-rubber maxwell"),
+    # issue 36: -friction_table, each error naming the option and the offending entry
+    (["-obstacle", "-friction_table", "0:1"], "-friction_table", "1 point"),
+    (["-obstacle", "-friction_table", "0:1,0.1:x"], "-friction_table", "entry 2 '0.1:x'"),
+    (["-obstacle", "-friction_table", "0:1,0.2:0.8,0.1:0.7"], "-friction_table", "entry 3 '0.1:0.7'"),
+    (["-obstacle", "-friction_table", "0:1,0.1:0"], "-friction_table", "must be > 0"),
+    (["-obstacle", "-friction_table", "-0.1:1,0.1:0.5"], "-friction_table", "entry 1 '-0.1:1'"),
+    (["-obstacle", "-friction_table", "0:1,0.1:0.5,"], "-friction_table", "entry 3 ''"),
+    (["-obstacle", "-friction", "0.5", "-friction_table", "0:1,0.1:0.5"], "-friction_table", "without -friction"),
+    (["-obstacle", "-friction_decay", "0.1", "-friction_table", "0:1,0.1:0.5"], "-friction_table", "without -friction_decay"),
+    (["-friction_table", "0:1,0.1:0.5"], "-friction_table", "-obstacle"),
+    (["-obstacle", "-sweep", "bad_sweep.csv", "-sweep_friction", "0.3,0.8", "-friction_table", "0:1,0.1:0.5"], "-sweep_friction", "-friction_table"),
 ]
 for args, name, value in cases:
     code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet"] + args if args[0] != "-mesh_h" else args + ["-ts_max_steps", "2"], check=False)

@@ -7,7 +7,7 @@ midpoint's force is shared by the two ends of its edge), 0 elsewhere. So at ever
   to 1e-10 (relative to the largest force of the run);
 - it is >= 0, and 0 at every vertex off Gamma_C;
 - P1: it is > 0 exactly at the contact_nodes nodes of the CSV;
-- the XDMF index lists it, and scripts/plot_fields.py --mode contact draws it.
+- the XDMF index lists it, and scripts/rollerplots/fields.py --mode contact draws it.
 Without -obstacle, -help still lists the contact options with their defaults (nothing is built).
 
 Discretization: these are identities of the output, true for any discretization, so both scenes run on the
@@ -61,10 +61,10 @@ for name, extra in (("P1 compression", ["-omega", 0, "-degree", 1]), ("P2 rollin
     xmf = open(f"{tag}.xmf").read()
     c.check('Name="contact_pressure"' in xmf, f"{name}: the XDMF index lists contact_pressure")
 
-proc = subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "plot_fields.py"), "p1.h5", "--mode", "contact",
+proc = subprocess.run([sys.executable, "-m", "rollerplots.fields", "p1.h5", "--mode", "contact",
                        "--times", "0.25", "1", "--out", "pressure.png"], capture_output=True, text=True)
 c.check(proc.returncode == 0 and os.path.getsize("pressure.png") > 10000,
-        f"plot_fields.py --mode contact draws it (exit {proc.returncode}: {(proc.stdout + proc.stderr).strip()[:120]})")
+        f"rollerplots.fields --mode contact draws it (exit {proc.returncode}: {(proc.stdout + proc.stderr).strip()[:120]})")
 
 # (bytes: PETSc 3.18 prints an uninitialized buffer as the default of -dm_plex_boundary_label)
 out = subprocess.run([EXE, "-mesh_h", "0.1", "-help"], capture_output=True, check=True).stdout.decode(errors="replace")

@@ -18,7 +18,7 @@ import numpy as np
 from rollertest import SOURCE, Checker, read_csv, run
 
 sys.path.insert(0, os.path.join(SOURCE, "scripts"))
-import spectrum as sp  # noqa: E402
+from rollerreport import spectrum as sp  # noqa: E402
 
 T_START, T_END = 7.0, 12.0
 c = Checker("contact_quiet")

@@ -1,5 +1,5 @@
 """An exact reference for the real problem: the rotating annulus without obstacle, started at rest, stays
-axisymmetric, and reduces to a 1D radial problem in (u, v)(r, t) that scripts/axisym_reference.py
+axisymmetric, and reduces to a 1D radial problem in (u, v)(r, t) that scripts/rollerref/axisym.py
 solves to ~1e-9 (spectral in r, exact in t). The 2D R(t) and alpha(t) must approach it as h and dt
 shrink together (P1, dt = h/4, 0 <= t <= 5): the max error falls by at least 1.5x per halving, and the
 finest run is within 2 % (R) and 5 % (alpha) of the reference's amplitude.
@@ -15,7 +15,7 @@ from rollertest import SOURCE, Checker, read_csv, rel_max_error, run
 
 c = Checker("dmf_axisym")
 T = 5.0
-subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "axisym_reference.py"), "--scheme", "exact",
+subprocess.run([sys.executable, "-m", "rollerref.axisym", "--scheme", "exact",
                 "--t-end", str(T), "--dt-out", "0.003125", "--out", "reference.csv"], check=True)
 ref = read_csv("reference.csv")
 errors = []

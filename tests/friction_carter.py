@@ -60,7 +60,7 @@ dynamic: omega = pi/10 (surface speed 0.157 = 0.9 of the Rayleigh speed 0.175, j
        scene (eta = 1, depth 0.002), h_c = 0.003, dt = 0.0064 (the same roll per step), to t = 12, windows of 3,
        creeps -0.008 ... 0.025 and xi = 0.0128 at dt = 0.0032; reported against Carter, not asserted
        (docs/friction.md 5.2; about 7 minutes).
-Each mode writes carter_<mode>.json (the runs' numbers and the final traction profiles) for scripts/plot_carter.py."""
+Each mode writes carter_<mode>.json (the runs' numbers and the final traction profiles) for scripts/rollerplots/carter.py."""
 import json
 import math
 import sys

@@ -1,6 +1,6 @@
 """The curved (isoparametric P2) boundary, src/mesh/geometry.c. The rotating annulus without obstacle has an
 exact axisymmetric reference; run with the same DMF scheme and dt on its spectral radial
-semi-discretization (scripts/axisym_reference.py --scheme dmf, exact in space), it isolates the space
+semi-discretization (scripts/rollerref/axisym.py --scheme dmf, exact in space), it isolates the space
 error of the 2D run. With straight edges the P2 space error of R is second order (the inscribed polygon
 makes the annulus too small by O(h^2)); with the curved boundary it falls faster (2.4 measured over
 h = 0.05 .. 0.0125, tending to 3) and is 8-17x smaller.
@@ -15,7 +15,7 @@ from rollertest import SOURCE, Checker, read_csv, rel_max_error, run, slope
 
 c = Checker("geometry_curved")
 T, DT = 2.0, 0.01
-subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "axisym_reference.py"), "--scheme", "dmf",
+subprocess.run([sys.executable, "-m", "rollerref.axisym", "--scheme", "dmf",
                 "--coriolis", "backward", "--dt", str(DT), "--t-end", str(T), "--dt-out", str(DT), "--out", "dmf.csv"], check=True)
 ref = read_csv("dmf.csv")
 hs = (0.05, 0.025, 0.0125)

@@ -1,5 +1,5 @@
 """Nearly incompressible rubber, nu = 0.49, 0.499, 0.4999, against the exact axisymmetric reference
-(scripts/axisym_reference.py) over 0 <= t <= 5, h = 0.025, dt = 0.003125, centred Coriolis velocity.
+(scripts/rollerref/axisym.py) over 0 <= t <= 5, h = 0.025, dt = 0.003125, centred Coriolis velocity.
 P1 locks: its error in the shear-driven tangential motion alpha grows as nu -> 1/2. P2 stays accurate
 (docs/stability.md). R is compared through its time mean (the centrifugal equilibrium it oscillates
 about), because its fast radial mode (period 0.067 at nu = 0.4999) is a time-resolution question."""
@@ -13,7 +13,7 @@ c = Checker("hard_incompressible")
 T, dt = 5.0, 0.003125
 err = {}
 for nu in (0.49, 0.499, 0.4999):
-    subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "axisym_reference.py"), "--scheme", "exact", "--poisson", str(nu),
+    subprocess.run([sys.executable, "-m", "rollerref.axisym", "--scheme", "exact", "--poisson", str(nu),
                     "--t-end", str(T), "--dt-out", str(dt), "--out", f"ref{nu}.csv"], check=True, capture_output=True)
     ref = read_csv(f"ref{nu}.csv")
     for degree in (1, 2):

@@ -1,4 +1,4 @@
-# The modes of the free rotating annulus (docs/squeal.md section 2): scripts/annulus_modes_reference.py, the 1D reference
+# The modes of the free rotating annulus (docs/squeal.md section 2): scripts/rollerref/annulus_modes.py, the 1D reference
 # per signed circumferential order m (Bessel roots at n = 0, frame shift, Bryan's splitting); no roller run.
 roller_test(modes_reference_unit modes_reference_unit.py LABELS quick)
 # roller -modes against it: n = 0..4, both frames, omega = pi/10 (1e-3), Bryan's splitting, the torsional period 8.69

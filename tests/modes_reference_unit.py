@@ -1,4 +1,4 @@
-"""scripts/annulus_modes_reference.py alone (no roller run): the 1D per-order reference for the modes of the
+"""scripts/rollerref/annulus_modes.py alone (no roller run): the 1D per-order reference for the modes of the
 rotating annulus (docs/squeal.md section 2) that the 2D -modes output is to be compared with.
 
 1. n = 0, Omega = 0: the lowest two torsional and the lowest breathing frequencies against the roots of their
@@ -23,7 +23,7 @@ import numpy as np
 from rollertest import SOURCE, Checker
 
 sys.path.insert(0, os.path.join(SOURCE, "scripts"))
-import annulus_modes_reference as amr  # noqa: E402
+from rollerref import annulus_modes as amr  # noqa: E402
 
 c = Checker("modes_reference_unit")
 p = amr.params()
@@ -77,7 +77,7 @@ for n in (2, 3, 4):
 
 # 5. the CLI
 def cli(*args):
-    out = subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "annulus_modes_reference.py"), *args],
+    out = subprocess.run([sys.executable, "-m", "rollerref.annulus_modes", *args],
                          capture_output=True, text=True, check=True).stdout
     return list(csv.DictReader(io.StringIO(out))), out.splitlines()[0]
 rot, head = cli("--frame", "rotating", "--orders", "0-4", "--count", "2")

@@ -1,5 +1,5 @@
 """Gyroscopic splitting of the free rotating annulus (docs/squeal.md section 2): roller -modes against the
-independent 1-D reference per circumferential order (scripts/annulus_modes_reference.py).
+independent 1-D reference per circumferential order (scripts/rollerref/annulus_modes.py).
 
 - omega = pi/10, both frames: the lowest eigenfrequency of every signed order m = -4..4 (n = |m| = 0..4, forward
   and backward) of the 2-D P2 eigenproblem equals the 1-D reference's to 1e-3 relative, with the same order and
@@ -18,7 +18,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from rollertest import Checker, SOURCE, run  # noqa: E402
 
 sys.path.insert(0, os.path.join(SOURCE, "scripts"))
-import annulus_modes_reference as ref  # noqa: E402
+from rollerref import annulus_modes as ref  # noqa: E402
 
 
 MESH = ["-mesh_h", "0.02"]

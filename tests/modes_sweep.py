@@ -1,4 +1,4 @@
-"""-sweep (src/app/sweep.c, docs/squeal.md section 6): a 3 x 2 map (omega 0, 0.1, 0.2 times young 0.1, 0.2) of the free
+"""-sweep (src/sweep/sweep.c, docs/squeal.md section 6): a 3 x 2 map (omega 0, 0.1, 0.2 times young 0.1, 0.2) of the free
 annulus on the coarse mesh -mesh_h 0.08, by one `mpiexec -n 2` (two sub-communicators of one rank, the cases
 round-robin) and by one rank. Asserted:
   - the gathered CSV has every case, in order, with its values of the swept options (the last varies fastest);
@@ -8,8 +8,8 @@ round-robin) and by one rank. Asserted:
   - the Campbell diagram's physics: at omega = 0 the two modes of each order n = 1..3 are standing waves of equal
     frequency (within 1e-3, the mesh's asymmetry), at omega > 0 they split into a forward and a backward wave,
     and the splitting grows with omega (Bryan: about 2 gamma_n omega);
-  - -sweep_slice: the two slices 0,2 and 1,2, merged by scripts/merge_sweep.py, are the whole map;
-  - scripts/plot_sweep.py draws the Campbell diagram."""
+  - -sweep_slice: the two slices 0,2 and 1,2, merged by scripts/rollertools/merge_sweep.py, are the whole map;
+  - scripts/rollerplots/sweep.py draws the Campbell diagram."""
 import csv
 import os
 import subprocess
@@ -88,10 +88,10 @@ run(SWEEP + ["-sweep", "part_0.csv", "-sweep_slice", "0,2"])
 run(SWEEP + ["-sweep", "part_1.csv", "-sweep_slice", "1,2"], nproc=2)
 part0 = by_case(rows("part_0.csv"))
 c.check(sorted(part0) == [0, 2, 4], f"-sweep_slice 0,2 takes the even cases: {sorted(part0)}")
-merge = subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "merge_sweep.py"), "part_0.csv", "part_1.csv", "-o", "merged.csv", "--cases", "6"], capture_output=True, text=True)
+merge = subprocess.run([sys.executable, "-m", "rollertools.merge_sweep", "part_0.csv", "part_1.csv", "-o", "merged.csv", "--cases", "6"], capture_output=True, text=True)
 c.check(merge.returncode == 0 and open("merged.csv").read() == open("sweep_np1.csv").read(), f"slices 0,2 and 1,2 merged = the whole map ({merge.stdout.strip() or merge.stderr.strip()[-200:]})")
 
 # the picture
-plot = subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "plot_sweep.py"), "sweep_np2.csv", "--x", "omega", "--where", "young=0.1", "--out", "campbell.png"], capture_output=True, text=True)
-c.check(plot.returncode == 0 and os.path.getsize("campbell.png") > 10000, f"plot_sweep.py draws campbell.png ({(plot.stdout + plot.stderr).strip()[-200:]})")
+plot = subprocess.run([sys.executable, "-m", "rollerplots.sweep", "sweep_np2.csv", "--x", "omega", "--where", "young=0.1", "--out", "campbell.png"], capture_output=True, text=True)
+c.check(plot.returncode == 0 and os.path.getsize("campbell.png") > 10000, f"rollerplots.sweep draws campbell.png ({(plot.stdout + plot.stderr).strip()[-200:]})")
 c.close()

@@ -2,7 +2,7 @@
 
 At omega = pi/10 (Table 1, coarse P2 mesh h = 0.05): `roller -modes` (co-rotating and lab frames), then for the
 n = 0 torsional mode, the n = 1 forward and backward modes, the n = 2 and n = 3 forward modes a transient from
-the steady state plus the mode (`-initial_condition mode`), analysed by scripts/mode_transient.py from the HDF5
+the steady state plus the mode (`-initial_condition mode`), analysed by scripts/rollerref/mode_transient.py from the HDF5
 output:
 
 - the frequency of the order-n projection (matrix pencil) and of a Gamma_C probe (DTFT) match the eigenvalue
@@ -27,7 +27,7 @@ import sys
 sys.path.insert(0, os.path.join(os.environ.get("ROLLER_SOURCE_DIR", os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "scripts"))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from rollertest import Checker, run  # noqa: E402
-import mode_transient as mt  # noqa: E402
+from rollerref import mode_transient as mt  # noqa: E402
 
 OMEGA = math.pi / 10
 MESH = ["-mesh_h", 0.05, "-omega", OMEGA]

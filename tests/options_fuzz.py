@@ -19,6 +19,7 @@ CONTEXT = {  # the options an option needs to be read at all
     "contact": ["-obstacle"],
     "friction": ["-obstacle", "-friction", "0.5", "-friction_static", "0.6", "-friction_decay", "0.1"],
     "modes": ["-modes", "-modes_nev", "2"],
+    "axle": ["-obstacle", "-axle", "-drive_stiffness", "0.1", "-nip_force", "0.001", "-ts_scheme", "trapezoidal"],
 }
 # (option, value): valid, with the reason; the run must then be sane
 VALID = {
@@ -30,6 +31,7 @@ VALID = {
     ("-ts_max_time", "0"): "the initial state only", ("-ts_max_steps", "-1"): "no cap", ("-ts_max_steps", "0"): "the initial state only",
     ("-solver_redundant_max", "0"): "MUMPS for the non-symmetric step matrices on several ranks (one rank: unused)",
     ("-ic_amplitude", "0"): "zero amplitude", ("-checkpoint_every", "0"): "only on a signal",
+    ("-ts_max_wall", "0"): "no limit", ("-ts_max_wall", "1e300"): "never reached",
     ("-sheet_speed", "-1"): "the sheet backwards", ("-sheet_speed", "0"): "a still sheet",
     ("-obstacle_depth", "0"): "touching only", ("-friction", "0"): "frictionless",
     ("-friction_decay", "0"): "no weakening (needs -friction_static = -friction: refused here)",
@@ -46,6 +48,14 @@ VALID = {
     ("-viscosity", "1e300"): None, ("-damping", "1e300"): None, ("-poisson", "0"): "no lateral contraction",
     ("-theta_b", "1e300"): "no perturbation (-theta_a 0)", ("-friction_static", "1e300"): None,
     ("-friction_decay", "1e300"): "the weakening never reached", ("-ic_amplitude", "1e300"): "unused at rest (the default initial condition)",
+    ("-drive_ramp", "0"): "no ramp", ("-drive_ramp", "1e300"): "the motor never gets going",
+    ("-drive_ripple", "0"): "no ripple", ("-drive_ripple_frequency", "0"): "no ripple",
+    ("-drive_ripple_frequency", "1e300"): "unused without -drive_ripple",
+    ("-axle_mass", "0"): "the rubber's mass", ("-axle_mass", "1e300"): "a hub that does not move",
+    ("-axle_inertia", "0"): "the rubber's inertia", ("-axle_inertia", "1e300"): "a hub that does not turn",
+    ("-axle_stiffness", "0"): "the preload only", ("-axle_stiffness", "1e300"): "a rigid spring from the end of -nip_ramp",
+    ("-nip_force", "0"): "no preload", ("-nip_ramp", "0"): "the preload at once", ("-nip_ramp", "1e300"): "the preload never rises",
+    ("-drive_stiffness", "1e300"): "a rigid drive", ("-sheet_mass", "0"): "the kinematic sheet", ("-sheet_resistance", "0"): "no resistance", ("-drive_damping", "0"): "an undamped drive", ("-drive_damping", "1e300"): None,
 }
 VALUES_REAL = ["nan", "inf", "-1", "0", "1e300", "word"]
 VALUES_INT = ["-1", "0", "1e300", "word"]
@@ -86,6 +96,8 @@ def context(name, section):
         return CONTEXT["contact"]
     if name.startswith("-modes"):
         return CONTEXT["modes"]
+    if "axle" in low:
+        return CONTEXT["axle"]
     return []
 
 

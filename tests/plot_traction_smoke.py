@@ -1,4 +1,4 @@
-"""scripts/plot_traction.py on a small friction run (docs/friction.md section 5.1): the roller pressed and its
+"""scripts/rollerplots/traction.py on a small friction run (docs/friction.md section 5.1): the roller pressed and its
 shaft turned (P1, graded at the contact, a few seconds of CPU), -output every 20 steps. The script's printed
 P and Q/(mu P) at two stored steps are the CSV's contact_force and friction_force/(mu contact_force) at
 those steps (to the printed digits: the fields integrate to them exactly, docs/contact.md), every theory option
@@ -17,12 +17,12 @@ run(["-mesh_h", 0.05, "-mesh_h_contact", 0.008, "-mesh_contact_layer", 0.03, "-d
      "-viscosity", 0.01, "-obstacle_speed", 0.005, "-obstacle_depth", 0.002, "-friction", MU, "-theta_a", 0.004, "-theta_b", 0.5,
      "-theta_start", 2, "-ts_dt", 0.05, "-ts_max_time", 5, "-output", "smoke.h5", "-output_every", 20, "-monitor_csv", "smoke.csv", "-quiet"])
 d = read_csv("smoke.csv")
-script = os.path.join(SOURCE, "scripts", "plot_traction.py")
+script = ["-m", "rollerplots.traction"]
 c = Checker("plot_traction_smoke")
 for extra in (["--theory", "cattaneo"], ["--theory", "cattaneo", "--qstar", "0.9", "--reversal", "4", "--normalize"], ["--theory", "carter", "--leading", "-1"], []):
     if os.path.exists("smoke.png"):
         os.remove("smoke.png")
-    proc = subprocess.run([sys.executable, script, "smoke.h5", "--time", "3", "--time", "5", "--out", "smoke.png"] + extra, capture_output=True, text=True)
+    proc = subprocess.run([sys.executable, *script, "smoke.h5", "--time", "3", "--time", "5", "--out", "smoke.png"] + extra, capture_output=True, text=True)
     lines = [l for l in proc.stdout.splitlines() if l.startswith("t = ")]
     ok = proc.returncode == 0 and len(lines) == 2 and os.path.getsize("smoke.png") > 10000 if os.path.exists("smoke.png") else False
     worst = 1.0

@@ -70,7 +70,11 @@ c.check(proc.returncode == 0 and "-restart term.h5" in out and os.path.exists("t
 run(base + ["-restart", "term.h5", "-monitor_csv", "term_cut.csv"])
 c.check(open("term_full.csv").read() == open("term_cut.csv").read(), "SIGTERM + restart: CSV identical to the uninterrupted run")
 
-# SIGKILL while checkpointing every step: the latest checkpoint is always complete
+# SIGKILL while checkpointing every step: the latest checkpoint is always complete (an earlier run's file removed first:
+# the wait below must see this run's)
+for stale in ("kill.h5", "kill.h5.tmp"):
+    if os.path.exists(stale):
+        os.remove(stale)
 proc = subprocess.Popen([EXE] + base + ["-checkpoint", "kill.h5", "-checkpoint_every", "1"], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
 wait_for("kill.h5")
 time.sleep(0.5)

@@ -10,6 +10,13 @@ import numpy as np
 EXE = os.environ.get("ROLLER_EXE", "build/roller")
 MPIEXEC = os.environ.get("ROLLER_MPIEXEC", "mpiexec")
 SOURCE = os.environ.get("ROLLER_SOURCE_DIR", os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+# the packages of scripts/ (rollerref, rollerreport, rollerplots, rollertools): importable by the tests and by the
+# `python3 -m PACKAGE.MODULE` commands they run
+SCRIPTS = os.path.join(SOURCE, "scripts")
+if SCRIPTS not in sys.path:
+    sys.path.insert(0, SCRIPTS)
+if SCRIPTS not in os.environ.get("PYTHONPATH", "").split(os.pathsep):
+    os.environ["PYTHONPATH"] = os.pathsep.join(p for p in (SCRIPTS, os.environ.get("PYTHONPATH")) if p)
 
 
 def run(args, nproc=1, check=True):

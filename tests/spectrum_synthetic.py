@@ -1,4 +1,4 @@
-"""scripts/spectrum.py and scripts/plot_spectrum.py on synthetic signals (no roller run; docs/contact.md,
+"""scripts/rollerreport/spectrum.py and scripts/rollerplots/spectrum.py on synthetic signals (no roller run; docs/contact.md,
 "Cogging: the force spectrum").
 
 1. A pure sinusoid c + a cos(2 pi f t + phi) off the FFT's bins: relative_amplitude returns a/c to 1e-6 and
@@ -21,7 +21,7 @@ import numpy as np
 from rollertest import SOURCE, Checker
 
 sys.path.insert(0, os.path.join(SOURCE, "scripts"))
-import spectrum as sp  # noqa: E402
+from rollerreport import spectrum as sp  # noqa: E402
 
 c = Checker("spectrum_synthetic")
 rng = np.random.default_rng(13)
@@ -84,7 +84,7 @@ with open("synthetic.csv", "w") as f:
     for k, tk in enumerate(tt):
         f.write(f"{k},{tk!r},0,{-1e-3 + 1e-6 * math.sin(tk)!r},0,{25 + (k % 7 == 0)},{force[k]!r},0,1,0,"
                 f"{math.pi / 10 * tk!r}\n")
-cli = [sys.executable, os.path.join(SOURCE, "scripts", "plot_spectrum.py"), "synthetic.csv"]
+cli = [sys.executable, "-m", "rollerplots.spectrum", "synthetic.csv"]
 p = subprocess.run(cli + ["--tmin", "10", "--tmax", "20", "--h", "0.0125", "--table", "--json", "s.json"],
                    capture_output=True, text=True)
 print(p.stdout + p.stderr)
@@ -97,7 +97,7 @@ if p.returncode == 0:
             f"CLI strongest line {cf['strongest_f']:.5g}, {cf['strongest_rel']:.6g} (true {amp / mean:.6g})")
     c.check(s["contact_nodes"]["changes"] > 0, f"CLI contact_nodes {s['contact_nodes']}")
 else:
-    c.check(False, f"plot_spectrum.py exited {p.returncode}")
+    c.check(False, f"rollerplots.spectrum exited {p.returncode}")
 p = subprocess.run(cli + ["--columns", "friction_force"], capture_output=True, text=True)
 c.check(p.returncode != 0 and "friction_force" in p.stderr and "contact_force" in p.stderr,
         f"unknown column: exit {p.returncode}, {p.stderr.strip()}")

@@ -1,10 +1,10 @@
-"""scripts/squeal_fit.py on a synthetic monitor CSV (no roller run; docs/squeal.md 4.4.3): the column path that fits a
+"""scripts/rollerreport/squeal_fit.py on a synthetic monitor CSV (no roller run; docs/squeal.md 4.4.3): the column path that fits a
 mode of any order in the contact force.
 
 1. Two CSVs written every step (dt = 0.0025, t <= 60), as -monitor_csv writes them: the unseeded one carries the
    steady force, the start's own excitation of the same mode (a line at the same frequency, larger than the seed and
    decaying), a line at 6.1, the mesh-passing line at 88.6 rad / time and noise; the seeded one adds
-   e^{g t} cos(w t) at the CEA's w = 6.857, g = 0.05. squeal_fit.py SEEDED.csv --base UNSEEDED.csv --cea F.csv
+   e^{g t} cos(w t) at the CEA's w = 6.857, g = 0.05. rollerreport.squeal_fit SEEDED.csv --base UNSEEDED.csv --cea F.csv
    --order 10 --wave forward fits the difference: growth within 5 % (pencil and envelope), frequency within 0.5 %
    (the seeded run alone mixes the two lines of the same frequency: its fit is not the seed's).
 2. A column the CSV does not have is an error that names it."""
@@ -16,7 +16,7 @@ import numpy as np
 
 from rollertest import SOURCE, Checker
 
-FIT = os.path.join(SOURCE, "scripts", "squeal_fit.py")
+FIT = ["-m", "rollerreport.squeal_fit"]
 c = Checker("squeal_fit_synthetic")
 rng = np.random.default_rng(5)
 g, w, dt = 0.05, 6.857, 0.0025
@@ -41,7 +41,7 @@ with open("cea.csv", "w") as f:
 
 
 def fit(*args):
-    r = subprocess.run([sys.executable, FIT, "seeded.csv", "--cea", "cea.csv", "--order", "10", "--wave", "forward", "--dt", str(dt)] + list(args), capture_output=True, text=True)
+    r = subprocess.run([sys.executable, *FIT, "seeded.csv", "--cea", "cea.csv", "--order", "10", "--wave", "forward", "--dt", str(dt)] + list(args), capture_output=True, text=True)
     line = [ln for ln in r.stdout.splitlines() if ln.startswith("transient")]
     if r.returncode or not line:
         return r.returncode, r.stdout + r.stderr, None

@@ -13,7 +13,7 @@ section 3) and the rigid stick constraint.
   leading edge's P2 vertex/edge alternation, docs/squeal.md 4.4.4).
 - at each creep the seed's own response on the coarse mesh (h_c = 0.0112), the transient seeded on the CEA's steady
   state and mode (1e-4, dt = 0.01) minus the same run unseeded (the start's whirl, common to both, cancels:
-  scripts/squeal_fit.py --base), grows at the converged CEA's rate (the finest mesh's) within 20 % and at its
+  rollerreport.squeal_fit --base), grows at the converged CEA's rate (the finest mesh's) within 20 % and at its
   frequency within 1 % (pencil and envelope, two windows each; at 0.12, where the rate is smallest, over t = 40-140
   of a run to t = 150). The converged CEA, not the same mesh's: the transient turns the mesh through the patch where
   the CEA differences the slip (first order in h_c), so the two agree in their limits; mesh by mesh they differ by
@@ -36,7 +36,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from rollertest import SOURCE, Checker, read_csv, run  # noqa: E402
 
 sys.path.insert(0, os.path.join(SOURCE, "scripts"))
-from squeal_fit import fit, seed_response  # noqa: E402
+from rollerreport.squeal_fit import fit, seed_response  # noqa: E402
 
 SCENE = ["-options_file", os.path.join(SOURCE, "jobs", "feed.yaml"), "-viscosity", "0.0115", "-damping", "0", "-quiet"]
 MESHES = [0.0112, 0.0056, 0.0028]

@@ -6,7 +6,7 @@ mu = 0.3: the transient starts on the CEA's steady sliding state plus its order-
 the first step, and runs to t = 60:
 - it stays in the CEA's regime: the mean normal force equals the CEA's steady one (2 %), friction / normal = mu (1 %),
   fewer than one stick node on average, contact at every step;
-- the order-1 whirl (the lab-frame displacement of the centre of Gamma_C, scripts/squeal_fit.py): frequency within
+- the order-1 whirl (the lab-frame displacement of the centre of Gamma_C, scripts/rollerreport/squeal_fit.py): frequency within
   2 %, growth rate by the matrix pencil over the whole run within 5 % (measured -1.7 %); the log-amplitude line
   within 10 % (measured -5.4 %). The estimates scatter (-12 % to +5.5 % over sub-windows): the transient's contact
   chatters (the contact force fluctuates by 5-30 % as nodes at the patch's edges open and close), which the CEA's
@@ -26,7 +26,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from rollertest import Checker, SOURCE, read_csv, run  # noqa: E402
 
 sys.path.insert(0, os.path.join(SOURCE, "scripts"))
-import squeal_fit as sf  # noqa: E402
+from rollerreport import squeal_fit as sf  # noqa: E402
 
 MESH = ["-mesh_h", "0.05", "-mesh_h_contact", "0.0112", "-mesh_contact_layer", "0.0224"]
 DT = 0.01

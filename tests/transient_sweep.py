@@ -1,4 +1,4 @@
-"""-sweep without -modes (src/app/sweep_run.c, sweep_transient.c, sweep_journal.c; docs/squeal.md section 6.5): a
+"""-sweep without -modes (src/sweep/sweep_run.c, sweep_transient.c, sweep_journal.c; docs/squeal.md section 6.5): a
 transient map of the feeder (jobs/feed.yaml), creep x friction: sheet_speed 0.05 (the roller's surface, omega r_C =
 0.157, slides over a slow sheet) and 0.1555 (1 % creep) times mu 0.3, 0.5, 0.8, on the coarse mesh -mesh_h 0.05, the
 sheet pressed in by t = 0.5 (-obstacle_speed 0.05) and run to t = 4; the rows are over the last half. Asserted:
@@ -10,7 +10,7 @@ sheet pressed in by t = 0.5 (-obstacle_speed 0.05) and run to t = 4; the rows ar
   - a map killed (SIGKILL) after two cases and run again (on 2 ranks) skips the journaled cases (their wall_time is
     the killed run's) and ends with the uninterrupted map's CSV; a run with another scene refuses the journals and
     leaves them; no journal remains after a complete map;
-  - the job array's way: slices 0,2 and 1,2 merged by scripts/merge_sweep.py are the map;
+  - the job array's way: slices 0,2 and 1,2 merged by scripts/rollertools/merge_sweep.py are the map;
   - a case whose run fails (the VI contact solver held to one Newton step, an error at the first step) is a row with
     status failed and NaN results, and the map goes on;
   - the physics of Coulomb friction: where the whole contact slips (stick fraction < 0.05) the mean friction force
@@ -97,7 +97,7 @@ c.check(not journals("killed.csv"), "no journal left after the resumed map compl
 # the job array's way
 run(MAP + ["-sweep", "part_0.csv", "-sweep_slice", "0,2"])
 run(MAP + ["-sweep", "part_1.csv", "-sweep_slice", "1,2"], nproc=2)
-merge = subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "merge_sweep.py"), "part_0.csv", "part_1.csv", "-o", "merged.csv", "--cases", str(len(expect))], capture_output=True, text=True)
+merge = subprocess.run([sys.executable, "-m", "rollertools.merge_sweep", "part_0.csv", "part_1.csv", "-o", "merged.csv", "--cases", str(len(expect))], capture_output=True, text=True)
 c.check(merge.returncode == 0 and without_wall("merged.csv") == without_wall("np1.csv"), f"slices 0,2 and 1,2 merged = the map ({merge.stdout.strip() or merge.stderr.strip()[-200:]})")
 
 # a run that fails is its case's status: the frictionless VI solver refused after one iteration

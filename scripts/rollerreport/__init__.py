@@ -1,22 +1,16 @@
-"""rollerreport: the squeal report of Roller (docs/squeal.md section 9.1) as one importable package.
+"""rollerreport: the squeak report of Roller (docs/squeal.md section 9) as one importable package.
 
-Run as `PYTHONPATH=scripts python3 -m rollerreport FOLDER`, or let `python3 -m rollerreport.run SCENE.yaml OUTDIR`
-(docs/squeal.md section 9.2) run every step and then the report. It reuses the spectra of scripts/spectrum.py and the
-whirl fits of scripts/squeal_fit.py (importable here as rollerreport.spectrum and rollerreport.squeal_fit; the
-old scripts keep working unchanged) and adds
-- sound: the WAV of what a listener near the sheet would hear (16-bit, 44.1 kHz) and its spectrogram;
-- zones: the rolling roller with stick and slip zones coloured (GIF if Pillow is present, else a PNG strip);
-- report: the verdict and the Markdown report;
-- run: the driver (the CEA, the map, the seeded transient, scene.json, the report).
+`PYTHONPATH=scripts python3 -m rollerreport.run SCENE.yaml OUTDIR` (section 9.2) runs every part the report needs
+and writes it; `python3 -m rollerreport FOLDER` (section 9.1) writes the report of a folder that holds the parts.
+Modules:
+- run: the driver: the parts (CEA, map, transients, sound, animation, page), each runnable alone, journalled
+  (journal) so that a re-run reuses what the folder holds, with their cost;
+- mechanisms: flutter, stick-slip, forced resonance, each a function of the folder returning a dict;
+- radiation: the sound pressure at a listener from the roller's surface velocity (2-D cylinder, finite width);
+- sound: the WAV of the simulated time at a stated level, the loudest line, A-weighting, the spectrogram;
+- animation: the roller deforming, coloured by its velocity, with the stick and slip zones on the patch;
+- page: report.html; report: the verdict, report.md and report.json; lines: the mesh's lines;
+- spectrum, squeal_fit: the spectra and the whirl fits the tests and rollerplots use too.
 """
-import os
-import sys
-
-_SCRIPTS = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-if _SCRIPTS not in sys.path:
-    sys.path.insert(0, _SCRIPTS)
-
-import spectrum  # noqa: E402,F401  (scripts/spectrum.py)
-import squeal_fit  # noqa: E402,F401  (scripts/squeal_fit.py)
-
-__all__ = ["spectrum", "squeal_fit", "sound", "zones", "report", "run"]
+__all__ = ["spectrum", "squeal_fit", "lines", "sound", "radiation", "animation", "mechanisms", "journal", "page",
+           "report", "run"]

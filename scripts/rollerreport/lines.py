@@ -32,16 +32,18 @@ def mesh_passing(h5):
 
 def notch(t, y, f_m, keep=None, width=0.1):
     """y - mean(y) without the lines k f_m, k = 1, 2, ... (|f - k f_m| < width f_m), except a harmonic within
-    width f_m of `keep` (the seeded mode's frequency: never removed)."""
+    width f_m of `keep` (the seeded mode's frequency: never removed). Filtered as its even extension (y then y
+    reversed), so that a growing or decaying series does not ring where the FFT wraps around."""
     y = np.asarray(y, float) - np.mean(y)
     if not f_m:
         return y
-    F = np.fft.rfft(y)
-    f = np.fft.rfftfreq(len(y), t[1] - t[0])
+    n = len(y)
+    F = np.fft.rfft(np.concatenate([y, y[::-1]]))  # the even extension: no jump where the FFT wraps around
+    f = np.fft.rfftfreq(2 * n, t[1] - t[0])
     for k in range(1, int(f[-1] / f_m) + 2):
         if keep is None or abs(keep - k * f_m) >= width * f_m:
             F[np.abs(f - k * f_m) < width * f_m] = 0
-    return np.fft.irfft(F, len(y))
+    return np.fft.irfft(F, 2 * n)[:n]
 
 
 def band_share(t, y, f0, band=0.2):

@@ -30,7 +30,7 @@ import os
 
 import numpy as np
 
-from . import lines, sound, zones
+from . import heard, journal, lines, mechanisms, page
 
 FIXED = {"case", "re", "im", "frequency", "growth_rate", "order", "wave", "error"}
 
@@ -150,7 +150,7 @@ def sweep_map(rows, png, scene_x=None, scene_y=None, title="", si=False):
 
 def transient_fit(t, y, f_guess, start=None):
     """Growth rate and frequency of the line nearest f_guess in y(t) from t = start on (default: the second half)
-    (matrix pencil of scripts/squeal_fit.py, 10 exponentials, on the mean-free signal)."""
+    (matrix pencil of scripts/rollerreport/squeal_fit.py, 10 exponentials, on the mean-free signal)."""
     from . import squeal_fit
 
     t, y = np.asarray(t, float), np.asarray(y, float)
@@ -163,21 +163,12 @@ def transient_fit(t, y, f_guess, start=None):
     return {"growth_rate": float(s[k].real), "frequency": float(abs(s[k].imag) / (2 * math.pi))}
 
 
-def heard_column(cols, columns=("contact_force", "friction_force")):
-    """The component of the force on the sheet that the transient moves most: of the normal (contact_force) and the
-    tangential (friction_force) force, the one of larger standard deviation (in force units: what excites the sheet
-    and the air; cols: the columns as arrays, the mesh's lines removed). A torsional mode (order 0) moves the
-    friction force, a radial one the normal force."""
-    have = [c for c in columns if c in cols]
-    return max(have, key=lambda c: float(np.nanstd(cols[c]))) if have else columns[0]
-
-
 def verdict_lines(v):
     """The report's verdict in Markdown."""
     word = "SQUEALS" if v["squeals"] else ("does not squeal, but its steady state DIVERGES" if v["diverges"] else
                                            "does not squeal")
-    md = ["## Verdict", "",
-          f"The roller **{word}**: the leading mode (order {v['order']}, {v['wave']} wave) has the growth rate "
+    md = ["## Flutter: the CEA", "",
+          f"The CEA: the roller **{word}**: the leading mode (order {v['order']}, {v['wave']} wave) has the growth rate "
           f"{v['growth_rate']:.4g} at the frequency {v['frequency']:.5g} (scene units), heard at "
           f"**{v['pitch_hz']:.0f} Hz**.", "",
           f"- margin against the rubber's damping: the loss factor {v['loss_factor']:.3g} "
@@ -207,61 +198,112 @@ def seed_response(j, cols):
     return {k: cols[k] - base[k] for k in cols if k != "t" and k in base}, None
 
 
-def transient_lines(j, v, signal, out):
-    """The seeded transient's fit, the WAV and the spectrogram; returns the report's lines."""
+def fit_lines(j, v, out):
+    """The seeded transient's fit (the seed's response when transient_base.csv is there); returns the report's
+    lines and sets out["fit"], out["mesh_passing"]."""
     rows = read_rows(j("transient.csv"))[1:]  # without row 0: the state before the first contact solve (force 0)
-    cols = {k: np.array([num(r[k]) for r in rows]) for k in rows[0] if k == "t" or k in lines.CARRIERS or k == signal}
+    cols = {k: np.array([num(r[k]) for r in rows]) for k in rows[0] if k == "t" or k in lines.CARRIERS}
     t, f0 = cols["t"], v["frequency"]
     response, unused = seed_response(j, cols)
     f_m = out["mesh_passing"] = lines.mesh_passing(j("transient.h5"))
-    raw = heard_column(cols) if signal == "auto" else signal
-    loud_raw = sound.loudest_line(cols[raw], 1.0 / (t[1] - t[0]), fmin=0.05 * f0, pad=8)
-    k_raw = lines.is_mesh_line(loud_raw, f_m)
-    clean = {k: lines.notch(t, y, f_m, keep=f0) for k, y in cols.items() if k != "t"}
-    signal = heard_column(clean) if signal == "auto" else signal
-    out["signal"] = signal
     if response is not None:  # the seed's response: every line the start excites in both runs cancels
         w = t >= t[0] + 1.0 / f0  # from one period on: the seed's own start (its static part) is left out
         column, y = lines.carrier(t[w], {k: y[w] for k, y in response.items() if k in lines.CARRIERS}, f0, None)
         fit = out["fit"] = dict(transient_fit(t[w], y, f0, start=t[w][0]), column=column, response=True)
     else:
+        clean = {k: lines.notch(t, y, f_m, keep=f0) for k, y in cols.items() if k != "t"}
         column, y = lines.carrier(t, clean, f0, f_m)
         fit = out["fit"] = dict(transient_fit(t, y, f0), column=column, response=False)
-    samples, rate = sound.audio_signal(t, clean[signal], v["seconds_per_unit"])
-    sound.write_wav(j("squeal.wav"), samples, rate)
-    heard = out["loudest_hz"] = sound.loudest_line(*sound.read_wav(j("squeal.wav")))
-    sound.spectrogram_png(j("spectrogram.png"), samples, rate, v["pitch_hz"])
-    out["files"] += ["squeal.wav", "spectrogram.png"]
     s = v["seconds_per_unit"]
     how = ("the seed's response (the seeded run's column minus the unseeded run's, transient_base.csv) from one period "
            "on" if fit["response"] else f"the seeded run's second half (no unseeded run to subtract: {unused}, so every "
            "line the start excites is fitted too)")
-    md = ["## Transient", "",
+    md = ["## Flutter: the seeded transient", "",
           f"Seeded with the leading mode, fitted on the {column}, {how}: growth {fit['growth_rate']:.4g} (CEA "
           f"{v['growth_rate']:.4g}), frequency {fit['frequency']:.5g} (CEA {f0:.5g}).", ""]
     if f_m:
         heard_at = f"{f_m / s:.1f} Hz" if s == 1 else f"{f_m:.5g} per unit of time, {f_m / s:.1f} Hz on the audio scale"
         md += [f"The mesh-passing lines (the Gamma_C vertices cross the contact patch at {heard_at}; that line and its "
                "harmonics are a discretization artefact, docs/squeal.md 7.7) are removed before the fit and the "
-               "sound" + (f"; they were the {raw}'s loudest line ({loud_raw / s:.1f} Hz, harmonic {k_raw})" if k_raw
-                          else "") + ".", ""]
-    return md + [f"Sound: [squeal.wav](squeal.wav), the {signal} with time scaled by {s:.4g} s per unit; its loudest "
-                 f"line {heard:.0f} Hz (predicted {v['pitch_hz']:.0f} Hz).", "", "![spectrogram](spectrogram.png)", ""]
+               "sound.", ""]
+    return md
 
 
-def write(folder, signal="auto"):
-    """Write report.md, map.png, squeal.wav, spectrogram.png and the animation into folder; returns the
-    dict of what was found and written. signal: the transient CSV's column heard (auto: heard_column)."""
+SOURCES = os.path.dirname(os.path.abspath(__file__))
+PARTS = ("sound", "animation")  # the report's own parts that cost (journalled); the rest is always written
+
+
+def _source_files(*names):
+    return [os.path.join(SOURCES, n) for n in names]
+
+
+def sound_part(folder, scene, v, out, jr):
+    """squeal.wav, spectrogram.png and the levels (rollerreport.heard), journalled: reused when its inputs are the
+    same. Returns the sound's dict (without the series)."""
+    j = lambda name: os.path.join(folder, name)  # noqa: E731
+    files = [j(f) for f in ("transient.csv", "surface.csv", "transient_base.csv", "surface_base.csv", "transient.h5",
+                            "scene.json")] + _source_files(
+        "heard.py", "radiation.py", "sound.py", "lines.py")
+    digest = journal.inputs_hash({"part": "sound", "frequency": v["frequency"], "pitch": v["pitch_hz"]}, files)
+    result = {}
+
+    def run():
+        r = heard.write(folder, scene, v, out.get("mesh_passing"))
+        r.pop("series")
+        result.update(r)
+        return True, {"result": r}
+
+    entry = jr.run("sound", digest, ["squeal.wav", "sound.csv", "spectrogram.png"], run, what="the sound at the listener (docs/squeal.md 9.3)")
+    return entry.get("result", result)
+
+
+def animation_part(folder, scene, v, snd, jr):
+    """The animation (rollerreport.animation), journalled."""
+    from . import animation, sound
+
+    j = lambda name: os.path.join(folder, name)  # noqa: E731
+    files = [j(f) for f in ("transient.h5", "transient_base.h5", "squeal.wav", "scene.json")] + _source_files("animation.py")
+    digest = journal.inputs_hash({"part": "animation"}, files)
+
+    def run():
+        series = None
+        if snd and os.path.exists(j("squeal.wav")):
+            samples, rate = sound.read_wav(j("squeal.wav"))
+            series = (np.arange(len(samples)) / rate, samples * snd["wav_reference"]["full_scale_peak_pa"] * 32768 / 32767)
+        data = animation.load(j("transient.h5"), j("transient_base.h5"))
+        r = animation.write(data, j("vibration"), v["seconds_per_unit"], series, title=scene.get("name", ""))
+        r["files"] = [os.path.basename(f) for f in r["files"]]
+        return True, {"result": r}
+
+    entry = jr.run("animation", digest, ["vibration.gif", "vibration.mp4"], run,
+                   what="the roller vibrating, its stick and slip zones (docs/squeal.md 9.1)")
+    return entry.get("result")
+
+
+def recorded(jr, name, keys=()):
+    """The result an earlier run recorded for part `name` (journal.json), if it finished, its outputs are there and it
+    has the keys this report reads (an older report's result may not)."""
+    p = jr.parts.get(name) or {}
+    r = p.get("result") or {}
+    ok = p.get("status") == "ok" and all(os.path.exists(os.path.join(jr.folder, o)) for o in p.get("outputs", []))
+    return r if ok and all(k in r for k in keys) else None
+
+
+def write(folder, parts=PARTS):
+    """Write report.md, report.json, report.html, map.png and, of `parts`, the sound (squeal.wav, spectrogram.png)
+    and the animation (vibration.gif) into folder; returns the report's dict (report.json's content)."""
     j = lambda name: os.path.join(folder, name)  # noqa: E731
     scene = json.load(open(j("scene.json"))) if os.path.exists(j("scene.json")) else {}
     out = {"scene": scene, "files": [], "missing": []}
+    jr = journal.Journal(folder)
     commands = json.load(open(j("commands.json"))) if os.path.exists(j("commands.json")) else []
-    md = [f"# Squeal report: {scene.get('name', os.path.basename(os.path.abspath(folder)))}", ""]
+    md = [f"# Squeak report: {scene.get('name', os.path.basename(os.path.abspath(folder)))}", ""]
+    body = []
     v = None
     if os.path.exists(j("modes.csv")):
         rows = read_rows(j("modes.csv"))
-        v = out["verdict"] = verdict(leading_mode(rows), scene, leading_real(rows))
-        md += verdict_lines(v)
+        v = out["cea"] = verdict(leading_mode(rows), scene, leading_real(rows))
+        body += verdict_lines(v)
     else:
         out["missing"].append("modes.csv")
     if os.path.exists(j("sweep.csv")):
@@ -277,26 +319,76 @@ def write(folder, signal="auto"):
         out["files"].append("map.png")
         out["friction_onset"] = onset
         out["divergent"] = [{xname: x, yname: y, "growth_rate": g} for x, y, g in divergent]
-        md += ["## Map", "", f"![map](map.png)", "",
-               f"- friction at onset of squeal (scene's {xname}): {onset if onset is not None else 'none in the map'}"]
-        md += [f"- **diverges** (a real positive eigenvalue: unstable without a pitch, stick-slip) at {xname} {x:.4g}, "
-               f"{yname} {y:.4g}: {g:+.4g}" for x, y, g in divergent] + [""]
+        body += ["## Map", "", "![map](map.png)", "",
+                 f"- friction at onset of squeal (scene's {xname}): {onset if onset is not None else 'none in the map'}"]
+        body += [f"- **diverges** (a real positive eigenvalue: unstable without a pitch, stick-slip) at {xname} {x:.4g}, "
+                 f"{yname} {y:.4g}: {g:+.4g}" for x, y, g in divergent] + [""]
     else:
         out["missing"].append("sweep.csv")
+    snd = None
     if os.path.exists(j("transient.csv")) and v is not None:
-        md += transient_lines(j, v, signal, out)
+        body += fit_lines(j, v, out)
+        if "sound" in parts:
+            snd = out["sound"] = sound_part(folder, scene, v, out, jr)
+        else:  # not asked for: what the journal holds of an earlier run, if its files are there
+            snd = out["sound"] = recorded(jr, "sound", ("spl_mode_db", "mode_line_resolved", "wav_reference", "wav_source"))
+        if snd:
+            out["files"] += ["squeal.wav", "sound.csv", "spectrogram.png"]
     else:
         out["missing"].append("transient.csv")
         failed = [c for c in commands if c.get("step") == "transient" and c.get("returncode")]
         if failed:
-            md += ["## Transient", "", f"The seeded transient **stopped with an error**: {failed[0]['error']} "
-                   f"(its log: {failed[0]['log']}).", ""]
-    if os.path.exists(j("transient.h5")):
-        path, kind = zones.animate(zones.frames_from_h5(j("transient.h5")), j("zones"))
-        out["files"].append(os.path.basename(path))
-        md += ["## Stick and slip", "", f"![zones]({os.path.basename(path)}) ({kind})", ""]
-    else:
+            body += ["## Flutter: the seeded transient", "", f"The seeded transient **stopped with an error**: "
+                     f"{failed[0]['error']} (its log: {failed[0]['log']}).", ""]
+    anim = None
+    if os.path.exists(j("transient.h5")) and v is not None:
+        anim = animation_part(folder, scene, v, snd, jr) if "animation" in parts else recorded(jr, "animation", ("files", "reference"))
+    if anim:
+        out["animation"] = anim
+        out["files"] += anim["files"]
+        body += ["## The vibration", "", f"![the roller vibrating]({anim['files'][0]})", "",
+                 f"{anim['reference']}, magnified {anim['magnification']:.3g} times; {anim['frames']} frames, coloured "
+                 "by the vibration's speed; the stick (blue) and slip (red) vertices of the patch; under it the sound "
+                 "at the listener with the frame's time.", ""]
+    elif not os.path.exists(j("transient.h5")):
         out["missing"].append("transient.h5")
+    # the mechanisms and the verdict (SPEC section 10)
+    ctx = dict(folder=folder, scene=scene, verdict=v, fit=out.get("fit"), sound=snd, divergent=out.get("divergent", []),
+               seconds_per_unit=v["seconds_per_unit"] if v else 1.0)
+    if "friction_onset" in out:
+        ctx["friction_onset"] = out["friction_onset"]
+    out["mechanisms"] = mechanisms.evaluate(ctx)
+    out["verdict"], out["verdict_complete"] = mechanisms.verdict_word(out["mechanisms"])
+    out["spl_db"] = snd["spl_db"] if snd else None
+    out["listener"] = snd["listener"] if snd else heard.listener(scene)
+    out["wav_seconds"] = snd["wav_seconds"] if snd else 0.0
+    out["wav_source"] = snd["wav_source"] if snd else None
+    out["propensity"] = mechanisms.propensity(folder)
+    md += ["## Verdict", "", f"The roller **{out['verdict']}**" + ("" if out["verdict_complete"] else
+           " (from the mechanisms that ran: " + ", ".join(m["kind"] for m in out["mechanisms"] if m["status"] == "run")
+           + "; not run: " + "; ".join(f"{m['kind']} ({m['status'][9:]})" for m in out["mechanisms"] if m["status"] != "run")
+           + ")") + ".", ""]
+    md += ["| mechanism | status | squeals | frequency (Hz) | growth (1/s) | level (dB SPL) |", "|---|---|---|---|---|---|"]
+    for m in out["mechanisms"]:
+        f = lambda x, spec: "-" if x is None else format(x, spec)  # noqa: E731
+        md.append(f"| {m['kind']} | {m['status']} | {dict([(True, 'yes'), (False, 'no')]).get(m['squeals'], '-')} | "
+                  f"{f(m['frequency_hz'], '.1f')} | {f(m['growth_rate_per_s'], '.4g')} | {f(m['spl_db'], '.1f')} |")
+    md += [""] + body
+    if snd:
+        lis, src = snd["listener"], snd["wav_source"]
+        md += ["## The sound", "", f"[squeal.wav](squeal.wav): the pressure at {lis['distance_m']:g} m from a "
+               f"{lis['width_m'] * 1e3:g} mm wide roller ({lis['angle_deg']:g} degrees; {lis['model']}), radiated by "
+               f"{src['column']} of {src['file']}: **{snd['spl_db']:.1f} dB SPL** (loudest 125 ms; Leq {snd['spl_leq_db']:.1f}), "
+               f"{snd['spl_dba']:.1f} dB(A); loudest line {snd['loudest_hz']:.1f} Hz; the mode's line (predicted {v['pitch_hz']:.1f} Hz, "
+               f"within 20 %) {snd['spl_mode_db']:.1f} dB SPL, {snd['spl_mode_dba']:.1f} dB(A)" + ("" if snd.get("mode_line_resolved", True)
+               else f" (an upper bound: no line at the pitch, the band's loudest at {snd['mode_line_hz']:.1f} Hz)") + ". "
+               f"{snd['wav_seconds'] * 1e3:.1f} ms: the simulated span {src['t0']:.4g} to {src['t1']:.4g} times "
+               f"{src['seconds_per_unit']:.4g} s per unit; full scale is a sine of {snd['wav_reference']['full_scale_db_spl']:g} dB SPL.", ""]
+        md += [f"> {x}" for x in (snd["notice"], snd["level_note"]) if x] + ["", "![spectrogram](spectrogram.png)", ""]
+    md += ["## Propensity", "", out["propensity"]["status"], ""]
+    out["cost"] = jr.parts
+    if jr.parts:
+        md += ["## Cost", ""] + jr.cost_lines() + [""]
     if out["missing"]:
         md += ["Missing: " + ", ".join(out["missing"]), ""]
     if commands:
@@ -307,9 +399,10 @@ def write(folder, signal="auto"):
             took = f", {c['seconds']:.0f} s" if c.get("seconds") is not None else ""
             state = f" **failed**: {c['error']}" if c.get("returncode") else ""
             md += [f"- {c['step']}: {c['what']}{took}{state}", "", "      " + c["command"], ""]
+    md += ["The page: [report.html](report.html).", ""]
     with open(j("report.md"), "w") as f:
         f.write("\n".join(md))
-    out["files"].append("report.md")
+    out["files"] += ["report.md", "report.json", page.write(folder, out)]
     with open(j("report.json"), "w") as f:
-        json.dump({k: val for k, val in out.items()}, f, indent=1, default=str)
+        json.dump(out, f, indent=1, default=str)
     return out

@@ -9,9 +9,14 @@
    degree are given again: the accurate default mesh follows -ts_max_time), dt and duration from the mode's
    frequency (--steps-per-period, --periods); then the same run unseeded (transient_base.csv), so that the report
    fits the seed's own response;
-4. scene.json from the scene (units, Kelvin-Voigt tau, friction, creep, the audio time scale);
-5. the report (rollerreport.report: report.md, report.json, map.png, squeal.wav, spectrogram.png, zones.gif),
-   with every step's command (commands.json) so that each can be run again.
+4. scene.json from the scene (units, Kelvin-Voigt tau, friction, creep, the audio time and length scales, the
+   listener);
+5. the report (rollerreport.report: report.md, report.json, report.html, map.png, squeal.wav, spectrogram.png,
+   vibration.gif), with every step's command (commands.json) so that each can be run again.
+
+Each part (cea, map, transient, transient_base, sound, animation) is journalled (journal.json: its inputs' hash, its
+outputs, its cost): a re-run reuses a part whose inputs are unchanged and whose outputs are there, so a run after a
+crash, or with another map, does not redo the rest; --parts runs some alone, --fresh redoes all.
 
 Options after `--` go to every roller run (e.g. a coarser mesh: `-- -mesh_h 0.05 -mesh_h_contact 0.0112`). A step
 that fails is named in the report with its error line; the later steps still run where they can, and the driver
@@ -28,7 +33,7 @@ import time
 
 import numpy as np
 
-from . import report
+from . import journal, report
 
 # Non-dimensional scenes are heard as the same roller at a real size and rubber: the printer roller's (docs/squeal.md
 # 7.1: r_outer 12.5 mm, shear wave speed 23.6 m/s). Time then scales as length / wave speed.
@@ -73,13 +78,16 @@ def detect_units(opts):
     return "si" if value(opts, "young") >= 1e3 else "nd"
 
 
-def scene_json(name, opts, units):
-    """scene.json (docs/squeal.md 9.1) from the scene's options."""
+def scene_json(name, opts, units, listener=None):
+    """scene.json (docs/squeal.md 9.1) from the scene's options; listener: {distance_m, width_m, angle_deg}."""
     omega, r = value(opts, "omega"), value(opts, "r_outer")
     surface = omega * r
     scene = {"name": name, "units": units, "friction": value(opts, "friction"), "sheet_speed": value(opts, "sheet_speed"),
              "surface_speed": surface, "creep": 1.0 - value(opts, "sheet_speed") / surface if surface else float("nan"),
-             "kelvin_voigt_tau": value(opts, "viscosity")}
+             "kelvin_voigt_tau": value(opts, "viscosity"), "r_outer": r,
+             "metres_per_unit": 1.0 if units == "si" else REF_R_OUTER / r}
+    if listener:
+        scene["listener"] = dict(listener)
     if "friction_static" in opts:
         scene["friction_static"] = float(opts["friction_static"])
     if units == "nd":  # the roller at the reference size and rubber: t_si = s t_nd
@@ -126,10 +134,13 @@ def mesh_options(modes_h5, extra):
 
 
 class Steps:
-    """Runs the commands of the report, each with its log in OUTDIR/logs, and records them (commands.json)."""
+    """Runs the commands of the report, each with its log in OUTDIR/logs, as journalled parts (journal.json: reused
+    when their inputs are unchanged), and records them (commands.json)."""
 
-    def __init__(self, out):
-        self.out, self.done = out, []
+    def __init__(self, out, roller, only=None):
+        self.out, self.done, self.only = out, [], only
+        self.journal = journal.Journal(out)
+        self.roller = roller
         self.env = dict(os.environ)
         if hasattr(os, "geteuid") and os.geteuid() == 0:  # Open MPI refuses root unless told (containers, CI)
             self.env.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
@@ -137,7 +148,33 @@ class Steps:
         self.env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
         os.makedirs(os.path.join(out, "logs"), exist_ok=True)
 
-    def run(self, name, cmd, what):
+    def run(self, name, cmd, what, outputs=(), inputs=(), ranks=1):
+        """Run cmd as part `name` unless the journal has it done with the same command, scene, executable and input
+        files (then reused; a part left out of --parts is reused too when it is done); True when it succeeded."""
+        self.journal = journal.Journal(self.out)
+        if self.only is not None and name not in self.only:
+            entry = self.journal.parts.get(name)
+            if entry and entry.get("command_record"):
+                self.done.append(dict(entry["command_record"], step=name, reused=True))
+                self.save()
+            return bool(entry and entry.get("status") == "ok")
+        files = [self.roller] + [a for a in cmd if a.endswith((".yaml", ".yml"))] + list(inputs)
+        digest = journal.inputs_hash({"command": cmd}, files)
+        record = {}
+
+        def go():
+            ok = self._run(name, cmd, what, record)
+            return ok, {"command_record": dict(record)}
+
+        entry = self.journal.run(name, digest, list(outputs), go, ranks=ranks, what=what)
+        if entry.get("reused"):
+            record = dict(entry.get("command_record", {}), reused=True)
+            print(f"rollerreport.run: {name}: reused (its inputs unchanged: journal.json)", flush=True)
+        self.done.append(dict(record, step=name))
+        self.save()
+        return entry.get("status") == "ok"
+
+    def _run(self, name, cmd, what, record):
         log = os.path.join(self.out, "logs", f"{name}.log")
         print(f"rollerreport.run: {name}: {shlex.join(cmd)}", flush=True)
         t0 = time.time()
@@ -152,10 +189,9 @@ class Steps:
             err = [ln.split("ERROR:")[-1].strip() for ln in lines if "PETSC ERROR" in ln]
             err = [e for e in err if e and not e.startswith("-") and not any(w in e for w in skip)]
             error = ": ".join(err[:2]) if err else (lines[-1] if lines else f"exit {rc}")
-        self.done.append({"step": name, "what": what, "command": shlex.join(cmd), "cwd": self.out,
-                          "seconds": round(seconds, 1), "returncode": rc, "error": error, "log": f"logs/{name}.log"})
+        record.update({"step": name, "what": what, "command": shlex.join(cmd), "cwd": self.out,
+                       "seconds": round(seconds, 1), "returncode": rc, "error": error, "log": f"logs/{name}.log"})
         print(f"rollerreport.run: {name}: {'ok' if not rc else 'FAILED (' + error + ')'} in {seconds:.1f} s", flush=True)
-        self.save()
         return rc == 0
 
     def save(self):
@@ -189,27 +225,31 @@ def transient_command(base, opts, a, extra, out, scene):
     cmd = base + mesh_options(j("modes.h5"), extra) + [
         "-ts_scheme", "dmf", "-ts_dt", repr(dt), "-ts_max_time", repr(n * dt), "-ts_max_steps", str(n),
         "-obstacle_speed", "1e6", "-initial_condition", "mode", "-initial_mode_file", j("modes.h5"), "-initial_mode",
-        str(k), "-ic_amplitude", repr(amp), "-monitor_csv", j("transient.csv"), "-output", j("transient.h5"),
-        "-output_every", str(max(1, n // 36)), "-checkpoint", j("checkpoint.h5"), "-quiet"]
+        str(k), "-ic_amplitude", repr(amp), "-monitor_csv", j("transient.csv"), "-monitor_surface_csv", j("surface.csv"), "-output", j("transient.h5"),
+        "-output_every", str(output_every(a)), "-checkpoint", j("checkpoint.h5"), "-quiet"]
     what = (f"the transient seeded on mode {k} ({'the least stable' if a.mode is None else 'chosen'}) about the CEA's "
             f"steady state, {a.steps_per_period:g} steps per period, {a.periods:g} periods (docs/squeal.md 4.2)")
     return cmd + extra, what
 
 
+def output_every(a):
+    """The fields' stride: 10 frames per period of the seeded mode (the animation's frames)."""
+    return max(1, int(round(a.steps_per_period / 10)))
+
+
 def base_command(cmd):
-    """The seeded transient's command unseeded (-ic_amplitude 0), its monitor into transient_base.csv, no fields: the
-    report fits the seed's own response, the seeded run's columns minus these (the start, the contact law settling
-    from the CEA's steady state, excites the same lines in both: docs/squeal.md 4.4.1, 4.4.4)."""
+    """The seeded transient's command unseeded (-ic_amplitude 0), its monitor into transient_base.csv and its fields
+    into transient_base.h5 at the same steps: the report fits the seed's own response, the seeded run's columns
+    minus these (the start, the contact law settling from the CEA's steady state, excites the same lines in both:
+    docs/squeal.md 4.4.1, 4.4.4), and the animation shows the seeded run's displacement minus this one's."""
     out, k = [], 0
     while k < len(cmd):
         name = cmd[k]
-        if name in ("-output", "-output_every"):
-            k += 2
-            continue
-        if name in ("-ic_amplitude", "-monitor_csv", "-checkpoint") and k + 1 < len(cmd):
+        if name in ("-ic_amplitude", "-monitor_csv", "-monitor_surface_csv", "-checkpoint", "-output") and k + 1 < len(cmd):
             d = os.path.dirname(cmd[k + 1])
             value = {"-ic_amplitude": "0", "-monitor_csv": os.path.join(d, "transient_base.csv"),
-                     "-checkpoint": os.path.join(d, "checkpoint_base.h5")}[name]
+                     "-monitor_surface_csv": os.path.join(d, "surface_base.csv"),
+                     "-checkpoint": os.path.join(d, "checkpoint_base.h5"), "-output": os.path.join(d, "transient_base.h5")}[name]
             out += [name, value]
             k += 2
             continue
@@ -218,10 +258,12 @@ def base_command(cmd):
     return out, "the same transient unseeded (-ic_amplitude 0): the report fits the seeded run minus this one"
 
 
-# what a run writes into OUTDIR: removed first, so that nothing of an earlier run is reported as this one's
-OUTPUTS = ("modes.csv", "modes.h5", "modes.xmf", "steady.csv", "sweep.csv", "transient.csv", "transient_base.csv",
-           "transient.h5", "transient.xmf", "scene.json", "commands.json", "report.md", "report.json", "map.png",
-           "squeal.wav", "spectrogram.png", "zones.gif", "zones.mp4", "zones_strip.png")
+# what a run writes into OUTDIR: --fresh removes them first; else each part removes its own before it runs again
+OUTPUTS = ("modes.csv", "modes.h5", "modes.xmf", "steady.csv", "sweep.csv", "transient.csv", "surface.csv", "transient_base.csv", "surface_base.csv",
+           "transient.h5", "transient.xmf", "transient_base.h5", "transient_base.xmf", "scene.json", "commands.json",
+           "journal.json", "report.md", "report.json", "report.html", "map.png", "squeal.wav", "sound.csv", "spectrogram.png",
+           "vibration.gif", "vibration.mp4")
+ROLLER_PARTS = ("cea", "map", "transient", "transient_base")
 
 
 def parse(argv):
@@ -247,8 +289,15 @@ def parse(argv):
     p.add_argument("--amplitude", type=float, default=None,
                    help="-ic_amplitude of the seeded mode (default 2 %% of -obstacle_depth)")
     p.add_argument("--mode", type=int, default=None, help="the seeded mode's row in modes.csv (default the least stable)")
-    p.add_argument("--signal", default="auto", help="the transient's CSV column heard (default auto: of contact_force "
-                   "and friction_force the one that fluctuates most)")
+    p.add_argument("--parts", default=None, help="the parts to run, comma-separated, of "
+                   f"{', '.join(ROLLER_PARTS + report.PARTS)} (default all; the others are reused if done: journal.json)")
+    p.add_argument("--fresh", action="store_true", help="remove what an earlier run wrote and redo every part")
+    p.add_argument("--distance", type=float, default=1.0, help="the listener's distance from the roller's axis in m "
+                   "(default 1: the bystander position of ISO 7779 / ECMA-74)")
+    p.add_argument("--width", type=float, default=0.030, help="the roller's width in m (default 0.030, the printer "
+                   "roller's: docs/squeal.md 7.1); nd scenes: at the printer roller's size")
+    p.add_argument("--angle", type=float, default=90.0, help="the listener's direction in degrees (default 90: above the "
+                   "roller; the sheet is at -90)")
     cut = argv.index("--") if "--" in argv else len(argv)
     return p.parse_args(argv[:cut]), argv[cut + 1 :]
 
@@ -258,38 +307,50 @@ def main(argv=None):
     src = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     roller = os.path.abspath(a.roller or os.path.join(src, "build", "roller"))
     scene_path, out = os.path.abspath(a.scene), os.path.abspath(a.out)
+    only = None if a.parts is None else [x for x in a.parts.split(",") if x]
+    bad = [x for x in only or [] if x not in ROLLER_PARTS + report.PARTS]
+    if bad:
+        raise SystemExit(f"rollerreport.run: --parts {a.parts}: unknown {', '.join(bad)}; allowed: "
+                         f"{', '.join(ROLLER_PARTS + report.PARTS)}")
     os.makedirs(out, exist_ok=True)
-    for name in OUTPUTS:
-        for stale in (name, name + ".part"):
-            if os.path.exists(os.path.join(out, stale)):
-                os.remove(os.path.join(out, stale))
+    if a.fresh:
+        for name in OUTPUTS:
+            for stale in (name, name + ".part"):
+                if os.path.exists(os.path.join(out, stale)):
+                    os.remove(os.path.join(out, stale))
     opts = scene_options(scene_path, extra)
-    scene = scene_json(os.path.splitext(os.path.basename(scene_path))[0], opts, detect_units(opts) if a.units == "auto" else a.units)
-    steps = Steps(out)
+    listener = {"distance_m": a.distance, "width_m": a.width, "angle_deg": a.angle}
+    scene = scene_json(os.path.splitext(os.path.basename(scene_path))[0], opts,
+                       detect_units(opts) if a.units == "auto" else a.units, listener)
+    steps = Steps(out, roller, only)
     base = [roller, "-options_file", scene_path]
     j = lambda f: os.path.join(out, f)  # noqa: E731
 
     cea_ok = steps.run("cea", base + ["-modes", "-modes_nev", str(a.nev), "-modes_csv", j("modes.csv"), "-modes_output",
                                       j("modes.h5"), "-modes_steady_csv", j("steady.csv")] + extra,
-                       "the steady state and its complex eigenvalues (docs/squeal.md 3)")
+                       "the steady state and its complex eigenvalues (docs/squeal.md 3)",
+                       outputs=["modes.csv", "modes.h5", "modes.xmf", "steady.csv"])
     if not a.no_map:
-        steps.run("map", *map_command(base, scene, a, extra, out))
+        steps.run("map", *map_command(base, scene, a, extra, out), outputs=["sweep.csv"], ranks=a.ranks)
     if cea_ok:
         seeded, what = transient_command(base, opts, a, extra, out, scene)
-        if steps.run("transient", seeded, what):
-            steps.run("transient_base", *base_command(seeded))
+        if steps.run("transient", seeded, what, outputs=["transient.csv", "surface.csv", "transient.h5", "transient.xmf"],
+                     inputs=[j("modes.h5")]):
+            steps.run("transient_base", *base_command(seeded), outputs=["transient_base.csv", "surface_base.csv", "transient_base.h5",
+                                                                        "transient_base.xmf"], inputs=[j("modes.h5")])
     with open(j("scene.json"), "w") as fh:
         json.dump(scene, fh, indent=1)
-    cmd = ["env", f"PYTHONPATH={os.path.join(src, 'scripts')}", sys.executable, "-m", "rollerreport", out, "--signal", a.signal]
+    parts = [p for p in report.PARTS if only is None or p in only]
+    cmd = ["env", f"PYTHONPATH={os.path.join(src, 'scripts')}", sys.executable, "-m", "rollerreport", out, "--parts", ",".join(parts)]
     steps.done.append({"step": "report", "what": "the report (docs/squeal.md 9.1)", "command": shlex.join(cmd),
                        "cwd": out, "seconds": None, "returncode": 0, "error": "", "log": ""})
     steps.save()
     t0 = time.time()
-    r = report.write(out, a.signal)
+    r = report.write(out, parts)
     steps.done[-1]["seconds"] = round(time.time() - t0, 1)
     steps.save()
-    failed = [s["step"] for s in steps.done if s["returncode"]]
-    print(f"rollerreport.run: wrote {', '.join(r['files'])} in {out}" + (f"; failed: {', '.join(failed)}" if failed else ""))
+    failed = [s["step"] for s in steps.done if s.get("returncode")]
+    print(f"rollerreport.run: {r['verdict']}; wrote {', '.join(r['files'])} in {out}" + (f"; failed: {', '.join(failed)}" if failed else ""))
     return 1 if failed else 0
 
 

@@ -3,7 +3,7 @@
    in one place (RollerSetFromOptions, "cross-component checks"). */
 #include "integrate/integrate.h"
 #include "modes/modes.h"
-#include "app/sweep.h"
+#include "sweep/sweep.h"
 
 const char *const RollerInitialConditions[] = {"rest", "bump", "mms", "mode", "RollerInitialCondition", "ROLLER_IC_", NULL};
 const char *const RollerMMSTypes[]          = {"none", "linear", "sine", "RollerMMSType", "ROLLER_MMS_", NULL};
@@ -58,6 +58,9 @@ PetscErrorCode RollerCreate(MPI_Comm comm, Roller *roller)
 
 PetscErrorCode RollerSetFromOptions(Roller ctx)
 {
+  char      table[256] = "";
+  PetscBool given[4]   = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE}; /* -friction, _static, _decay, _table */
+
   PetscFunctionBeginUser;
   PetscCall(RollerOptionsCheckValues(ctx->comm)); /* a word where a number goes, named before PETSc parses it */
   PetscCall(RollerMeshSetFromOptions(ctx));
@@ -71,11 +74,26 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsReal("-obstacle_speed", "Obstacle speed v", NULL, ctx->obstacle.speed, &ctx->obstacle.speed, NULL));
   PetscCall(PetscOptionsReal("-obstacle_depth", "Final indentation depth", NULL, ctx->obstacle.depth, &ctx->obstacle.depth, NULL));
   PetscCall(PetscOptionsReal("-sheet_speed", "Lab-frame speed V of the sheet along e1", NULL, ctx->obstacle.sheet_speed, &ctx->obstacle.sheet_speed, NULL));
-  PetscCall(PetscOptionsReal("-friction", "Coulomb friction coefficient mu (kinetic); 0: frictionless, no friction machinery", NULL, ctx->obstacle.friction, &ctx->obstacle.friction, NULL));
+  PetscCall(PetscOptionsReal("-friction", "Coulomb friction coefficient mu (kinetic); 0: frictionless, no friction machinery", NULL, ctx->obstacle.friction, &ctx->obstacle.friction, &given[0]));
   ctx->obstacle.friction_static = ctx->obstacle.friction;
-  PetscCall(PetscOptionsReal("-friction_static", "Static coefficient mu_s of mu(v) = mu + (mu_s - mu) exp(-|v|/v_c) (default: mu)", NULL, ctx->obstacle.friction_static, &ctx->obstacle.friction_static, NULL));
-  PetscCall(PetscOptionsReal("-friction_decay", "Slip speed v_c of the velocity weakening (0: none, constant mu)", NULL, ctx->obstacle.friction_decay, &ctx->obstacle.friction_decay, NULL));
+  PetscCall(PetscOptionsReal("-friction_static", "Static coefficient mu_s of mu(v) = mu + (mu_s - mu) exp(-|v|/v_c) (default: mu)", NULL, ctx->obstacle.friction_static, &ctx->obstacle.friction_static, &given[1]));
+  PetscCall(PetscOptionsReal("-friction_decay", "Slip speed v_c of the velocity weakening (0: none, constant mu)", NULL, ctx->obstacle.friction_decay, &ctx->obstacle.friction_decay, &given[2]));
+  PetscCall(PetscOptionsString("-friction_table", "A measured mu(|v|) instead: v1:mu1,v2:mu2,... (slip speeds >= 0 increasing, coefficients > 0), monotone cubic interpolation, constant beyond the ends; switches friction on, without -friction, -friction_static, -friction_decay (default: none)", NULL, table, table, sizeof(table), &given[3]));
   PetscOptionsEnd();
+  if (given[3]) { /* the table replaces the exponential law (docs/friction.md section 1): with its options only where the
+                     command line's table overrides an options file's law, with a warning */
+    const char *names[]  = {"-friction", "-friction_static", "-friction_decay"};
+    PetscReal   values[] = {ctx->obstacle.friction, ctx->obstacle.friction_static, ctx->obstacle.friction_decay};
+    PetscBool   cli_table, cli;
+
+    PetscCall(RollerOptionNameGivenOnCommandLine("-friction_table", &cli_table));
+    for (PetscInt i = 0; i < 3; ++i) {
+      if (!given[i]) continue;
+      PetscCall(RollerOptionNameGivenOnCommandLine(names[i], &cli));
+      PetscCheck(cli_table && !cli, ctx->comm, PETSC_ERR_ARG_INCOMP, "-friction_table is the whole law mu(v) and switches friction on: give it without %s (given: %g)", names[i], (double)values[i]);
+      PetscCall(PetscFPrintf(ctx->comm, PETSC_STDERR, "Warning: %s %g, set by an options file, is replaced by the command line's -friction_table\n", names[i], (double)values[i]));
+    }
+  }
   RollerCheckOption(ctx->comm, "-sheet_speed", ctx->obstacle.sheet_speed, PETSC_TRUE, "");
   RollerCheckOption(ctx->comm, "-obstacle_depth", ctx->obstacle.depth, ctx->obstacle.depth >= 0, ">= 0 (and < r_outer - r_inner)");
   RollerCheckOption(ctx->comm, "-friction_static", ctx->obstacle.friction_static, PETSC_TRUE, "");
@@ -84,7 +102,17 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   RollerCheckOption(ctx->comm, "-friction_decay", ctx->obstacle.friction_decay, ctx->obstacle.friction_decay >= 0, ">= 0 (0: no velocity weakening)");
   PetscCheck(ctx->obstacle.friction_static == ctx->obstacle.friction || ctx->obstacle.friction_decay > 0, ctx->comm, PETSC_ERR_ARG_INCOMP, "-friction_static %g differs from -friction %g: give the slip speed of the weakening, -friction_decay v_c > 0",
              (double)ctx->obstacle.friction_static, (double)ctx->obstacle.friction);
+  if (given[3]) {     /* the table is the whole law mu(v): friction its end mu_n, friction_static its mu_1 (docs/friction.md section 1) */
+    const char *text; /* all of it: the block's buffer holds its start (for -help) */
+
+    PetscCall(PetscOptionsFindPair(NULL, NULL, "-friction_table", &text, NULL));
+    PetscCall(RollerFrictionTableSetUp(ctx->comm, text ? text : "", &ctx->obstacle.table));
+    ctx->obstacle.friction        = ctx->obstacle.table.mu[ctx->obstacle.table.n - 1];
+    ctx->obstacle.friction_static = ctx->obstacle.table.mu[0];
+    ctx->obstacle.friction_decay  = 0;
+  }
   PetscCall(RollerMassSetFromOptions(ctx));
+  PetscCall(RollerAxleSetFromOptions(ctx));
 
   PetscCall(RollerTimeStepSetFromOptions(ctx));
   PetscCall(RollerInitialSetFromOptions(ctx));
@@ -109,16 +137,19 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
      so that a contact scene's YAML runs with -obstacle false -modes unchanged (jobs/printer_roller.yaml); given on
      the command line they are refused there too. */
   if (!ctx->obstacle.on) {
-    const char *names[]  = {"-friction", "-sheet_speed", "-friction_static", "-friction_decay"};
-    PetscReal   values[] = {ctx->obstacle.friction, ctx->obstacle.sheet_speed, ctx->obstacle.friction_static, ctx->obstacle.friction_decay};
+    const char *names[]  = {"-friction", "-sheet_speed", "-friction_static", "-friction_decay", "-friction_table"};
+    PetscReal   values[] = {ctx->obstacle.friction, ctx->obstacle.sheet_speed, ctx->obstacle.friction_static, ctx->obstacle.friction_decay, (PetscReal)ctx->obstacle.table.n};
 
-    for (PetscInt i = 0; i < 4; ++i) {
+    for (PetscInt i = 0; i < 5; ++i) {
+      char      value[PETSC_MAX_PATH_LEN + 2];
       PetscBool cli;
 
-      if (values[i] == 0 || (i == 2 && values[2] == values[0])) continue; /* mu_s defaults to mu */
+      if (values[i] == 0 || (i == 2 && values[2] == values[0]) || (ctx->obstacle.table.n && i != 1 && i != 4)) continue; /* mu_s defaults to mu; a table's ends */
+      if (i == 4) PetscCall(PetscSNPrintf(value, sizeof(value), "'%s'", table));
+      else PetscCall(PetscSNPrintf(value, sizeof(value), "%.6g", (double)values[i]));
       PetscCall(RollerOptionNameGivenOnCommandLine(names[i], &cli));
-      PetscCheck(ctx->eig.on && !cli, ctx->comm, PETSC_ERR_ARG_INCOMP, "%s %.6g needs -obstacle (the sheet)%s", names[i], (double)values[i], ctx->eig.on ? ": -modes without -obstacle are the free roller's" : "");
-      PetscCall(PetscFPrintf(ctx->comm, PETSC_STDERR, "Warning: %s %.6g, set by an options file, is not used by -modes without -obstacle\n", names[i], (double)values[i]));
+      PetscCheck(ctx->eig.on && !cli, ctx->comm, PETSC_ERR_ARG_INCOMP, "%s %s needs -obstacle (the sheet)%s", names[i], value, ctx->eig.on ? ": -modes without -obstacle are the free roller's" : "");
+      PetscCall(PetscFPrintf(ctx->comm, PETSC_STDERR, "Warning: %s %s, set by an options file, is not used by -modes without -obstacle\n", names[i], value));
     }
   }
   PetscCheck(ctx->obstacle.depth >= 0 && ctx->obstacle.depth < ctx->mesh.r_outer - ctx->mesh.r_inner, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-obstacle_depth %g must lie in [0, r_outer - r_inner = %g)", (double)ctx->obstacle.depth,
@@ -135,6 +166,14 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
   PetscCheck(!(ctx->eig.on && (ctx->rotation.a != 0 || ctx->ck.restart[0] || ctx->disc.static_solve)), ctx->comm, PETSC_ERR_ARG_INCOMP, "-modes linearizes about steady rotation: it takes no -theta_a, -restart or -static");
   PetscCheck(!(ctx->init.mms != ROLLER_MMS_NONE && ctx->material.rubber == ROLLER_RUBBER_MAXWELL), ctx->comm, PETSC_ERR_ARG_INCOMP, "-mms %s: the manufactured solutions' loads are those of the elastic or Kelvin-Voigt solid, not of -rubber maxwell",
              RollerMMSTypes[ctx->init.mms]);
+  PetscCheck(!(ctx->eig.on && ctx->obstacle.sheet_mass > 0), ctx->comm, PETSC_ERR_SUP, "-sheet_mass with -modes: the steady state takes the sheet's speed -sheet_speed (the force balance of a moving sheet is the transient's)");
+  if (ctx->axle.on) { /* what the hub's elimination (model/axle.h) carries */
+    PetscCheck(!ctx->eig.on, ctx->comm, PETSC_ERR_SUP, "-axle with -modes: the steady state and the eigenproblem with the hub's unknowns are not built yet (docs/squeal.md section 10)");
+    PetscCheck(!ctx->disc.static_solve && ctx->init.mms == ROLLER_MMS_NONE, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes no -static or -mms");
+    PetscCheck(ctx->disc.coriolis != ROLLER_CORIOLIS_CENTERED, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes -coriolis_velocity backward or extrapolated, not centered");
+    PetscCheck(ctx->disc.contact_mass == ROLLER_CONTACT_MASS_CONSISTENT, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes the consistent mass (-contact_mass consistent), not %s", RollerContactMasses[ctx->disc.contact_mass]);
+    PetscCheck(!ctx->disc.clamp_outer, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle cannot be combined with -clamp_outer");
+  }
   if (ctx->disc.static_solve) { /* one step from rest to t = max_time with A = K: the right-hand side is 0 */
     ctx->ts.dt        = ctx->ts.max_time;
     ctx->ts.dt_set    = PETSC_TRUE; /* not the accurate default's dt */

@@ -13,6 +13,7 @@ PetscErrorCode RollerSetUp(Roller ctx)
   PetscCall(RollerGeometrySetUp(ctx));
   PetscCall(RollerDiscretizationSetUp(ctx));
   PetscCall(RollerOperatorsSetUp(ctx));
+  PetscCall(RollerAxleSetUp(ctx));
   PetscCall(RollerComputeBoundaryFunctionals(ctx));
   if (!ctx->eig.on) PetscCall(RollerCheckRotation(ctx)); /* the time step's limit; -modes maps past the critical speeds */
   PetscCall(RollerInitialState(ctx));
@@ -24,9 +25,10 @@ PetscErrorCode RollerSetUp(Roller ctx)
     PetscCall(PetscOptionsHasHelp(NULL, &help));
     if (help) PetscCall(RollerContactHelp(ctx)); /* -help lists every option, the contact ones too */
   }
-  if (!ctx->eig.on) { /* the step matrices (the contact's condensation with them), and what the scheme keeps */
+  if (!ctx->eig.on) { /* the step matrices (the contact's condensation with them), and what the scheme and the components keep */
     PetscCall(RollerSchemeSetUp(ctx));
-    if (ctx->ck.restart[0]) PetscCall(RollerCheckpointReadKept(ctx, ctx->ck.restart));
+    PetscCall(RollerCheckpointRegister(ctx));
+    if (ctx->ck.restart[0]) PetscCall(RollerCheckpointReadItems(ctx, ctx->ck.restart));
   }
   /* The observers, in the order they see every state: the console lines, the outputs (CSV, fields), the
      periodic checkpoint (after the outputs: a restart continues after the CSV row of its step), the MMS errors */
@@ -68,7 +70,9 @@ PetscErrorCode RollerDestroy(Roller *roller)
   PetscCall(PetscViewerDestroy(&ctx->init.mms_view));
   PetscCall(RollerContactDestroy(&ctx->contact));
   PetscCall(RollerModesDestroy(ctx));
+  PetscCall(RollerFrictionTableDestroy(&ctx->obstacle.table));
   PetscCall(RollerSchemesDestroy(ctx));
+  PetscCall(RollerAxleDestroy(ctx));
   PetscCall(MatDestroy(&ctx->ops.M));
   PetscCall(MatDestroy(&ctx->ops.K));
   PetscCall(MatDestroy(&ctx->ops.Kd));

@@ -1,7 +1,7 @@
 /* The obstacle QP of one step (docs/model.md section 2): the contact context's life (options, create,
-   destroy) and the dispatch of a step: its candidate set, the solver of -contact_solver through its ops, and the
-   one re-solve loop that makes every solver's answer free of penetration. Which solvers exist is the
-   registry's business (contact_registry.c); nothing here names one. */
+   destroy) and the dispatch of a step: its candidate set and the solver of -contact_solver with the re-solve loop
+   that makes its answer free of penetration (RollerContactSolveWith, contact_registry.c). Which solvers exist is the
+   registry's business; nothing here names one. */
 #include "contact_impl.h"
 
 /* The bool values -contact_monitor took before it was a viewer (-contact_monitor false/0/no/off, true/1/...). */
@@ -99,6 +99,12 @@ static PetscErrorCode ContactSetFromOptions(Roller ctx, RollerContact c, char mo
     }
     SETERRQ(ctx->comm, PETSC_ERR_USER_INPUT, "-contact_solver %s: no such solver; allowed:%s", c->opt.solver, names);
   }
+  {
+    PetscBool match;
+
+    PetscCall(PetscStrcmp(c->opt.solver, "condensed", &match));
+    PetscCheck(!ctx->axle.on || (match && !c->opt.check), ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes -contact_solver condensed (the hub's unknowns are eliminated in its Schur complement), not %s%s", c->opt.solver, c->opt.check ? " or -contact_check" : "");
+  }
   PetscFunctionReturn(0);
 }
 
@@ -149,34 +155,9 @@ PetscErrorCode RollerContactCreate(Roller ctx, RollerContact *contact)
   /* the step's solver is set up by RollerContactPrepare, in the set-up stage, when the scheme has made its step
      matrices; -contact_check's others when first used */
   if (ctx->obstacle.friction > 0) PetscCall(RollerContactFrictionCreate(ctx, c)); /* none at -friction 0 */
+  PetscCall(RollerContactSheetSetUp(ctx, c));
   PetscCall(PetscInfo(NULL, "Contact: %" PetscInt_FMT " Gamma_C nodes (%" PetscInt_FMT " on this rank), solver %s\n", nc, c->nodes.nown, c->solver->name));
   *contact = c;
-  PetscFunctionReturn(0);
-}
-
-/* Solve with one solver on the step's candidate set; then check ALL Gamma_C nodes, add every non-candidate
-   that penetrates, re-solve. res->its sums the iterations of all passes. */
-PetscErrorCode RollerContactSolveWith(Roller ctx, RollerContact c, RollerContactSolver s, Vec b, Vec xi, RollerContactResult *res)
-{
-  PetscInt its = 0;
-
-  PetscFunctionBeginUser;
-  PetscCall(RollerContactSolverSetUp(s, ctx, c));
-  for (PetscInt pass = 0;; ++pass) {
-    PetscInt  added;
-    PetscReal gap_min;
-
-    PetscCall((*s->ops->solve)(s, ctx, c, b, xi, res));
-    its += res->its;
-    PetscCall(RollerContactGather(c, xi, c->nodes.red));
-    PetscCall(RollerContactGaps(c, c->nodes.red, c->step.gap, &gap_min));
-    PetscCall(RollerContactAddPenetrating(ctx, c, &added));
-    if (!added) break;
-    c->step.resolves++;
-    PetscCall(PetscInfo(NULL, "Contact %s: %" PetscInt_FMT " nodes outside the candidate set penetrate (gap %g), re-solving with %" PetscInt_FMT " candidates\n", s->name, added, (double)gap_min, c->step.ncand));
-    PetscCheck(pass < c->opt.max_resolves, ctx->comm, PETSC_ERR_CONV_FAILED, "Contact at t = %g: nodes outside the candidate set still penetrate after %" PetscInt_FMT " re-solves (-contact_max_resolves)", (double)c->step.t, c->opt.max_resolves);
-  }
-  res->its = its;
   PetscFunctionReturn(0);
 }
 
@@ -189,6 +170,16 @@ PetscErrorCode RollerContactSolve(Roller ctx, RollerContact c, const RollerConta
   PetscCall(RollerContactSetUpStep(ctx, c, stage, t));
   PetscCall(VecCopy(b, c->acc.b));
   PetscCall(RollerContactSolveWith(ctx, c, c->solver, b, xi, &c->acc.result));
+  if (RollerContactSheetMoves(c)) { /* the sheet's case (sliding either way, or held): solved again in the one that holds */
+    PetscBool holds;
+
+    PetscCall(RollerContactSheetAccept(ctx, c, c->acc.result.lambda_t, &holds));
+    for (PetscInt k = 0; !holds && k < 2; ++k) {
+      PetscCall(RollerContactSolveWith(ctx, c, c->solver, b, xi, &c->acc.result));
+      PetscCall(RollerContactSheetAccept(ctx, c, c->acc.result.lambda_t, &holds));
+    }
+    PetscCheck(holds, ctx->comm, PETSC_ERR_NOT_CONVERGED, "At t = %g the sheet (-sheet_mass) found no consistent case: sliding forward, held and sliding back all contradict the step's friction", (double)t);
+  }
   c->acc.solved = PETSC_TRUE;
   if (c->opt.check) PetscCall(RollerContactCheckStep(ctx, c, b, xi));
   PetscFunctionReturn(0);

@@ -31,15 +31,20 @@ PETSC_INTERN PetscErrorCode RollerContactInfo(Roller, RollerContact, Vec, Vec, V
 PETSC_INTERN PetscErrorCode RollerContactEnergyAdd(Roller, RollerContact, Vec, PetscReal, PetscReal, RollerStepInfo *);
 PETSC_INTERN PetscErrorCode RollerContactFields(Roller, RollerContact, Vec, Vec, Vec); /* pressure, traction, state: P1 scalar Vecs on the mesh */
 PETSC_INTERN PetscBool      RollerContactHasFriction(RollerContact);
-PETSC_INTERN PetscBool      RollerContactWantsRow(RollerContact);
+/* -sheet_mass (contact_sheet.c): the sheet moves by its own forces; its part of E^k, its speed, its state for the
+   checkpoint (4 reals: X^k, X^{k-1}, X^{k-2} and its case; NULL for the kinematic sheet) */
+PETSC_INTERN PetscBool  RollerContactSheetMoves(RollerContact);
+PETSC_INTERN PetscReal  RollerContactSheetEnergy(Roller, RollerContact);
+PETSC_INTERN PetscReal  RollerContactSheetSpeed(Roller, RollerContact);
+PETSC_INTERN PetscReal *RollerContactSheetState(RollerContact);
+PETSC_INTERN PetscBool  RollerContactWantsRow(RollerContact);
 /* Dense pieces the steady state of -modes (modes/steady*.c) shares with the step's contact solvers:
    contact_lemke.c: the LCP w = M z + q >= 0, z >= 0, z . w = 0 (M n x n column-major) by Lemke's method;
    *solved false on a secondary ray (no solution found);
-   contact_lcp.c: y = G_FF^-1 r on an index set F of a column-major G (m, F, nf, spd: Cholesky else LU, scratch, r, y);
-   contact_friction.c: mu(|v|) = mu + (mu_s - mu) exp(-|v| / v_c) (mu, mu_s, v_c, v; its derivative in |v|, or NULL). */
+   contact_lcp.c: y = G_FF^-1 r on an index set F of a column-major G (m, F, nf, spd: Cholesky else LU, scratch, r, y).
+   (The friction law mu(v) they share is the friction layer's, friction/friction.h.) */
 PETSC_INTERN PetscErrorCode RollerContactLemke(PetscInt, const PetscReal[], const PetscReal[], PetscReal[], PetscInt *, PetscBool *);
 PETSC_INTERN PetscErrorCode RollerContactDenseSolve(const PetscReal[], PetscInt, const PetscInt[], PetscInt, PetscBool, PetscReal[], PetscReal[], PetscReal[]);
-PETSC_INTERN PetscReal      RollerFrictionLaw(PetscReal, PetscReal, PetscReal, PetscReal, PetscReal *);
 PETSC_INTERN PetscErrorCode RollerContactDestroy(RollerContact *);
 
 /* The registry of the per-step QP solvers (-contact_solver NAME, contact_registry.c): a solver is made by

@@ -21,6 +21,7 @@ typedef struct {
   PetscReal *S;
   PetscBool *have;
   PetscInt   nhave;
+  PetscReal *Yg; /* -axle: the Gamma_C rows of the operator's border Y (S_eff = S + Yg W Yg^T, contact_impl.h) */
 } CondensedS;
 
 typedef struct {
@@ -208,8 +209,20 @@ static PetscErrorCode CondensedPrepare(RollerContactSolver s, Roller ctx, Roller
 
   PetscFunctionBeginUser;
   PetscCall(CondensedGetS(c, cd, op, &cs));
+  if (op->border && !cs->Yg) { /* the hub's rows of S_eff (-axle) */
+    const PetscInt     n = 2 * c->nodes.nc;
+    const PetscScalar *y;
+
+    PetscCall(PetscMalloc1(3 * n, &cs->Yg));
+    for (PetscInt k = 0; k < 3; ++k) {
+      PetscCall(RollerContactGather(c, op->border->Y[k], c->nodes.red));
+      PetscCall(VecGetArrayRead(c->nodes.red, &y));
+      for (PetscInt i = 0; i < n; ++i) cs->Yg[k * n + i] = PetscRealPart(y[i]);
+      PetscCall(VecRestoreArrayRead(c->nodes.red, &y));
+    }
+  }
   for (PetscInt i = 0; i < c->nodes.nc; ++i) {
-    const PetscBool turns = (PetscBool)(ctx->rotation.omega != 0 || ctx->rotation.a != 0);
+    const PetscBool turns = (PetscBool)(ctx->rotation.omega != 0 || ctx->rotation.a != 0 || ctx->axle.on); /* -axle: the hub moves down by a depth not known before */
 
     /* at rest the obstacle's line stays at height g = depth - r_C along e2: the nodes with x_2 <= -r_C + depth */
     if (!cs->have[i] && (turns || c->nodes.xc[2 * i + 1] <= -ctx->mesh.r_outer + depth)) cd->need[m++] = i;
@@ -254,6 +267,7 @@ static PetscErrorCode CondensedSolve(RollerContactSolver s, Roller ctx, RollerCo
 
   PetscFunctionBeginUser;
   PetscCall(CondensedGetS(c, cd, c->step.op, &cs));
+  c->step.Yg = cs->Yg;
   for (PetscInt a = 0; a < m; ++a)
     if (!cs->have[cand[a]]) cd->need[nneed++] = cand[a];
   PetscCall(CondensedColumns(ctx, c, c->step.op, cs, cd->need, nneed));
@@ -262,7 +276,7 @@ static PetscErrorCode CondensedSolve(RollerContactSolver s, Roller ctx, RollerCo
     lcp->d[a]   = cd->gf[cand[a]];
     lcp->act[a] = c->step.on_obstacle[cand[a]];
     dmax        = PetscMax(dmax, PetscAbsReal(lcp->d[a]));
-    for (PetscInt b2 = 0; b2 <= a; ++b2) lcp->G[a + (size_t)b2 * m] = lcp->G[b2 + (size_t)a * m] = NormalEntry(cs->S, n, c->step.normal, cand[a], cand[b2]);
+    for (PetscInt b2 = 0; b2 <= a; ++b2) lcp->G[a + (size_t)b2 * m] = lcp->G[b2 + (size_t)a * m] = NormalEntry(cs->S, n, c->step.normal, cand[a], cand[b2]) + RollerContactBorderEntry(&c->step, c->step.normal, c->step.normal, cand[a], cand[b2], n);
   }
   res->its = 0;
   /* TAO: the gradient G lam + d is a gap (a length): converge it far below the gaps of the free solution */
@@ -291,7 +305,10 @@ static PetscErrorCode CondensedDestroy(RollerContactSolver s)
   Condensed *cd = (Condensed *)s->data;
 
   PetscFunctionBeginUser;
-  for (PetscInt k = 0; k < CONDENSED_MAX_OPERATORS; ++k) PetscCall(PetscFree2(cd->s[k].S, cd->s[k].have));
+  for (PetscInt k = 0; k < CONDENSED_MAX_OPERATORS; ++k) {
+    PetscCall(PetscFree2(cd->s[k].S, cd->s[k].have));
+    PetscCall(PetscFree(cd->s[k].Yg));
+  }
   if (s->setupcalled) {
     PetscCall(PetscFree2(cd->gf, cd->need));
     PetscCall(RollerContactLCPDestroy(&cd->lcp));

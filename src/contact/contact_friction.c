@@ -5,7 +5,7 @@
    With the normal forces fixed (Tresca) the step is min J^k(xi) + sum_n g_n |Delta s_n(xi)| under the obstacle
    bound; condensed on the candidates (contact_condensed.c) its dual is the box QP of contact_boxqp.c in
    x = (lambda_N, lambda_T): G = B^T S B, d = (gaps, slips of the free solution), lambda_N >= 0,
-   |lambda_T| <= g. Coulomb is solved first directly by the semismooth Newton method (contact_coulomb.c), with
+   |lambda_T| <= g. Coulomb is solved first directly by the semismooth Newton method (friction/coulomb.c), with
    the velocity weakening mu(v) (v = |Delta s|/(2 dt) the slip speed) inside it, its first iterate at mu of the last
    step's slip speeds; where that fails, with mu frozen per Newton solve and iterated about them (Anderson's
    acceleration, contact_anderson.c). Without weakening, if Newton fails: the fixed point g = mu lambda_N of Tresca
@@ -16,19 +16,9 @@
    CSV's coulomb_fallback (1 Tresca passes, 2 Lemke, 3 mu of the last step), one line at the end of the run. */
 #include "contact_impl.h"
 
-/* mu(|v|) = mu + (mu_s - mu) exp(-|v| / v_c), constant mu without -friction_decay (v_c = 0); *dmu its derivative
-   in |v| (if dmu) */
-PetscReal RollerFrictionLaw(PetscReal mu, PetscReal mu_s, PetscReal v_c, PetscReal v, PetscReal *dmu)
-{
-  const PetscReal e = v_c > 0 ? PetscExpReal(-PetscAbsReal(v) / v_c) : 0.0;
-
-  if (dmu) *dmu = v_c > 0 ? -(mu_s - mu) / v_c * e : 0.0;
-  return mu + (mu_s - mu) * e;
-}
-
 static PetscReal FrictionCoefficient(RollerContactFriction fr, PetscReal v)
 {
-  return RollerFrictionLaw(fr->mu, fr->mu_s, fr->v_c, v, NULL);
+  return RollerFrictionMu(fr->law, v, NULL);
 }
 
 PetscErrorCode RollerContactFrictionCreate(Roller ctx, RollerContact c)
@@ -39,12 +29,13 @@ PetscErrorCode RollerContactFrictionCreate(Roller ctx, RollerContact c)
 
   PetscFunctionBeginUser;
   PetscCall(PetscStrcmp(c->solver->name, "condensed", &condensed));
-  PetscCheck(condensed, ctx->comm, PETSC_ERR_ARG_INCOMP, "-friction %g needs -contact_solver condensed (given: %s); its Tresca QP solver is -contact_friction_qp activeset, tao, vi or lemke", (double)ctx->obstacle.friction, c->solver->name);
+  PetscCheck(condensed, ctx->comm, PETSC_ERR_ARG_INCOMP, "%s %g needs -contact_solver condensed (given: %s); its Tresca QP solver is -contact_friction_qp activeset, tao, vi or lemke", ctx->obstacle.table.n ? "-friction_table, mu at its end" : "-friction",
+             (double)ctx->obstacle.friction, c->solver->name);
   PetscCheck(!c->opt.check, ctx->comm, PETSC_ERR_ARG_INCOMP, "-contact_check compares the frictionless solvers; with -friction compare runs with -contact_friction_qp activeset, tao, vi and lemke");
   PetscCall(PetscNew(&fr));
-  fr->mu   = ctx->obstacle.friction;
-  fr->mu_s = ctx->obstacle.friction_static;
-  fr->v_c  = ctx->obstacle.friction_decay;
+  fr->law    = &ctx->obstacle;
+  fr->varies = RollerFrictionVaries(fr->law);
+  RollerFrictionRange(fr->law, fr->range);
   PetscCall(RollerContactBoxQPCreate(2 * nc, &fr->box));
   PetscCall(PetscMalloc7(2 * nc, &fr->state, nc, &fr->lam_n, nc, &fr->mu_n, 2 * nc, &fr->x, nc, &fr->node_state, 2 * nc, &fr->g, 2 * nc, &fr->y));
   PetscCall(RollerContactAndersonCreate(2 * nc, 5, &fr->aa));
@@ -152,11 +143,12 @@ static PetscErrorCode FrictionData(Roller ctx, RollerContact c, const PetscReal 
   const PetscInt        m = c->step.ncand, m2 = 2 * m, n = 2 * c->nodes.nc, *cand = c->step.cand;
   const PetscReal      *nr = c->step.normal, *tg = c->step.tangent, *xc = c->nodes.xc;
   const PetscScalar    *uf, *u2;
-  PetscReal             t2[2], dX;
+  PetscReal             t2[2], dX, compliance = 0.0;
 
   PetscFunctionBeginUser;
   SlipFrame(ctx, c->step.t, t2, &dX);
-  PetscCall(RollerContactGather(c, ctx->state.prev, c->nodes.red2)); /* xi^{k-2} */
+  if (RollerContactSheetMoves(c)) RollerContactSheetFree(ctx, c, &dX, &compliance); /* the sheet's own motion */
+  PetscCall(RollerContactGather(c, ctx->state.prev, c->nodes.red2));                /* xi^{k-2} */
   PetscCall(VecGetArrayRead(c->nodes.red, &uf));
   PetscCall(VecGetArrayRead(c->nodes.red2, &u2));
   for (PetscInt a = 0; a < m; ++a) {
@@ -167,10 +159,10 @@ static PetscErrorCode FrictionData(Roller ctx, RollerContact c, const PetscReal 
     for (PetscInt b = 0; b < m; ++b) {
       const PetscInt j = cand[b];
 
-      fr->box.G[a + (size_t)b * m2]           = Entry(S, n, nr, nr, i, j);
-      fr->box.G[a + (size_t)(m + b) * m2]     = Entry(S, n, nr, tg, i, j);
-      fr->box.G[m + a + (size_t)b * m2]       = Entry(S, n, tg, nr, i, j);
-      fr->box.G[m + a + (size_t)(m + b) * m2] = Entry(S, n, tg, tg, i, j);
+      fr->box.G[a + (size_t)b * m2]           = Entry(S, n, nr, nr, i, j) + RollerContactBorderEntry(&c->step, nr, nr, i, j, n);
+      fr->box.G[a + (size_t)(m + b) * m2]     = Entry(S, n, nr, tg, i, j) + RollerContactBorderEntry(&c->step, nr, tg, i, j, n);
+      fr->box.G[m + a + (size_t)b * m2]       = Entry(S, n, tg, nr, i, j) + RollerContactBorderEntry(&c->step, tg, nr, i, j, n);
+      fr->box.G[m + a + (size_t)(m + b) * m2] = Entry(S, n, tg, tg, i, j) + RollerContactBorderEntry(&c->step, tg, tg, i, j, n) + compliance;
     }
   }
   PetscCall(VecRestoreArrayRead(c->nodes.red, &uf));
@@ -182,8 +174,7 @@ static PetscErrorCode FrictionData(Roller ctx, RollerContact c, const PetscReal 
    Newton method, else by one Lemke solve (fallback 3). */
 static PetscErrorCode LaggedSolve(Roller ctx, RollerContact c, PetscInt m, const PetscReal lam[])
 {
-  RollerContactFriction fr        = c->friction;
-  const PetscReal       frozen[4] = {fr->mu, fr->mu_s, 0.0, 2.0 * ctx->ts.dt};
+  RollerContactFriction fr = c->friction;
   PetscInt              its;
   PetscBool             converged;
 
@@ -193,7 +184,7 @@ static PetscErrorCode LaggedSolve(Roller ctx, RollerContact c, PetscInt m, const
   fr->fallback = 3;
   PetscCall(RollerContactFrictionLaggedMu(ctx, c, m));
   RollerContactFrictionStart(m, lam, fr->x);
-  PetscCall(RollerContactCoulombNewton(&fr->box, m, frozen, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
+  PetscCall(RollerFrictionCoulombNewton(m, fr->box.G, fr->box.d, NULL, 2.0 * ctx->ts.dt, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
   fr->its += its;
   if (!converged) PetscCall(CoulombLemke(fr, m, c->step.t, fr->x));
   PetscFunctionReturn(0);
@@ -231,7 +222,7 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
 
     PetscCall(RollerContactFrictionNewton(ctx, c, m, &done));
     if (done) goto accept;
-    if (fr->v_c > 0.0) { /* the fixed point on mu(v) failed inside Newton: the passes would meet the same map */
+    if (fr->varies) { /* the fixed point on mu(v) failed inside Newton: the passes would meet the same map */
       PetscCall(LaggedSolve(ctx, c, m, lcp->lam));
       goto accept;
     }
@@ -255,7 +246,7 @@ PetscErrorCode RollerContactFrictionSolve(Roller ctx, RollerContact c, const Pet
     res->its += its;
     RollerContactFrictionUpdate(fr, m, dt, &change, &lmax, &dmu);
     PetscCall(PetscInfo(NULL, "Friction at t = %g: iterate %" PetscInt_FMT " (%" PetscInt_FMT " QP its): change of lambda_N %g of %g, of mu %g\n", (double)t, it, its, (double)change, (double)lmax, (double)dmu));
-    if (change <= c->opt.friction_rtol * lmax && dmu <= c->opt.friction_rtol * fr->mu_s) {
+    if (change <= c->opt.friction_rtol * lmax && dmu <= c->opt.friction_rtol * fr->range[1]) {
       PetscCall(PetscArraycpy(fr->lam_n, fr->x, m));
       PetscCall(PetscArraycpy(fr->mu_n, fr->g + m, m));
       break;
@@ -316,6 +307,10 @@ PetscErrorCode RollerContactFrictionInfo(Roller ctx, RollerContact c, const Pets
   f->iterations      = fr->its;
   f->fallback        = fr->fallback;
   SlipFrame(ctx, t, t2, &dX);
+  if (RollerContactSheetMoves(c)) { /* the sheet's own advance X^k - X^{k-2}: internal, the resistance dissipates */
+    dX = c->sheet.X[0] - c->sheet.X[2];
+    f->dissipation += c->sheet.dissipation;
+  }
   { /* the drive's own motion of the contact nodes over the step: the scale of a sticking node's slip */
     PetscReal th0, th2;
 
@@ -334,7 +329,7 @@ PetscErrorCode RollerContactFrictionInfo(Roller ctx, RollerContact c, const Pets
     if (lambda[i] > 0.0) sscale = PetscMax(sscale, PetscMax(PetscAbsReal(motion), PetscAbsReal(slip[i])));
     f->force += lt[i];
     f->dissipation -= 0.5 * lt[i] * slip[i];
-    f->sheet_step += 0.5 * lt[i] * dX;
+    if (!RollerContactSheetMoves(c)) f->sheet_step += 0.5 * lt[i] * dX;
     f->shaft_step -= 0.5 * lt[i] * ((tg[0] - t2[0]) * p2[0] + (tg[1] - t2[1]) * p2[1]);
   }
   for (PetscInt i = 0; i < c->nodes.nc; ++i) {

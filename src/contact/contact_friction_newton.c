@@ -13,7 +13,7 @@ void RollerContactFrictionUpdate(RollerContactFriction fr, PetscInt m, PetscReal
   *change = *lmax = *dmu = 0.0;
   for (PetscInt a = 0; a < m; ++a) {
     fr->g[a]     = fr->x[a];
-    fr->g[m + a] = RollerFrictionLaw(fr->mu, fr->mu_s, fr->v_c, PetscAbsReal(fr->box.w[m + a]) / (2.0 * dt), NULL);
+    fr->g[m + a] = RollerFrictionMu(fr->law, PetscAbsReal(fr->box.w[m + a]) / (2.0 * dt), NULL);
     *change      = PetscMax(*change, PetscAbsReal(fr->x[a] - fr->lam_n[a]));
     *lmax        = PetscMax(*lmax, fr->x[a]);
     *dmu         = PetscMax(*dmu, PetscAbsReal(fr->g[m + a] - fr->mu_n[a]));
@@ -24,7 +24,7 @@ void RollerContactFrictionUpdate(RollerContactFriction fr, PetscInt m, PetscReal
    Tresca steps: with_lambda) or of mu alone (about Coulomb solves); lambda_N >= 0 and mu within the law's range. */
 PetscErrorCode RollerContactFrictionNext(RollerContactFriction fr, PetscInt m, PetscBool with_lambda)
 {
-  const PetscReal lo = PetscMin(fr->mu, fr->mu_s), hi = PetscMax(fr->mu, fr->mu_s);
+  const PetscReal lo = fr->range[0], hi = fr->range[1];
   const PetscInt  o = with_lambda ? m : 0;
 
   PetscFunctionBeginUser;
@@ -53,7 +53,7 @@ PetscErrorCode RollerContactFrictionLaggedMu(Roller ctx, RollerContact c, PetscI
   PetscFunctionBeginUser;
   RollerContactSheetTangent(ctx, t - dt, t1);
   RollerContactSheetTangent(ctx, t - 2.0 * dt, t2);
-  dX = RollerSheetPosition(ctx, t - dt) - RollerSheetPosition(ctx, t - 2.0 * dt);
+  dX = RollerContactSheetMoves(c) ? c->sheet.X[0] - c->sheet.X[1] : RollerSheetPosition(ctx, t - dt) - RollerSheetPosition(ctx, t - 2.0 * dt);
   PetscCall(RollerContactGather(c, ctx->state.cur, c->nodes.red1));
   PetscCall(VecGetArrayRead(c->nodes.red1, &u1));
   PetscCall(VecGetArrayRead(c->nodes.red2, &u2));
@@ -61,22 +61,22 @@ PetscErrorCode RollerContactFrictionLaggedMu(Roller ctx, RollerContact c, PetscI
     const PetscInt  i  = c->step.cand[a];
     const PetscReal s1 = RollerContactAlong(xc, u1, i, t1) - RollerContactAlong(xc, u2, i, t2) - dX;
 
-    fr->mu_n[a] = RollerFrictionLaw(fr->mu, fr->mu_s, fr->v_c, PetscAbsReal(s1) / dt, NULL);
+    fr->mu_n[a] = RollerFrictionMu(fr->law, PetscAbsReal(s1) / dt, NULL);
   }
   PetscCall(VecRestoreArrayRead(c->nodes.red1, &u1));
   PetscCall(VecRestoreArrayRead(c->nodes.red2, &u2));
   PetscFunctionReturn(0);
 }
 
-/* Coulomb by the semismooth Newton method (contact_coulomb.c) from the frictionless multipliers, with mu(v) of the
+/* Coulomb by the semismooth Newton method (friction/coulomb.c) from the frictionless multipliers, with mu(v) of the
    velocity weakening linearized inside it. Where that fails (the weakening's slope makes the iteration stall at
    a small slip: docs/friction.md section 3), mu is frozen in each Newton solve and iterated about them, accelerated
    (RollerContactFrictionNext). *done false if both fail (fr->x, lam_n, mu_n are then reset for the fixed point). */
 PetscErrorCode RollerContactFrictionNewton(Roller ctx, RollerContact c, PetscInt m, PetscBool *done)
 {
-  RollerContactFriction fr     = c->friction;
-  const PetscReal       law[4] = {fr->mu, fr->mu_s, fr->v_c, 2.0 * ctx->ts.dt}, frozen[4] = {fr->mu, fr->mu_s, 0.0, 2.0 * ctx->ts.dt};
-  const PetscReal       tol = c->opt.friction_rtol * fr->mu_s;
+  RollerContactFriction fr  = c->friction;
+  const RollerObstacle *law = fr->varies ? fr->law : NULL; /* mu(v) inside Newton, else mu as given */
+  const PetscReal       tol = c->opt.friction_rtol * fr->range[1], two_dt = 2.0 * ctx->ts.dt;
   PetscReal             change, lmax, dmu;
   PetscInt              its;
   PetscBool             converged;
@@ -84,8 +84,8 @@ PetscErrorCode RollerContactFrictionNewton(Roller ctx, RollerContact c, PetscInt
   PetscFunctionBeginUser;
   *done = PETSC_FALSE;
   RollerContactFrictionStart(m, fr->lam_n, fr->x);
-  if (fr->v_c > 0.0) PetscCall(RollerContactFrictionLaggedMu(ctx, c, m)); /* the first iterate's mu: of the last step's slip speeds */
-  PetscCall(RollerContactCoulombNewton(&fr->box, m, law, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
+  if (fr->varies) PetscCall(RollerContactFrictionLaggedMu(ctx, c, m)); /* the first iterate's mu: of the last step's slip speeds */
+  PetscCall(RollerFrictionCoulombNewton(m, fr->box.G, fr->box.d, law, two_dt, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
   fr->its += its;
   if (converged) {
     RollerContactFrictionUpdate(fr, m, ctx->ts.dt, &change, &lmax, &dmu);
@@ -94,13 +94,13 @@ PetscErrorCode RollerContactFrictionNewton(Roller ctx, RollerContact c, PetscInt
       PetscFunctionReturn(0);
     }
   }
-  if (fr->v_c > 0.0) {
+  if (fr->varies) {
     PetscCall(PetscInfo(NULL, "Friction at t = %g: the semismooth Newton method with mu(v) inside failed after %" PetscInt_FMT " iterations; mu frozen per solve, accelerated\n", (double)c->step.t, its));
     RollerContactAndersonReset(&fr->aa, m);
     PetscCall(RollerContactFrictionLaggedMu(ctx, c, m));
     RollerContactFrictionStart(m, fr->lam_n, fr->x);
     for (PetscInt pass = 0; pass < c->opt.friction_max_it; ++pass) {
-      PetscCall(RollerContactCoulombNewton(&fr->box, m, frozen, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
+      PetscCall(RollerFrictionCoulombNewton(m, fr->box.G, fr->box.d, NULL, two_dt, fr->mu_n, fr->x, 4 * m + 20, &its, &converged));
       fr->its += its;
       if (!converged) break;
       RollerContactFrictionUpdate(fr, m, ctx->ts.dt, &change, &lmax, &dmu);
@@ -115,6 +115,6 @@ PetscErrorCode RollerContactFrictionNewton(Roller ctx, RollerContact c, PetscInt
   PetscCall(PetscInfo(NULL, "Friction at t = %g: the semismooth Newton method failed after %" PetscInt_FMT " iterations; fixed point of Tresca steps\n", (double)c->step.t, fr->its));
   fr->count.newton_failures++;
   fr->fallback = 1;
-  for (PetscInt a = 0; a < m; ++a) fr->mu_n[a] = RollerFrictionLaw(fr->mu, fr->mu_s, fr->v_c, 0.0, NULL);
+  for (PetscInt a = 0; a < m; ++a) fr->mu_n[a] = RollerFrictionMu(fr->law, 0.0, NULL);
   PetscFunctionReturn(0);
 }

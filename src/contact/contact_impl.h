@@ -2,21 +2,27 @@
 
      min 1/2 xi^T A xi - b^T xi   s.t.  (x_n + xi_n) . n^k >= g^k  at every Lagrange node x_n of Gamma_C
 
+   No circle of calls between these files (tests/architecture.py).
    The core (no file of it names a solver):
-   contact.c             create, options, destroy; the dispatch of a step and its re-solve loop
-   contact_nodes.c       the Gamma_C nodes (gathered redundantly on every rank, in angle order), gaps, force
-   contact_candidates.c  the step's basis and bounds, the candidate set, the penetrating nodes it gains
+   contact.c             create, options, destroy; the dispatch of a step
    contact_report.c      KKT residual, -contact_check, -contact_monitor, the CSV's contact columns
    contact_pressure.c    the contact pressure and friction traction output fields
-   Friction (only with -friction > 0; docs/friction.md), a part of the condensed solver:
-   contact_friction.c    the Coulomb law, the slip, the fixed point of Tresca steps, the law's residual
+   contact_energy.c      the contact terms of the energy balance, flips and reversals
+   contact_candidates.c  the step's basis and bounds, the candidate set, the penetrating nodes it gains
+   contact_nodes.c       the Gamma_C nodes (gathered redundantly on every rank, in angle order), gaps, force
+   Friction (only with -friction > 0; docs/friction.md), a part of the condensed solver; the law mu(v) and Coulomb's
+   law on dense data by the semismooth Newton method are the friction layer's (friction/law.c, friction/coulomb.c),
+   which calls nothing here. Contact calls the friction files (create, solve, info, state); they call back none of
+   contact.c, contact_report.c, contact_condensed.c: only the dense solvers (contact_boxqp.c, contact_lcp.c,
+   contact_lemke.c, contact_anderson.c), the friction layer and the nodes' gather (contact_nodes.c):
+   contact_friction.c    the slips, the Coulomb solve with its Tresca fixed point and fallbacks, the law's residual
    contact_friction_newton.c  Coulomb by the semismooth Newton method with velocity weakening, the fixed points' steps
    contact_boxqp.c       the Tresca step's dual: a small dense box-constrained QP (active set, TAO, SNES VI)
-   contact_coulomb.c     Coulomb directly: the primal-dual active-set (semismooth Newton) method, the default
    contact_lemke.c       Coulomb as one LCP, Lemke's method (the last fallback)
    contact_anderson.c    Anderson acceleration of the friction's fixed points (mu(v), the Tresca steps)
    The registry and the solvers (each file one solver, using the core):
-   contact_registry.c    RollerContactSolverRegister, RegisterAll, the solver object's create/setup/destroy
+   contact_registry.c    RollerContactSolverRegister, RegisterAll, the solver object's create/setup/destroy and
+                         RollerContactSolveWith: a solve with the re-solve loop that makes it free of penetration
    contact_condensed.c   the default: the QP condensed onto the multipliers of the candidates with
                          S = E^T A^{-1} E computed once; its small LCP in contact_lcp.c (active set or TAO)
    contact_primal.c      not a solver: the primal problem in rotated coordinates z = Q^T xi (Q: 2x2 blocks
@@ -30,6 +36,7 @@
 #define ROLLER_CONTACT_IMPL_H
 
 #include "contact/contact.h"
+#include "friction/friction.h"
 
 /* What one solver returns besides the displacement: the multiplier of every Gamma_C node (0 off the
    candidate set) and its iteration count. */
@@ -114,7 +121,24 @@ typedef struct {
   PetscBool                *on_obstacle; /* nc: gap^{k-1}_n <= tol, the nodes on the obstacle at the previous level, from
                              xi^{k-1} (checkpointed state, so a restart takes the same decisions) */
   PetscInt                  resolves;
+  const PetscReal          *Yg; /* -axle: the Gamma_C rows of the step matrix's border Y (3 columns of 2 nc), NULL otherwise */
 } RollerContactStep;
+
+/* -axle: the hub's part of S_eff = E^T A_eff^{-1} E = S + Yg W Yg^T between the components u of node i and v of node j
+   (model/axle.h: the step's W); 0 without the hub. */
+static inline PetscReal RollerContactBorderEntry(const RollerContactStep *st, const PetscReal u[2], const PetscReal v[2], PetscInt i, PetscInt j, PetscInt n)
+{
+  PetscReal a[3], b[3], r = 0.0;
+
+  if (!st->Yg) return 0.0;
+  for (PetscInt k = 0; k < 3; ++k) {
+    a[k] = u[0] * st->Yg[k * n + 2 * i] + u[1] * st->Yg[k * n + 2 * i + 1];
+    b[k] = v[0] * st->Yg[k * n + 2 * j] + v[1] * st->Yg[k * n + 2 * j + 1];
+  }
+  for (PetscInt k = 0; k < 3; ++k)
+    for (PetscInt l = 0; l < 3; ++l) r += a[k] * st->op->border->W[3 * k + l] * b[l];
+  return r;
+}
 
 /* The accepted solution of the step: multipliers and iterations, the right-hand side it solved; work vectors
    of its KKT residual */
@@ -132,8 +156,18 @@ typedef struct {
   PetscInt            steps;
 } RollerContactCheck;
 
+/* The sheet's own motion (-sheet_mass, contact_sheet.c): its mass and resistance per unit width, the levels X^k,
+   X^{k-1}, X^{k-2} after the last step and its case X[3] (1 or -1: sliding along +-e1, 0: held), the resistance's
+   dissipation in the last step. mass 0: the kinematic sheet of -sheet_speed. */
+typedef struct {
+  PetscReal mass, resistance;
+  PetscReal X[4];
+  PetscReal dissipation;
+} RollerContactSheet;
+
 struct _n_RollerContact {
   MPI_Comm              comm;
+  RollerContactSheet    sheet;
   RollerContactOptions  opt;
   RollerContactNodes    nodes;
   RollerContactStep     step;
@@ -145,10 +179,13 @@ struct _n_RollerContact {
   RollerContactFriction friction; /* NULL without friction (-friction 0) */
 };
 
-/* contact.c */
-PETSC_INTERN PetscErrorCode RollerContactSolveWith(Roller, RollerContact, RollerContactSolver, Vec, Vec, RollerContactResult *);
+/* contact_sheet.c (RollerContactSheetMoves, Energy, Speed, State: contact.h) */
+PETSC_INTERN PetscErrorCode RollerContactSheetSetUp(Roller, RollerContact);
+PETSC_INTERN void           RollerContactSheetFree(Roller, RollerContact, PetscReal *, PetscReal *); /* dX without friction, compliance dt^2/m */
+PETSC_INTERN PetscErrorCode RollerContactSheetAccept(Roller, RollerContact, const PetscReal[], PetscBool *);
 
 /* contact_registry.c */
+PETSC_INTERN PetscErrorCode RollerContactSolveWith(Roller, RollerContact, RollerContactSolver, Vec, Vec, RollerContactResult *);
 PETSC_INTERN PetscErrorCode RollerContactSolverCreate(const char[], RollerContactSolver *);
 PETSC_INTERN PetscErrorCode RollerContactSolverSetUp(RollerContactSolver, Roller, RollerContact);
 PETSC_INTERN PetscErrorCode RollerContactSolverDestroy(RollerContactSolver *);
@@ -248,12 +285,11 @@ PETSC_INTERN void           RollerContactAndersonReset(RollerContactAnderson *, 
 PETSC_INTERN PetscErrorCode RollerContactAndersonStep(RollerContactAnderson *, PetscReal[], const PetscReal[]);
 PETSC_INTERN PetscErrorCode RollerContactAndersonDestroy(RollerContactAnderson *);
 
-/* contact_coulomb.c: Coulomb of one step by the primal-dual active-set (semismooth Newton) method */
-PETSC_INTERN PetscErrorCode RollerContactCoulombNewton(RollerContactLCP *, PetscInt, const PetscReal[], PetscReal[], PetscReal[], PetscInt, PetscInt *, PetscBool *);
-
 /* contact_friction.c: the friction part of the condensed solver (created only with -friction > 0) */
 struct _n_RollerContactFriction {
-  PetscReal             mu, mu_s, v_c;
+  const RollerObstacle *law;                      /* mu(v) (friction/law.c) */
+  PetscBool             varies;                   /* mu depends on the slip speed */
+  PetscReal             range[2];                 /* the least and the largest mu(v) */
   RollerContactLCP      box;                      /* the Tresca dual, sized 2 nc */
   PetscInt             *state;                    /* 2 nc: its active bounds, warm start of the next Tresca step */
   PetscReal            *lam_n;                    /* nc: lambda_N of the last iterate */

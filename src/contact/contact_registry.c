@@ -1,7 +1,9 @@
-/* The registry of contact solvers (-contact_solver NAME) and the life of a solver object. A solver is one
-   file with a create function that fills the object's ops and data; RollerContactSolversRegisterAll names
-   the built-in ones, and the dispatch (contact.c) only calls ops, so adding a solver is that file and one
-   line below (docs/contact.md, "Adding a contact solver"). */
+/* The registry of contact solvers (-contact_solver NAME) and the life of a solver object: create, set up, a solve
+   with the re-solve loop that makes its answer free of penetration (RollerContactSolveWith: the step's solve in
+   contact.c, -contact_check's others in contact_report.c), destroy. A solver is one file with a create function
+   that fills the object's ops and data; RollerContactSolversRegisterAll names the built-in ones, and the dispatch
+   (contact.c) only calls ops, so adding a solver is that file and one line below (docs/contact.md, "Adding a
+   contact solver"). */
 #include "contact_impl.h"
 
 PetscFunctionList RollerContactSolverList = NULL;
@@ -64,6 +66,32 @@ PetscErrorCode RollerContactSolverSetUp(RollerContactSolver s, Roller ctx, Rolle
   if (s->setupcalled) PetscFunctionReturn(0);
   if (s->ops->setup) PetscCall((*s->ops->setup)(s, ctx, c));
   s->setupcalled = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
+/* Solve with one solver on the step's candidate set; then check ALL Gamma_C nodes, add every non-candidate
+   that penetrates, re-solve. res->its sums the iterations of all passes. */
+PetscErrorCode RollerContactSolveWith(Roller ctx, RollerContact c, RollerContactSolver s, Vec b, Vec xi, RollerContactResult *res)
+{
+  PetscInt its = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(RollerContactSolverSetUp(s, ctx, c));
+  for (PetscInt pass = 0;; ++pass) {
+    PetscInt  added;
+    PetscReal gap_min;
+
+    PetscCall((*s->ops->solve)(s, ctx, c, b, xi, res));
+    its += res->its;
+    PetscCall(RollerContactGather(c, xi, c->nodes.red));
+    PetscCall(RollerContactGaps(c, c->nodes.red, c->step.gap, &gap_min));
+    PetscCall(RollerContactAddPenetrating(ctx, c, &added));
+    if (!added) break;
+    c->step.resolves++;
+    PetscCall(PetscInfo(NULL, "Contact %s: %" PetscInt_FMT " nodes outside the candidate set penetrate (gap %g), re-solving with %" PetscInt_FMT " candidates\n", s->name, added, (double)gap_min, c->step.ncand));
+    PetscCheck(pass < c->opt.max_resolves, ctx->comm, PETSC_ERR_CONV_FAILED, "Contact at t = %g: nodes outside the candidate set still penetrate after %" PetscInt_FMT " re-solves (-contact_max_resolves)", (double)c->step.t, c->opt.max_resolves);
+  }
+  res->its = its;
   PetscFunctionReturn(0);
 }
 

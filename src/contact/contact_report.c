@@ -18,6 +18,16 @@ PetscErrorCode RollerContactKKT(Roller ctx, RollerContact c, Vec xi, Vec Mxi, Ve
   PetscCall(RollerContactForce(c, lambda, lambda == acc->result.lambda ? acc->result.lambda_t : NULL, acc->force));
   if (Mxi && Kxi && !c->step.op->G && c->step.op->c_D == 0) PetscCall(VecAXPBYPCZ(acc->work, c->step.op->c_M, c->step.op->c_K, 0.0, Mxi, Kxi));
   else PetscCall(MatMult(c->step.op->A, xi, acc->work));
+  if (c->step.op->border) { /* -axle: A_eff xi = A xi - C Dz C^T xi (model/axle.h) */
+    PetscScalar d[3];
+    PetscReal   r[3], w[3];
+
+    PetscCall(VecMDot(xi, 3, c->step.op->border->C, d));
+    for (PetscInt i = 0; i < 3; ++i) r[i] = PetscRealPart(d[i]);
+    RollerMat3Vec(ctx->axle.hub->s.Dz, r, w);
+    for (PetscInt i = 0; i < 3; ++i) d[i] = -w[i];
+    PetscCall(VecMAXPY(acc->work, 3, d, c->step.op->border->C));
+  }
   PetscCall(VecAXPBYPCZ(acc->work, -1.0, -1.0, 1.0, acc->b, acc->force));
   PetscCall(VecNorm(acc->work, NORM_2, &nr));
   PetscCall(VecNorm(acc->b, NORM_2, &nb));

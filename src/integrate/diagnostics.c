@@ -66,6 +66,32 @@ PetscErrorCode RollerStepAccumulate(Roller ctx)
   PetscFunctionReturn(0);
 }
 
+/* The axle's columns (docs/model.md section 10). With -axle the motor (the frame's theta) exerts the drive's torque
+   -k_d phi - c_d phi' on the hub, which is then the shaft's torque too; the hub turns at theta' + phi'. */
+static PetscErrorCode AxleColumns(Roller ctx, RollerStepInfo *info)
+{
+  PetscReal td;
+
+  PetscFunctionBeginUser;
+  RollerTheta(ctx, ctx->state.time, NULL, &td, NULL);
+  info->axle.y            = 0.0;
+  info->axle.hub_rate     = td;
+  info->axle.drive_torque = info->friction.torque;
+  info->axle.sheet_speed  = ctx->contact ? RollerContactSheetSpeed(ctx, ctx->contact) : ctx->obstacle.sheet_speed;
+  if (ctx->axle.on) {
+    const RollerHubState *s    = &ctx->axle.hub->s;
+    const PetscReal       rate = (s->cur[2] - s->prev[2]) / ctx->ts.dt;
+    PetscReal             n[2];
+
+    RollerAxleFrame(ctx, ctx->state.time, n);
+    info->axle.y            = n[0] * s->cur[0] + n[1] * s->cur[1];
+    info->axle.hub_rate     = td + rate;
+    info->axle.drive_torque = -ctx->axle.drive_stiffness * s->cur[2] - ctx->axle.drive_damping * rate;
+    info->friction.torque   = info->axle.drive_torque;
+  }
+  PetscFunctionReturn(0);
+}
+
 /* The row of the newest level xi^k at t = k dt, once per step, when an observer asks: R, alpha, the energy, the
    contact columns and the shaft torque T^k = (L^k - L^{k-1})/dt + rho I_0 (theta'^k - theta'^{k-1})/dt - (the
    contact forces' moment, contact layer). */
@@ -105,6 +131,7 @@ PetscErrorCode RollerStepInfoGet(Roller ctx)
   info->friction.shaft_work = st->works[0];
   info->friction.sheet_work = st->works[1];
   info->friction.work       = st->works[2];
+  PetscCall(AxleColumns(ctx, info));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }

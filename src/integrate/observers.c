@@ -78,5 +78,6 @@ PetscErrorCode RollerOutputMonitorSetUp(Roller ctx)
     PetscCall(RollerFieldsCreate(ctx, h5, every, &out));
     PetscCall(RollerMonitorSet(ctx, MonitorFields, out, MonitorFieldsDestroy));
   }
+  PetscCall(RollerSurfaceMonitorSetUp(ctx));
   PetscFunctionReturn(0);
 }

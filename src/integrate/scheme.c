@@ -82,6 +82,7 @@ PetscErrorCode RollerSchemeAddOperator(RollerScheme s, Roller ctx, PetscReal c_M
   PetscFunctionBeginUser;
   PetscCheck(s->nop < ROLLER_SCHEME_MAX_OPERATORS, ctx->comm, PETSC_ERR_SUP, "Time scheme %s: at most %d step matrices", s->name, ROLLER_SCHEME_MAX_OPERATORS);
   PetscCall(RollerStepOperatorCreate(ctx, c_M, c_K, c_D, G, c_G, s->nop, &s->op[s->nop]));
+  if (ctx->axle.on) PetscCall(RollerStepOperatorSetBorder(ctx, &s->op[s->nop])); /* the hub eliminated (model/axle.h) */
   if (ctx->contact) PetscCall(RollerContactPrepare(ctx, ctx->contact, &s->op[s->nop]));
   *op = &s->op[s->nop++];
   PetscFunctionReturn(0);
@@ -224,8 +225,9 @@ PetscErrorCode RollerSchemeChoose(Roller ctx)
   PetscCall(PetscInfo(NULL, "-ts_scheme %s, -ts_dt %g: time error of R by T = %g estimated %g, target %g/2\n", ctx->scheme->name, (double)ctx->ts.dt, (double)T, (double)e, (double)ctx->ts.phase_error));
   if (ctx->ts.view) {
     PetscCall(PetscPrintf(ctx->comm, "roller: P%" PetscInt_FMT "%s, %s -mesh_h %g, -ts_scheme %s (%s; order %" PetscInt_FMT ", %" PetscInt_FMT " solve%s a step), -ts_dt %g (%s)", ctx->disc.degree, ctx->mesh.curved ? " curved" : "",
-                          ctx->mesh.file[0] ? "mesh file, not" : (ctx->mesh.h_set ? (ctx->mesh.h_restart ? "from the checkpoint" : "given") : "from -ts_phase_error:"), (double)ctx->mesh.h, ctx->scheme->name, ctx->ts.scheme[0] ? "given" : "the fewest solves",
-                          ctx->scheme->order, ctx->scheme->stages, ctx->scheme->stages > 1 ? "s" : "", (double)ctx->ts.dt, ctx->ts.dt_restart ? "from the checkpoint" : (ctx->ts.dt_set ? "given" : "from -ts_phase_error")));
+                          ctx->mesh.file[0] ? "mesh file, not" : (ctx->mesh.h_set ? (ctx->mesh.h_restart ? "from the checkpoint" : "given") : "from -ts_phase_error:"), (double)ctx->mesh.h, ctx->scheme->name,
+                          ctx->ts.scheme_restart ? "from the checkpoint" : (ctx->ts.scheme[0] ? "given" : "the fewest solves"), ctx->scheme->order, ctx->scheme->stages, ctx->scheme->stages > 1 ? "s" : "", (double)ctx->ts.dt,
+                          ctx->ts.dt_restart ? "from the checkpoint" : (ctx->ts.dt_set ? "given" : "from -ts_phase_error")));
     if (ctx->scheme->ops->view) PetscCall((*ctx->scheme->ops->view)(ctx->scheme, ctx, PETSC_VIEWER_STDOUT_(ctx->comm)));
     PetscCall(PetscPrintf(ctx->comm, "\nroller: radial modes carrying R%s: w = %g (%.3f of R), %g (%.3f), %g (%.3f), ...; torsional mode w_t = %g (period %g); end time %g; R's time error, the modes' phase errors (T/dt) phase(w dt) weighted: %.3g (target -ts_phase_error/2 = %g)\n",
                           ctx->material.rubber == ROLLER_RUBBER_MAXWELL ? " (the instantaneous moduli' modes: the fastest the rubber's reach)" : "", (double)md.w[0], (double)md.a[0], (double)md.w[1], (double)md.a[1], (double)md.w[2], (double)md.a[2], (double)w_t, (double)(2 * PETSC_PI / w_t), (double)T, (double)e,
@@ -265,10 +267,20 @@ PetscErrorCode RollerSchemeChoose(Roller ctx)
 }
 
 /* The chosen scheme's step matrices (after M and K) and its start. */
+/* The scheme's step matrices and what it keeps (RollerSchemeKept: the checkpoint registers them). */
 PetscErrorCode RollerSchemeSetUp(Roller ctx)
 {
   PetscFunctionBeginUser;
   if (ctx->scheme->ops->setup) PetscCall((*ctx->scheme->ops->setup)(ctx->scheme, ctx));
+  PetscFunctionReturn(0);
+}
+
+/* The addresses of the vectors the scheme keeps beyond the levels (at most ROLLER_SCHEME_KEPT) and their names. */
+PetscErrorCode RollerSchemeKept(Roller ctx, PetscInt *n, Vec *kept[], const char *names[])
+{
+  PetscFunctionBeginUser;
+  *n = 0;
+  if (ctx->scheme->ops->kept) PetscCall((*ctx->scheme->ops->kept)(ctx->scheme, ctx, n, kept, names));
   PetscFunctionReturn(0);
 }
 
@@ -290,15 +302,6 @@ PetscErrorCode RollerSchemeBalance(Roller ctx, RollerStepInfo *info)
 {
   PetscFunctionBeginUser;
   PetscCall((*ctx->scheme->ops->balance)(ctx->scheme, ctx, info));
-  PetscFunctionReturn(0);
-}
-
-/* The vectors the run's scheme keeps beyond the levels (the checkpoint writes and reads them). */
-PetscErrorCode RollerSchemeKept(Roller ctx, PetscInt *n, Vec v[], const char *names[])
-{
-  PetscFunctionBeginUser;
-  *n = 0;
-  if (ctx->scheme && ctx->scheme->ops->kept) PetscCall((*ctx->scheme->ops->kept)(ctx->scheme, ctx, n, v, names));
   PetscFunctionReturn(0);
 }
 

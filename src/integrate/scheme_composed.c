@@ -187,15 +187,15 @@ static PetscErrorCode ComposedSetUp(RollerScheme s, Roller ctx)
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode ComposedKept(RollerScheme s, Roller ctx, PetscInt *n, Vec v[], const char *names[])
+static PetscErrorCode ComposedKept(RollerScheme s, Roller ctx, PetscInt *n, Vec *v[], const char *names[])
 {
   Composed *cp = (Composed *)s->data;
 
   PetscFunctionBeginUser;
   *n       = 3;
-  v[0]     = ctx->state.velocity;
-  v[1]     = ctx->state.Mcur;
-  v[2]     = cp->Mv;
+  v[0]     = &ctx->state.velocity;
+  v[1]     = &ctx->state.Mcur;
+  v[2]     = &cp->Mv;
   names[0] = "v_k";
   names[1] = "M_xi_k";
   names[2] = "M_v_k";
@@ -224,6 +224,7 @@ static PetscErrorCode ComposedUsable(RollerScheme s, Roller ctx, const char **wh
   PetscCall(PetscOptionsHasName(NULL, NULL, "-coriolis_velocity", &coriolis));
   if (ctx->obstacle.friction > 0) *why = "Coulomb friction cannot change sign in a composition's negative stage (a three-level scheme takes it)";
   else if (ctx->disc.static_solve) *why = "-static is the DMF's one step with A = K";
+  else if (ctx->axle.on) *why = "the hub's unknowns (-axle) are the three-level schemes'";
   else if (coriolis) *why = "-coriolis_velocity is the three-level schemes' (this one splits the Coriolis force off exactly)";
   else if (ctx->material.rubber == ROLLER_RUBBER_MAXWELL) *why = "-rubber maxwell's branches are the three-level schemes' (dmf, trapezoidal)";
   PetscFunctionReturn(0);

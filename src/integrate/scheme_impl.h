@@ -25,8 +25,9 @@
    (ctx->state.step, .time and the levels cur, prev, prev2 move up one; state.Mcur = M xi^k and state.velocity
    follow); energy: E^k of the newest level; balance: the terms of E^k - E^{k-1} of the last step (docs/model.md
    section 2), added to info; 
-   level (NULL: (xi^k - xi^{k-1})/dt); kept: the vectors the scheme keeps beyond the levels (for the checkpoint,
-   so that a restart repeats the run to the last bit), at most ROLLER_SCHEME_KEPT. */
+   level (NULL: (xi^k - xi^{k-1})/dt); kept: the addresses of the vectors the scheme keeps beyond the levels (the
+   checkpoint's, so that a restart repeats the run to the last bit; addresses because a step swaps the vectors), at
+   most ROLLER_SCHEME_KEPT. */
 typedef struct {
   PetscErrorCode (*setfromoptions)(RollerScheme, Roller, PetscOptionItems *);
   PetscErrorCode (*phase)(RollerScheme, PetscReal, PetscReal *);
@@ -36,7 +37,7 @@ typedef struct {
   PetscErrorCode (*step)(RollerScheme, Roller);
   PetscErrorCode (*energy)(RollerScheme, Roller, PetscReal *);
   PetscErrorCode (*balance)(RollerScheme, Roller, RollerStepInfo *);
-  PetscErrorCode (*kept)(RollerScheme, Roller, PetscInt *, Vec[], const char *[]);
+  PetscErrorCode (*kept)(RollerScheme, Roller, PetscInt *, Vec *[], const char *[]); /* the fields' addresses: the levels swap */
   PetscErrorCode (*view)(RollerScheme, Roller, PetscViewer);
   PetscErrorCode (*destroy)(RollerScheme);
 } RollerSchemeOps;
@@ -72,6 +73,15 @@ PETSC_INTERN PetscErrorCode RollerStageWorkCreate(Roller, RollerStageWork *);
 PETSC_INTERN PetscErrorCode RollerStageWorkDestroy(RollerStageWork *);
 PETSC_INTERN PetscErrorCode RollerSchemeStage(Roller, RollerStageWork *, RollerStepOperator *, PetscReal, PetscReal, PetscReal, PetscReal, PetscBool, Vec, Vec, Vec, Vec, Vec, Vec); /* h, t0, t1, delta, refresh M v, x0, M x0, K x0 -> x1, M x1, K x1 */
 
+/* scheme_hub.c: the hub's part of a three-level step (-axle, model/axle.h): after the body's right-hand side (op,
+   beta, t_{k-1}, the Coriolis velocity's coefficients, rhs, load, scratch), after the solve (the new body level), after
+   the levels moved up (the new cur); q's terms of the energy and the balance (beta) */
+PETSC_INTERN PetscErrorCode RollerHubSetUp(Roller);
+
+PETSC_INTERN PetscErrorCode RollerHubStepEnd(Roller, RollerStepOperator *, PetscReal, Vec);
+PETSC_INTERN PetscErrorCode RollerHubShift(Roller, Vec);
+PETSC_INTERN PetscErrorCode RollerHubEnergy(Roller, PetscReal, PetscReal *);
+PETSC_INTERN PetscErrorCode RollerHubBalance(Roller, PetscReal, RollerStepInfo *);
 /* scheme_maxwell.c: the Maxwell branches of the three-level schemes (-rubber maxwell; NULL without) */
 typedef struct _n_RollerMaxwell *RollerMaxwell;
 PETSC_INTERN PetscErrorCode      RollerMaxwellCreate(Roller, PetscReal, RollerMaxwell *);   /* beta */
@@ -81,8 +91,10 @@ PETSC_INTERN PetscErrorCode      RollerMaxwellRightHandSide(RollerMaxwell, Petsc
 PETSC_INTERN PetscErrorCode      RollerMaxwellNewLevel(RollerMaxwell, Roller);
 PETSC_INTERN PetscReal           RollerMaxwellDissipation(RollerMaxwell, Roller);
 PETSC_INTERN PetscErrorCode      RollerMaxwellEnergyAdd(RollerMaxwell, Roller, PetscReal *);
-PETSC_INTERN PetscErrorCode      RollerMaxwellKept(RollerMaxwell, PetscInt *, Vec[], const char *[]);
+PETSC_INTERN PetscErrorCode      RollerMaxwellKept(RollerMaxwell, PetscInt *, Vec *[], const char *[]);
 PETSC_INTERN PetscErrorCode      RollerMaxwellDestroy(RollerMaxwell *);
+PETSC_INTERN PetscErrorCode      RollerMaxwellHubRightHandSide(RollerMaxwell, Roller, Vec, PetscReal[3]); /* -axle: b, b_q */
+PETSC_INTERN PetscErrorCode      RollerHubStepBegin(Roller, RollerStepOperator *, RollerMaxwell, PetscReal, PetscReal, const PetscReal[3], Vec, Vec, Vec);
 
 /* The schemes' create functions, for RollerSchemesRegisterAll */
 PETSC_INTERN PetscErrorCode RollerSchemeCreate_DMF(RollerScheme);

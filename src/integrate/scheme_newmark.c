@@ -12,17 +12,8 @@
    for any beta (the beta terms telescope). The products M xi of the last three levels are kept (M xi^k from the step's
    equation), so that the load F^{k-1}, the trapezoidal right-hand side and the angular momentum cost no product with
    M; the energy costs one, when a row is written. */
-#include "scheme_impl.h"
+#include "scheme_newmark.h"
 #include "model/model.h"
-
-typedef struct {
-  PetscReal           beta;
-  RollerStepOperator *op;
-  Vec                 Mprev, Mprev2, Mv; /* M xi^{k-1}, M xi^{k-2} (state.Mcur = M xi^k); scratch */
-  RollerMaxwell       mx;                /* the Maxwell branches (scheme_maxwell.c), or NULL */
-  PetscReal           kinetic;           /* (xi^k - xi^{k-1}) . M (xi^k - xi^{k-1}) of step kinetic_step (made when asked) */
-  PetscInt            kinetic_step;
-} Newmark;
 
 /* v^{k-1} of the explicit Coriolis term, c1 xi^{k-1} + c2 xi^{k-2} + c3 xi^{k-3} (docs/model.md section 2; centred: in A) */
 static void CoriolisVelocity(Roller ctx, PetscReal c[3])
@@ -101,6 +92,16 @@ static PetscErrorCode RightHandSide(Roller ctx, Newmark *nm, Vec b)
   PetscFunctionReturn(0);
 }
 
+static PetscErrorCode HubStepBegin(Roller ctx, Newmark *nm, PetscReal t1)
+{
+  PetscReal c[3];
+
+  PetscFunctionBeginUser;
+  CoriolisVelocity(ctx, c);
+  PetscCall(RollerHubStepBegin(ctx, nm->op, nm->mx, nm->beta, t1, c, ctx->state.rhs, ctx->state.load, ctx->state.work));
+  PetscFunctionReturn(0);
+}
+
 /* Without contact (and the centred Coriolis term) the trapezoidal family solves for the second difference
    Delta = xi^k - 2 xi^{k-1} + xi^{k-2} (b - A (2 xi^{k-1} - xi^{k-2}), no scalar of dt in front of M):
      A Delta = F^{k-1} - K xi^{k-1} - tau/dt K (xi^{k-1} - xi^{k-2}) - eta/dt M (xi^{k-1} - xi^{k-2}).
@@ -140,6 +141,7 @@ static PetscErrorCode NewLevel(Roller ctx, Newmark *nm, PetscBool product)
       PetscCall(VecAXPY(ctx->state.Mcur, 1.0, ctx->state.rhs));
     } else PetscCall(VecCopy(ctx->state.rhs, ctx->state.Mcur));
     if (nm->mx) PetscCall(VecAXPY(ctx->state.Mcur, -op->c_D, RollerMaxwellKdCur(nm->mx)));
+    if (op->border) PetscCall(VecMAXPY(ctx->state.Mcur, 3, ctx->axle.hub->s.delta, op->border->C)); /* b = b_eff + C Dz b_q, minus C q^k */
     PetscCall(VecAXPBY(ctx->state.Mcur, -op->c_K / op->c_M, 1.0 / op->c_M, ctx->state.Kcur));
   }
   PetscCall(VecWAXPY(ctx->state.velocity, -1.0, ctx->state.prev, ctx->state.cur));
@@ -153,7 +155,7 @@ static PetscErrorCode NewmarkStep(RollerScheme s, Roller ctx)
 {
   Newmark        *nm = (Newmark *)s->data;
   const PetscReal dt = ctx->ts.dt, t1 = ctx->state.step * dt, t = (ctx->state.step + 1) * dt;
-  const PetscBool second = (PetscBool)(nm->beta != 0.5 && !ctx->contact && !nm->op->G && nm->op->c_M != 0);
+  const PetscBool second = (PetscBool)(nm->beta != 0.5 && !ctx->contact && !nm->op->G && nm->op->c_M != 0 && !ctx->axle.on);
   Vec             tmp;
   PetscReal       norm;
 
@@ -175,6 +177,7 @@ static PetscErrorCode NewmarkStep(RollerScheme s, Roller ctx)
   }
   if (second) PetscCall(RightHandSideSecondDifference(ctx, nm, ctx->state.rhs));
   if (nm->mx) PetscCall(RollerMaxwellRightHandSide(nm->mx, second, ctx->state.rhs));
+  if (ctx->axle.on) PetscCall(HubStepBegin(ctx, nm, t1)); /* the hub's load, history and elimination (scheme_hub.c) */
   if (ctx->contact) {
     const RollerContactStage stage = {
       nm->op, ctx->state.time, ctx->state.cur, ctx->state.prev, {2.0, -1.0},
@@ -201,6 +204,7 @@ static PetscErrorCode NewmarkStep(RollerScheme s, Roller ctx)
   PetscCall(VecNorm(ctx->state.next, NORM_INFINITY, &norm));
   PetscCheck(!PetscIsInfOrNanReal(norm), ctx->comm, PETSC_ERR_FP, "The solution is not finite at step %" PetscInt_FMT ", t = %g; the last good state (step %" PetscInt_FMT ") is in the checkpoint %s", ctx->state.step + 1, (double)t, ctx->state.step,
              ctx->ck.file);
+  if (ctx->axle.on) PetscCall(RollerHubStepEnd(ctx, nm->op, nm->beta, ctx->state.next));
   tmp               = ctx->state.prev2;
   ctx->state.prev2  = ctx->state.prev;
   ctx->state.prev   = ctx->state.cur;
@@ -210,84 +214,10 @@ static PetscErrorCode NewmarkStep(RollerScheme s, Roller ctx)
   ctx->state.Kprev2 = ctx->state.Kprev;
   ctx->state.Kprev  = ctx->state.Kcur;
   ctx->state.Kcur   = tmp;
+  if (ctx->axle.on) PetscCall(RollerHubShift(ctx, ctx->state.cur)); /* before NewLevel: the branches' update reads q^k */
   PetscCall(NewLevel(ctx, nm, second));
   ctx->state.step++;
   ctx->state.time = ctx->state.step * dt;
-  PetscFunctionReturn(0);
-}
-
-/* The kinetic term d . M d, d = xi^k - xi^{k-1}, when asked: for the DMF with its own product (its golden energy
-   bits), else from the kept products, M xi^k - M xi^{k-1} (no product; the cancellation costs 1e-15 of E). */
-static PetscErrorCode NewmarkEnergy(RollerScheme s, Roller ctx, PetscReal *energy)
-{
-  Newmark        *nm = (Newmark *)s->data;
-  const PetscReal dt = ctx->ts.dt;
-  PetscScalar     pot1, pot2, cross = 0.0;
-
-  PetscFunctionBeginUser;
-  if (nm->kinetic_step != ctx->state.step) {
-    Vec         d = ctx->state.work, Md = ctx->state.next; /* scratch between steps */
-    PetscScalar kin;
-
-    PetscCall(VecWAXPY(d, -1.0, ctx->state.prev, ctx->state.cur));
-    if (nm->beta == 0.5) PetscCall(MatMult(ctx->ops.M, d, Md)); /* the DMF's historical bits */
-    else PetscCall(VecWAXPY(Md, -1.0, nm->Mprev, ctx->state.Mcur));
-    PetscCall(VecDot(d, Md, &kin));
-    nm->kinetic      = PetscRealPart(kin);
-    nm->kinetic_step = ctx->state.step;
-  }
-  PetscCall(VecDot(ctx->state.cur, ctx->state.Kcur, &pot1));
-  PetscCall(VecDot(ctx->state.prev, ctx->state.Kprev, &pot2));
-  if (nm->beta != 0.5) PetscCall(VecDot(ctx->state.cur, ctx->state.Kprev, &cross));
-  *energy = 0.5 * ctx->material.density * nm->kinetic / (dt * dt) + 0.5 * nm->beta * PetscRealPart(pot1 + pot2) + 0.5 * (1.0 - 2.0 * nm->beta) * PetscRealPart(cross);
-  if (nm->mx) PetscCall(RollerMaxwellEnergyAdd(nm->mx, ctx, energy));
-  PetscFunctionReturn(0);
-}
-
-/* The energy balance of the step from xi^{k-1} to xi^k (docs/model.md section 2): with D = xi^k - xi^{k-2},
-     E^k - E^{k-1} = 1/2 F^{k-1} . D + 1/2 (E N lambda^k) . D - eta/(4 dt) D . M D - tau/(4 dt) D . K D,
-   the load's work, the contact's (contact layer), the mass damping's and the Kelvin-Voigt (or Maxwell) dissipation. */
-static PetscErrorCode NewmarkBalance(RollerScheme s, Roller ctx, RollerStepInfo *info)
-{
-  Newmark        *nm = (Newmark *)s->data;
-  const PetscReal dt = ctx->ts.dt;
-  Vec             D = ctx->state.work, W = ctx->state.next; /* scratch between steps */
-  PetscScalar     dot;
-
-  PetscFunctionBeginUser;
-  if (ctx->state.step == 0) PetscFunctionReturn(0);
-  PetscCall(VecWAXPY(D, -1.0, ctx->state.prev2, ctx->state.cur));
-  PetscCall(VecDot(ctx->state.load, D, &dot));
-  info->load_work = 0.5 * PetscRealPart(dot);
-  if (ctx->disc.damping > 0) {
-    PetscCall(VecWAXPY(W, -1.0, nm->Mprev2, ctx->state.Mcur));
-    PetscCall(VecDot(D, W, &dot));
-    info->damping_dissipation = ctx->disc.damping / (4.0 * dt) * PetscRealPart(dot);
-  }
-  if (ctx->material.viscosity > 0) {
-    PetscCall(VecWAXPY(W, -1.0, ctx->state.Kprev2, ctx->state.Kcur));
-    PetscCall(VecDot(D, W, &dot));
-    info->viscous_dissipation = ctx->material.viscosity / (4.0 * dt) * PetscRealPart(dot);
-  }
-  if (nm->mx) info->viscous_dissipation += RollerMaxwellDissipation(nm->mx, ctx);
-  if (ctx->contact) PetscCall(RollerContactEnergyAdd(ctx, ctx->contact, ctx->state.prev2, ctx->state.time - 2.0 * dt, 0.5, info));
-  PetscFunctionReturn(0);
-}
-
-/* M xi of the three levels: made from the step's equation, a product of the level would differ in its last bits, so a
-   restart reads them from the checkpoint; and the Maxwell branches'. */
-static PetscErrorCode NewmarkKept(RollerScheme s, Roller ctx, PetscInt *n, Vec v[], const char *names[])
-{
-  Newmark          *nm       = (Newmark *)s->data;
-  const Vec         M[3]     = {ctx->state.Mcur, nm->Mprev, nm->Mprev2};
-  const char *const Mname[3] = {"M_xi_k", "M_xi_k1", "M_xi_k2"};
-
-  PetscFunctionBeginUser;
-  for (*n = 0; *n < 3; ++*n) {
-    v[*n]     = M[*n];
-    names[*n] = Mname[*n];
-  }
-  if (nm->mx) PetscCall(RollerMaxwellKept(nm->mx, n, v, names));
   PetscFunctionReturn(0);
 }
 
@@ -316,6 +246,7 @@ static PetscErrorCode NewmarkSetUp(RollerScheme s, Roller ctx)
   PetscCall(VecWAXPY(ctx->state.velocity, -1.0, ctx->state.prev, ctx->state.cur));
   PetscCall(VecScale(ctx->state.velocity, 1.0 / dt));
   nm->kinetic_step = -1;
+  if (ctx->axle.on) PetscCall(RollerHubSetUp(ctx));
   PetscFunctionReturn(0);
 }
 
@@ -373,9 +304,9 @@ static PetscErrorCode NewmarkCreate(RollerScheme s, PetscReal beta)
   s->ops->phase   = NewmarkPhase;
   s->ops->setup   = NewmarkSetUp;
   s->ops->step    = NewmarkStep;
-  s->ops->energy  = NewmarkEnergy;
-  s->ops->balance = NewmarkBalance;
-  s->ops->kept    = NewmarkKept;
+  s->ops->energy  = RollerNewmarkEnergy;
+  s->ops->balance = RollerNewmarkBalance;
+  s->ops->kept    = RollerNewmarkKept;
   s->ops->view    = NewmarkView;
   s->ops->destroy = NewmarkDestroy;
   PetscFunctionReturn(0);

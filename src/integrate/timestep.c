@@ -2,6 +2,36 @@
    -ts_monitor line of every step and the progress line (at most every 5 s, and at the last step). */
 #include "integrate/integrate.h"
 #include "integrate/scheme_impl.h"
+#include <petsctime.h>
+#include <stdio.h>
+#include <unistd.h>
+
+/* The process's start on PetscTime's clock, for -ts_max_wall: now less the process's age (Linux: /proc/uptime less
+   the start time of /proc/self/stat, in clock ticks since boot, 0.01 s); elsewhere now (MPI's start-up then not
+   counted, about 0.4 s). */
+static PetscErrorCode ProcessStart(PetscLogDouble *start)
+{
+  FILE              *f;
+  char               stat[1024], *p;
+  double             uptime = -1;
+  unsigned long long ticks  = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscTime(start));
+  if ((f = fopen("/proc/uptime", "r"))) {
+    if (fscanf(f, "%lf", &uptime) != 1) uptime = -1;
+    fclose(f);
+  }
+  if (uptime < 0 || !(f = fopen("/proc/self/stat", "r"))) PetscFunctionReturn(0);
+  p = fgets(stat, sizeof(stat), f) ? strrchr(stat, ')') : NULL; /* the fields after the command's name */
+  fclose(f);
+  if (p && sscanf(p + 2, "%*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %*u %*u %*d %*d %*d %*d %*d %*d %llu", &ticks) == 1 && sysconf(_SC_CLK_TCK) > 0) {
+    const double age = uptime - (double)ticks / (double)sysconf(_SC_CLK_TCK);
+
+    if (age >= 0) *start -= age;
+  }
+  PetscFunctionReturn(0);
+}
 
 PetscErrorCode RollerTimeStepSetFromOptions(Roller ctx)
 {
@@ -15,6 +45,8 @@ PetscErrorCode RollerTimeStepSetFromOptions(Roller ctx)
                              ctx->ts.phase_error, &ctx->ts.phase_error, NULL));
   PetscCall(PetscOptionsBool("-ts_view", "Print the discretization (degree, h, scheme, dt) and the rule that chose it (also with -ts_monitor)", NULL, ctx->ts.view, &ctx->ts.view, NULL));
   PetscCall(PetscOptionsInt("-ts_max_steps", "Cap on the number of steps (-1: none)", NULL, ctx->ts.max_steps, &ctx->ts.max_steps, NULL));
+  PetscCall(PetscOptionsReal("-ts_max_wall", "Wall time in seconds from the process's start: stop after the step when the next one would end past it (by the mean step time), with the checkpoint (-checkpoint, default checkpoint.h5) and a line that says how to resume (0: no limit)", NULL,
+                             ctx->ts.max_wall, &ctx->ts.max_wall, NULL));
   PetscCall(PetscOptionsBool("-quiet", "Silence the progress line", NULL, ctx->ts.quiet, &ctx->ts.quiet, NULL));
   PetscCall(PetscOptionsBool("-ts_monitor", "Print R, alpha, energy (and contact) every step", NULL, ctx->ts.monitor, &ctx->ts.monitor, &monitor_set));
   PetscOptionsEnd();
@@ -44,6 +76,8 @@ PetscErrorCode RollerTimeStepSetFromOptions(Roller ctx)
   RollerCheckOption(ctx->comm, "-ts_max_time", ctx->ts.max_time, ctx->ts.max_time >= 0, ">= 0");
   PetscCheck(ctx->ts.dt <= ctx->ts.max_time || ctx->ts.max_time == 0, ctx->comm, PETSC_ERR_USER_INPUT, "-ts_dt %.6g: longer than -ts_max_time %.6g, the run would take no step; allowed: (0, %.6g]", (double)ctx->ts.dt, (double)ctx->ts.max_time,
              (double)ctx->ts.max_time);
+  RollerCheckOption(ctx->comm, "-ts_max_wall", ctx->ts.max_wall, ctx->ts.max_wall >= 0, ">= 0 seconds (0: no limit)");
+  if (ctx->ts.max_wall > 0) PetscCall(ProcessStart(&ctx->ts.wall_start));
   PetscCheck(ctx->ts.max_steps >= -1, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-ts_max_steps %" PetscInt_FMT " must be >= 0 (or -1 for no cap)", ctx->ts.max_steps);
   PetscFunctionReturn(0);
 }

@@ -12,6 +12,8 @@
 #include <roller_impl.h>
 #include "contact/contact.h"
 
+#define ROLLER_SURFACE_ORDERS 4 /* -monitor_surface_orders' default */
+
 /* output_files.c: output that must not look complete before it is (CSV, HDF5, XDMF, checkpoint) */
 PETSC_INTERN PetscErrorCode RollerJoinPath(char[], size_t, const char[], const char[], const char[]);
 PETSC_INTERN PetscErrorCode RollerRenameFile(MPI_Comm, const char[], const char[]);

@@ -90,7 +90,7 @@ PetscErrorCode RollerFieldCreate(DM dm, const char name[], OutputField *field)
 }
 
 /* The run's parameters: written as attributes of /parameters (RollerWriteParameters), so that scripts
-   (plot_fields.py) need not be told; the physical ones (the roller, its material, rotation and friction) are those a
+   (rollerplots.fields) need not be told; the physical ones (the roller, its material, rotation and friction) are those a
    file computed for another roller differs in (RollerCheckParameters). */
 typedef struct {
   const char *name;
@@ -340,6 +340,16 @@ PetscErrorCode RollerOutputSetFromOptions(Roller ctx, char csv[], char h5[], siz
   PetscCall(PetscOptionsString("-monitor_csv", "One CSV row per step: step,t,R,alpha,energy,contact_nodes,contact_force,gap_min,qp_iterations,kkt_residual,theta", NULL, csv, csv, len, &has_csv));
   PetscCall(PetscOptionsString("-output", "Fields to this HDF5 file, with an XDMF index beside it (F.h5 -> F.xmf)", NULL, h5, h5, len, &has_h5));
   PetscCall(PetscOptionsInt("-output_every", "Write fields every N steps", NULL, *every, every, NULL));
+  { /* read again by the observer (integrate/observers_surface.c): listed and checked here, with the outputs */
+    char      surface[PETSC_MAX_PATH_LEN] = "";
+    PetscInt  orders                      = ROLLER_SURFACE_ORDERS;
+    PetscBool has_surface                 = PETSC_FALSE;
+
+    PetscCall(PetscOptionsString("-monitor_surface_csv", "One CSV row per step: step,t,theta,ur0,ur1c,ur1s,...: the lab-frame orders of the radial displacement of Gamma_C (the sound's source)", NULL, surface, surface, sizeof(surface), &has_surface));
+    PetscCall(PetscOptionsInt("-monitor_surface_orders", "The orders 1..N of -monitor_surface_csv besides ur0", NULL, orders, &orders, NULL));
+    RollerCheckOption(ctx->comm, "-monitor_surface_orders", orders, orders >= 1 && orders <= 64, "an integer in 1 ... 64");
+    PetscCheck(!has_surface || surface[0], ctx->comm, PETSC_ERR_USER_INPUT, "-monitor_surface_csv needs a file name");
+  }
   PetscOptionsEnd();
   PetscCheck(*every > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-output_every %" PetscInt_FMT " must be > 0", *every);
   PetscCheck(!has_csv || csv[0], ctx->comm, PETSC_ERR_ARG_WRONG, "-monitor_csv needs a file name");

@@ -66,7 +66,7 @@ PetscErrorCode RollerCsvOpen(MPI_Comm comm, const char path[], PetscInt resume, 
   PetscCall(RollerRemoveStale(comm, csv->path));
   PetscCall(PetscFOpen(comm, csv->part, "w", &csv->fp));
   csv->open = PETSC_TRUE;
-  PetscCall(PetscFPrintf(comm, csv->fp, "step,t,R,alpha,energy,contact_nodes,contact_force,gap_min,qp_iterations,kkt_residual,theta,load_work,obstacle_work,contact_dissipation,damping_dissipation,viscous_dissipation,contact_flips,contact_reversals,friction_force,shaft_torque,stick_nodes,slip_nodes,friction_work,shaft_work,sheet_work,friction_residual,coulomb_iterations,coulomb_fallback\n"));
+  PetscCall(PetscFPrintf(comm, csv->fp, "step,t,R,alpha,energy,contact_nodes,contact_force,gap_min,qp_iterations,kkt_residual,theta,load_work,obstacle_work,contact_dissipation,damping_dissipation,viscous_dissipation,contact_flips,contact_reversals,friction_force,shaft_torque,stick_nodes,slip_nodes,friction_work,shaft_work,sheet_work,friction_residual,coulomb_iterations,coulomb_fallback,axle_y,hub_rate,drive_torque,sheet_speed\n"));
   if (resume >= 0) PetscCall(CsvResume(csv, resume));
   PetscFunctionReturn(0);
 }
@@ -85,8 +85,9 @@ PetscErrorCode RollerCsvRow(RollerCsv csv, PetscInt step, PetscReal t, const Rol
                (double)info->alpha, (double)info->energy, info->contact_nodes, (double)info->contact_force, (double)info->gap_min, info->qp_iterations, (double)info->kkt_residual, (double)theta, (double)info->load_work, (double)info->obstacle_work,
                (double)info->contact_dissipation, (double)info->damping_dissipation, (double)info->viscous_dissipation, info->contact_flips, info->contact_reversals);
   PetscCheck(n > 0 && n < (int)sizeof(row), PETSC_COMM_SELF, PETSC_ERR_PLIB, "CSV row too long");
-  m = snprintf(row + n, sizeof(row) - n, "%.17g,%.17g,%" PetscInt_FMT ",%" PetscInt_FMT ",%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%" PetscInt_FMT "\n", (double)info->friction.force, (double)info->friction.torque, info->friction.stick,
-               info->friction.slip, (double)info->friction.work, (double)info->friction.shaft_work, (double)info->friction.sheet_work, (double)info->friction.residual, info->friction.iterations, info->friction.fallback);
+  m = snprintf(row + n, sizeof(row) - n, "%.17g,%.17g,%" PetscInt_FMT ",%" PetscInt_FMT ",%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%" PetscInt_FMT ",%.17g,%.17g,%.17g,%.17g\n", (double)info->friction.force, (double)info->friction.torque,
+               info->friction.stick, info->friction.slip, (double)info->friction.work, (double)info->friction.shaft_work, (double)info->friction.sheet_work, (double)info->friction.residual, info->friction.iterations, info->friction.fallback,
+               (double)info->axle.y, (double)info->axle.hub_rate, (double)info->axle.drive_torque, (double)info->axle.sheet_speed);
   PetscCheck(m > 0 && n + m < (int)sizeof(row), PETSC_COMM_SELF, PETSC_ERR_PLIB, "CSV row too long");
   PetscCheck(fflush(csv->fp) == 0 && fwrite(row, 1, (size_t)(n + m), csv->fp) == (size_t)(n + m) && fflush(csv->fp) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s: %s", csv->part, strerror(errno));
   PetscFunctionReturn(0);

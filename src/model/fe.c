@@ -94,3 +94,17 @@ PetscErrorCode RollerOperatorDMCreate(Roller ctx, PetscFE fe, DM *dm)
   PetscCall(SpaceSetUp(ctx, *dm, fe));
   PetscFunctionReturn(0);
 }
+
+/* The displacement space on a clone of ctx->mesh.dm WITHOUT the Dirichlet boundary: its global vectors hold every
+   node, Gamma_D's too. Only for the set-up products of the rigid hub with the whole body (model/axle.c). */
+PetscErrorCode RollerUnconstrainedDMCreate(Roller ctx, DM *dm)
+{
+  PetscFE fe;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetField(ctx->mesh.dm, 0, NULL, (PetscObject *)&fe));
+  PetscCall(DMClone(ctx->mesh.dm, dm));
+  PetscCall(DMSetField(*dm, 0, NULL, (PetscObject)fe));
+  PetscCall(DMCreateDS(*dm));
+  PetscFunctionReturn(0);
+}

@@ -1,5 +1,6 @@
 /* The boundary functionals behind R and alpha (docs/model.md section 4): w_R . xi = int_{Gamma_C} xi . x/|x| ds,
-   w_alpha . xi = int_{Gamma_C} xi . x_perp/|x| ds, and |Gamma_C|, integrated by PETSc over the faces of the
+   w_alpha . xi = int_{Gamma_C} xi . x_perp/|x| ds, and |Gamma_C|; the circumferential orders of xi . x/|x| (the
+   surface's radial displacement, -monitor_surface_csv), integrated by PETSc over the faces of the
    "outer" label on the discrete (polygonal, or curved P2) Gamma_C. */
 #include "model/model.h"
 #include "model/kernels.h"
@@ -51,69 +52,122 @@ static PetscErrorCode OuterFacesGeometry(DM dm, DMLabel label, PetscQuadrature q
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode RollerComputeBoundaryFunctionals(Roller ctx)
-{
+/* The faces of Gamma_C with the functionals' space, two boundary residuals (parts 0 and 1 of the weak form) and
+   scratch: what each set of functionals integrates. */
+typedef struct {
   PetscFE         fe;
-  DM              dm;
-  DMLabel         label;
+  DM              dm; /* a clone of ctx->mesh.dm with a DS of its own */
   PetscDS         ds;
   PetscWeakForm   wf;
   PetscFormKey    key;
-  PetscQuadrature q;
   PetscFEGeom    *geom;
   IS              faces;
   const PetscInt *f;
   PetscInt        n, totDim;
-  PetscScalar    *u, *elem, length = 0.0;
-  Vec             w[2], loc;
+  PetscScalar    *u, *elem;
+} Faces;
+
+typedef void (*BdKernel)(ROLLER_KERNEL_ARGS, const PetscReal[], const PetscReal[], PetscInt, const PetscScalar[], PetscScalar[]);
+
+static PetscErrorCode FacesCreate(Roller ctx, BdKernel part0, BdKernel part1, Faces *F)
+{
+  DMLabel         label;
+  PetscQuadrature q;
 
   PetscFunctionBeginUser;
-  PetscCall(FunctionalSpace(ctx, &fe));
-  PetscCall(RollerOperatorDMCreate(ctx, fe, &dm));
-  PetscCall(DMGetLabel(dm, "outer", &label));
-  PetscCall(DMGetDS(dm, &ds));
-  PetscCall(PetscDSGetTotalDimension(ds, &totDim));
-  PetscCall(PetscDSGetWeakForm(ds, &wf));
-  /* two boundary residuals on Gamma_C, parts 0 (w_R) and 1 (w_alpha) of the weak form */
-  PetscCall(PetscWeakFormSetIndexBdResidual(wf, label, 1, 0, 0, 0, f0_bd_radial, 0, NULL));
-  PetscCall(PetscWeakFormSetIndexBdResidual(wf, label, 1, 0, 1, 0, f0_bd_angular, 0, NULL));
-  PetscCall(PetscFEGetFaceQuadrature(fe, &q));
-  PetscCall(OuterFacesGeometry(dm, label, q, &faces, &geom));
-  PetscCall(ISGetLocalSize(faces, &n));
-  PetscCall(ISGetIndices(faces, &f));
-  PetscCall(PetscCalloc2(n * totDim, &u, n * totDim, &elem));
-  key.label = label;
-  key.value = 1;
-  key.field = 0;
-  PetscCall(DMCreateGlobalVector(ctx->mesh.dm, &ctx->ops.w_R));
-  PetscCall(DMCreateGlobalVector(ctx->mesh.dm, &ctx->ops.w_alpha));
-  w[0] = ctx->ops.w_R;
-  w[1] = ctx->ops.w_alpha;
-  PetscCall(DMGetLocalVector(dm, &loc));
-  for (key.part = 0; key.part < 2; ++key.part) {
-    PetscCall(PetscArrayzero(elem, n * totDim));
-    PetscCall(PetscFEIntegrateBdResidual(ds, wf, key, n, geom, u, NULL, NULL, NULL, 0.0, elem));
-    PetscCall(VecZeroEntries(loc));
-    for (PetscInt i = 0; i < n; ++i) {
-      const PetscInt *support;
+  PetscCall(FunctionalSpace(ctx, &F->fe));
+  PetscCall(RollerOperatorDMCreate(ctx, F->fe, &F->dm));
+  PetscCall(DMGetLabel(F->dm, "outer", &label));
+  PetscCall(DMGetDS(F->dm, &F->ds));
+  PetscCall(PetscDSGetTotalDimension(F->ds, &F->totDim));
+  PetscCall(PetscDSGetWeakForm(F->ds, &F->wf));
+  PetscCall(PetscWeakFormSetIndexBdResidual(F->wf, label, 1, 0, 0, 0, part0, 0, NULL));
+  PetscCall(PetscWeakFormSetIndexBdResidual(F->wf, label, 1, 0, 1, 0, part1, 0, NULL));
+  PetscCall(PetscFEGetFaceQuadrature(F->fe, &q));
+  PetscCall(OuterFacesGeometry(F->dm, label, q, &F->faces, &F->geom));
+  PetscCall(ISGetLocalSize(F->faces, &F->n));
+  PetscCall(ISGetIndices(F->faces, &F->f));
+  PetscCall(PetscCalloc2(F->n * F->totDim, &F->u, F->n * F->totDim, &F->elem));
+  F->key.label = label;
+  F->key.value = 1;
+  F->key.field = 0;
+  PetscFunctionReturn(0);
+}
 
-      PetscCall(DMPlexGetSupport(dm, f[i], &support));
-      PetscCall(DMPlexVecSetClosure(dm, NULL, loc, support[0], &elem[i * totDim], ADD_ALL_VALUES));
-    }
-    PetscCall(DMLocalToGlobal(dm, loc, ADD_VALUES, w[key.part]));
+static PetscErrorCode FacesDestroy(Faces *F)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree2(F->u, F->elem));
+  PetscCall(ISRestoreIndices(F->faces, &F->f));
+  PetscCall(ISDestroy(&F->faces));
+  PetscCall(PetscFEGeomDestroy(&F->geom));
+  PetscCall(PetscFEDestroy(&F->fe));
+  PetscCall(DMDestroy(&F->dm));
+  PetscFunctionReturn(0);
+}
+
+/* w = the boundary residual `part` integrated over the faces, assembled into a new global vector on ctx->mesh.dm. */
+static PetscErrorCode FacesIntegrate(Roller ctx, Faces *F, PetscInt part, Vec *w)
+{
+  Vec loc;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMCreateGlobalVector(ctx->mesh.dm, w));
+  F->key.part = part;
+  PetscCall(DMGetLocalVector(F->dm, &loc));
+  PetscCall(PetscArrayzero(F->elem, F->n * F->totDim));
+  PetscCall(PetscFEIntegrateBdResidual(F->ds, F->wf, F->key, F->n, F->geom, F->u, NULL, NULL, NULL, 0.0, F->elem));
+  PetscCall(VecZeroEntries(loc));
+  for (PetscInt i = 0; i < F->n; ++i) {
+    const PetscInt *support;
+
+    PetscCall(DMPlexGetSupport(F->dm, F->f[i], &support));
+    PetscCall(DMPlexVecSetClosure(F->dm, NULL, loc, support[0], &F->elem[i * F->totDim], ADD_ALL_VALUES));
   }
-  PetscCall(DMRestoreLocalVector(dm, &loc));
+  PetscCall(DMLocalToGlobal(F->dm, loc, ADD_VALUES, *w));
+  PetscCall(DMRestoreLocalVector(F->dm, &loc));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerComputeBoundaryFunctionals(Roller ctx)
+{
+  Faces       F;
+  PetscScalar length = 0.0;
+
+  PetscFunctionBeginUser;
+  /* two boundary residuals on Gamma_C, parts 0 (w_R) and 1 (w_alpha) of the weak form */
+  PetscCall(FacesCreate(ctx, f0_bd_radial, f0_bd_angular, &F));
+  PetscCall(FacesIntegrate(ctx, &F, 0, &ctx->ops.w_R));
+  PetscCall(FacesIntegrate(ctx, &F, 1, &ctx->ops.w_alpha));
   /* |Gamma_C|; a boundary face is in the closure of one cell, so on one rank (overlap 0): the local sums add */
-  PetscCall(PetscArrayzero(elem, n));
-  PetscCall(PetscFEIntegrateBd(ds, 0, f_bd_one, n, geom, u, NULL, NULL, elem));
-  for (PetscInt i = 0; i < n; ++i) length += elem[i];
+  PetscCall(PetscArrayzero(F.elem, F.n));
+  PetscCall(PetscFEIntegrateBd(F.ds, 0, f_bd_one, F.n, F.geom, F.u, NULL, NULL, F.elem));
+  for (PetscInt i = 0; i < F.n; ++i) length += F.elem[i];
   PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &length, 1, MPIU_SCALAR, MPIU_SUM, ctx->comm));
   ctx->mesh.boundary_length = PetscRealPart(length);
-  PetscCall(PetscFree2(u, elem));
-  PetscCall(ISRestoreIndices(faces, &f));
-  PetscCall(ISDestroy(&faces));
-  PetscCall(PetscFEGeomDestroy(&geom));
-  PetscCall(PetscFEDestroy(&fe));
-  PetscCall(DMDestroy(&dm));
+  PetscCall(FacesDestroy(&F));
+  PetscFunctionReturn(0);
+}
+
+/* The circumferential orders of the radial displacement on Gamma_C (docs/output.md, -monitor_surface_csv): w[2 (n - 1)]
+   . xi = (2 / |Gamma_C|) int xi . x/|x| cos(n phi) ds and w[2 (n - 1) + 1] the same with sin(n phi), n = 1 ... orders,
+   phi the material (co-rotating) angle: xi_r(phi) = R + sum_n c_n cos(n phi) + s_n sin(n phi). The same faces, space
+   and 5-point rule as w_R; after RollerComputeBoundaryFunctionals (|Gamma_C|). */
+PetscErrorCode RollerComputeOrderFunctionals(Roller ctx, PetscInt orders, Vec w[])
+{
+  Faces F;
+
+  PetscFunctionBeginUser;
+  PetscCall(FacesCreate(ctx, f0_bd_radial_cos, f0_bd_radial_sin, &F));
+  for (PetscInt k = 1; k <= orders; ++k) {
+    PetscScalar order = (PetscScalar)k;
+
+    PetscCall(PetscDSSetConstants(F.ds, 1, &order));
+    for (PetscInt part = 0; part < 2; ++part) {
+      PetscCall(FacesIntegrate(ctx, &F, part, &w[2 * (k - 1) + part]));
+      PetscCall(VecScale(w[2 * (k - 1) + part], 2.0 / ctx->mesh.boundary_length));
+    }
+  }
+  PetscCall(FacesDestroy(&F));
   PetscFunctionReturn(0);
 }

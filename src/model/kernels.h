@@ -117,6 +117,19 @@ static inline void f0_euler(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt nu
   f0[1] = -x[0];
 }
 
+/* Loads of the unit translations e1, e2 (the rigid hub's coupling with the body, model/axle.c). No constants. */
+static inline void f0_translation_x(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f0[])
+{
+  f0[0] = 1.0;
+  f0[1] = 0.0;
+}
+
+static inline void f0_translation_y(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f0[])
+{
+  f0[0] = 0.0;
+  f0[1] = 1.0;
+}
+
 /* The boundary functionals on Gamma_C (docs/model.md section 4): w_R . v = int v . x/|x| ds,
    w_alpha . v = int v . x_perp/|x| ds, x_perp = (-x_1, x_0), and |Gamma_C| = int 1 ds. No constants. */
 static inline void f0_bd_radial(ROLLER_KERNEL_ARGS, const PetscReal x[], const PetscReal n[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f0[])
@@ -133,6 +146,24 @@ static inline void f0_bd_angular(ROLLER_KERNEL_ARGS, const PetscReal x[], const 
 
   f0[0] = -x[1] / r;
   f0[1] = x[0] / r;
+}
+
+/* The order n = constants[0] of the radial displacement on Gamma_C: x/|x| cos(n phi), x/|x| sin(n phi), phi the angle
+   of x (RollerComputeOrderFunctionals). */
+static inline void f0_bd_radial_cos(ROLLER_KERNEL_ARGS, const PetscReal x[], const PetscReal n[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f0[])
+{
+  const PetscReal r = PetscSqrtReal(x[0] * x[0] + x[1] * x[1]), c = PetscCosReal(PetscRealPart(constants[0]) * PetscAtan2Real(x[1], x[0]));
+
+  f0[0] = c * x[0] / r;
+  f0[1] = c * x[1] / r;
+}
+
+static inline void f0_bd_radial_sin(ROLLER_KERNEL_ARGS, const PetscReal x[], const PetscReal n[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f0[])
+{
+  const PetscReal r = PetscSqrtReal(x[0] * x[0] + x[1] * x[1]), s = PetscSinReal(PetscRealPart(constants[0]) * PetscAtan2Real(x[1], x[0]));
+
+  f0[0] = s * x[0] / r;
+  f0[1] = s * x[1] / r;
 }
 
 static inline void f_bd_one(ROLLER_KERNEL_ARGS, const PetscReal x[], const PetscReal n[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f[])

@@ -7,7 +7,7 @@
      mass.c         -contact_mass, the massless contact nodes M_red = T^T M T and their loads T^T L
      mass_transfer.c, mass_layer.c  T: the weights of each Gamma_C node, from the cells around Gamma_C
      solver.c       the step matrices A = c_M M + c_K K of the time schemes, factored once; the defaults of every direct solve
-     functionals.c  w_R, w_alpha and |Gamma_C| (boundary integrals on Gamma_C)
+     functionals.c  w_R, w_alpha and |Gamma_C| (boundary integrals on Gamma_C); the orders of the radial displacement
      accuracy.c     the default h from -ts_phase_error, the breathing and torsional frequencies (the time schemes' dt)
      kernels.h      pointwise FE kernels, the one kernel signature, the material constants */
 #ifndef ROLLER_MODEL_H
@@ -15,6 +15,7 @@
 
 #include <roller_impl.h>
 #include "mesh/mesh.h"
+#include "model/axle.h"
 
 /* material.c */
 PETSC_INTERN PetscErrorCode RollerMaterialSetFromOptions(Roller);
@@ -40,6 +41,7 @@ PETSC_INTERN PetscErrorCode RollerApplyRotation(Vec, PetscReal, Vec); /* cos(phi
 PETSC_INTERN PetscErrorCode RollerDiscretizationSetFromOptions(Roller);
 PETSC_INTERN PetscErrorCode RollerDiscretizationSetUp(Roller);
 PETSC_INTERN PetscErrorCode RollerOperatorDMCreate(Roller, PetscFE, DM *); /* a clone of ctx->mesh.dm with an empty DS of its own */
+PETSC_INTERN PetscErrorCode RollerUnconstrainedDMCreate(Roller, DM *);     /* the same space without the Dirichlet boundary (axle.c) */
 
 /* operators.c */
 PETSC_INTERN PetscErrorCode RollerOperatorsSetUp(Roller);
@@ -65,6 +67,7 @@ PETSC_INTERN PetscErrorCode RollerSchurPCSet(PC);                    /* solver_s
 
 /* functionals.c */
 PETSC_INTERN PetscErrorCode RollerComputeBoundaryFunctionals(Roller);
+PETSC_INTERN PetscErrorCode RollerComputeOrderFunctionals(Roller, PetscInt, Vec[]); /* 2 N vectors: orders 1..N, cos and sin */
 
 /* accuracy.c: the default -mesh_h from the accuracy target -ts_phase_error, the modes that set it and dt */
 PETSC_INTERN PetscErrorCode RollerModeFrequencies(Roller, PetscReal *, PetscReal *);

@@ -133,7 +133,8 @@ PetscErrorCode RollerStepOperatorUpdateGyroscopic(RollerStepOperator *op, PetscR
   PetscFunctionReturn(0);
 }
 
-/* x = A^{-1} b, checked: a direct solve fails only on a zero pivot, an iterative one may diverge. */
+/* x = A^{-1} b, checked: a direct solve fails only on a zero pivot, an iterative one may diverge. With the hub's
+   border (-axle), the eliminated system's x = A_eff^{-1} b = A^{-1} b + Y W Y^T b (Woodbury, model/axle.h). */
 PetscErrorCode RollerStepOperatorSolve(Roller ctx, const RollerStepOperator *op, Vec b, Vec x, PetscReal t)
 {
   KSPConvergedReason reason;
@@ -142,12 +143,76 @@ PetscErrorCode RollerStepOperatorSolve(Roller ctx, const RollerStepOperator *op,
   PetscCall(KSPSolve(op->ksp, b, x));
   PetscCall(KSPGetConvergedReason(op->ksp, &reason));
   PetscCheck(reason > 0, ctx->comm, PETSC_ERR_NOT_CONVERGED, "The step solve at t = %g diverged: %s", (double)t, KSPConvergedReasons[reason]);
+  if (op->border) {
+    PetscScalar yb[3];
+    PetscReal   c[3], w[3];
+
+    PetscCall(VecMDot(b, 3, op->border->Y, yb));
+    for (PetscInt i = 0; i < 3; ++i) c[i] = PetscRealPart(yb[i]);
+    RollerMat3Vec(op->border->W, c, w);
+    for (PetscInt i = 0; i < 3; ++i) yb[i] = w[i];
+    PetscCall(VecMAXPY(x, 3, yb, op->border->Y));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The hub's border of a step matrix (-axle): C = c_M C_M + c_K C_K + c_D C_D (the step matrix's own coefficients on
+   the couplings), Y = A^{-1} C (three solves, once) and C^T Y. Its W follows the step (RollerStepOperatorUpdateBorder). */
+PetscErrorCode RollerStepOperatorSetBorder(Roller ctx, RollerStepOperator *op)
+{
+  struct _n_RollerBorder *bd;
+  const RollerHub        *hub = ctx->axle.hub;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(&bd));
+  for (PetscInt j = 0; j < 3; ++j) {
+    PetscCall(VecDuplicate(hub->c.CM[j], &bd->C[j]));
+    PetscCall(VecAXPBYPCZ(bd->C[j], op->c_M, op->c_K, 0.0, hub->c.CM[j], hub->c.CK[j]));
+    if (op->c_D != 0) PetscCall(VecAXPY(bd->C[j], op->c_D, hub->c.CD[j])); /* the Maxwell branches' instantaneous stiffness */
+    PetscCall(VecDuplicate(hub->c.CM[j], &bd->Y[j]));
+    PetscCall(VecZeroEntries(bd->Y[j]));
+    PetscCall(RollerStepOperatorSolve(ctx, op, bd->C[j], bd->Y[j], 0.0)); /* op->border not set yet: A^{-1} C */
+  }
+  for (PetscInt i = 0; i < 3; ++i)
+    for (PetscInt j = 0; j < 3; ++j) {
+      PetscScalar d;
+
+      PetscCall(VecDot(bd->C[i], bd->Y[j], &d));
+      bd->CtY[3 * i + j] = PetscRealPart(d);
+    }
+  for (PetscInt i = 0; i < 3; ++i)
+    for (PetscInt j = 0; j < i; ++j) bd->CtY[3 * i + j] = bd->CtY[3 * j + i] = 0.5 * (bd->CtY[3 * i + j] + bd->CtY[3 * j + i]);
+  op->border = bd;
+  PetscFunctionReturn(0);
+}
+
+/* The step's W = Z (Z^T (D_A - C^T Y) Z)^{-1} Z^T at t (the constraint's Z of the new level). */
+PetscErrorCode RollerStepOperatorUpdateBorder(Roller ctx, RollerStepOperator *op, PetscReal t, const PetscReal DA[9])
+{
+  PetscReal Sigma[9];
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < 9; ++i) Sigma[i] = DA[i] - op->border->CtY[i];
+  RollerAxleProject(ctx, t, Sigma, op->border->W);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerBorderDestroy(struct _n_RollerBorder **bd)
+{
+  PetscFunctionBeginUser;
+  if (!*bd) PetscFunctionReturn(0);
+  for (PetscInt j = 0; j < 3; ++j) {
+    PetscCall(VecDestroy(&(*bd)->C[j]));
+    PetscCall(VecDestroy(&(*bd)->Y[j]));
+  }
+  PetscCall(PetscFree(*bd));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode RollerStepOperatorDestroy(RollerStepOperator *op)
 {
   PetscFunctionBeginUser;
+  PetscCall(RollerBorderDestroy(&op->border));
   PetscCall(KSPDestroy(&op->ksp));
   PetscCall(MatDestroy(&op->A));
   PetscCall(MatDestroy(&op->A0));

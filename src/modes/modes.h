@@ -2,6 +2,7 @@
      pep.c        (lambda^2 M + lambda C + K) x = 0 for any (M, C, K): TOAR, shift-and-invert, pairs sorted by frequency
      operators.c  M, C, K of the free rotating annulus in the co-rotating or the lab (Eulerian) frame
      rotational.c the lab frame's damping of the objective rate: A_L = a(L u, v) (cells and edges), B_L = (L u, v)
+                  (rotational_edges.c its edge terms, rotational_element.c the pointwise pieces both use)
      classify.c   the circumferential order n and the travelling direction of a mode shape
      steady.c     the steady rolling/sliding state pressed by the sheet (lab frame), one static contact problem
      steady_coulomb.c  its contact law: normal LCP and tangential stick/slip active set, alternated
@@ -14,6 +15,7 @@
 #include <slepcpep.h>
 #include "model/model.h"
 #include "io/io.h"
+#include "friction/friction.h"
 
 /* pep.c: the converged eigenpairs with im >= 0 (one of each conjugate pair), sorted by frequency im, then re. */
 typedef struct _n_RollerPEP *RollerPEP;

@@ -16,12 +16,10 @@
    weakening; mu_s where a node sticks) is repeated until it settles. */
 #include "modes/modes.h"
 
-/* mu(|v|) and its derivative: the law of the step (contact/contact_friction.c) */
+/* mu(|v|) and its derivative: the law of the step (friction/law.c) */
 static void FrictionLaw(Roller ctx, PetscReal v, PetscReal *mu, PetscReal *dmu)
 {
-  const RollerObstacle *o = &ctx->obstacle;
-
-  *mu = RollerFrictionLaw(o->friction, o->friction_static, o->friction_decay, v, dmu);
+  *mu = RollerFrictionMu(&ctx->obstacle, v, dmu);
 }
 
 /* A node on Gamma_C: |x| = r_outer (vertices, and the curved P2 boundary's edge nodes) */
@@ -242,10 +240,12 @@ PetscErrorCode RollerSteadySolve(Roller ctx, Mat Klab, RollerSteady *st)
   const PetscBool friction = ctx->obstacle.friction > 0 || ctx->obstacle.friction_static > 0 ? PETSC_TRUE : PETSC_FALSE;
   const PetscReal vs       = PetscMax(PetscAbsReal(w) * ctx->mesh.r_outer, PetscAbsReal(ctx->obstacle.sheet_speed)) / ctx->mesh.r_outer > 0 ? PetscMax(PetscAbsReal(w) * ctx->mesh.r_outer, PetscAbsReal(ctx->obstacle.sheet_speed)) / ctx->mesh.r_outer : 1.0; /* slips over vs: lengths */
   PetscReal       reach = PetscMax(ctx->obstacle.depth, 1e-3 * ctx->mesh.r_outer), v0 = w * ctx->mesh.r_outer - ctx->obstacle.sheet_speed;
+  PetscReal       range[2]; /* of mu(v): its largest the scale of mu's change */
   KSP             ksp;
   Vec             uf;
 
   PetscFunctionBeginUser;
+  RollerFrictionRange(&ctx->obstacle, range);
   PetscCall(PetscMemzero(st, sizeof(*st)));
   st->difference = ctx->eig.slip_difference;
   PetscCall(KSPCreate(ctx->comm, &ksp));
@@ -296,7 +296,7 @@ PetscErrorCode RollerSteadySolve(Roller ctx, Mat Klab, RollerSteady *st)
         st->mu[j]  = mu;
         st->dmu[j] = dmu;
       }
-      if (change <= 1e-12 * PetscMax(ctx->obstacle.friction_static, 1e-300) || !friction) break;
+      if (change <= 1e-12 * PetscMax(range[1], 1e-300) || !friction) break;
       PetscCheck(st->iterations < 50, ctx->comm, PETSC_ERR_NOT_CONVERGED, "The steady state's mu(v) did not settle in 50 passes (last change %g)", (double)change);
     }
     PetscCall(VecDestroyVecs(m, &wk));

@@ -15,7 +15,7 @@ static const char help[] = "Unit test of the output layer (src/io):\n"
 #include <stdlib.h>
 #include <string.h>
 
-#define NCOLUMNS 28
+#define NCOLUMNS 32
 
 /* One CSV row as written: the step, t, the diagnostics and theta. */
 typedef struct {
@@ -68,7 +68,7 @@ static PetscErrorCode CheckValue(const char path[], PetscInt row, const char *co
 /* Reads path back: the header must be the contract's, then exactly n rows equal to rows[]. */
 static PetscErrorCode CheckCsv(const char path[], const char header[], const Row rows[], PetscInt n)
 {
-  static const char *const columns[NCOLUMNS] = {"step", "t", "R", "alpha", "energy", "contact_nodes", "contact_force", "gap_min", "qp_iterations", "kkt_residual", "theta", "load_work", "obstacle_work", "contact_dissipation", "damping_dissipation", "viscous_dissipation", "contact_flips", "contact_reversals", "friction_force", "shaft_torque", "stick_nodes", "slip_nodes", "friction_work", "shaft_work", "sheet_work", "friction_residual", "coulomb_iterations", "coulomb_fallback"};
+  static const char *const columns[NCOLUMNS] = {"step", "t", "R", "alpha", "energy", "contact_nodes", "contact_force", "gap_min", "qp_iterations", "kkt_residual", "theta", "load_work", "obstacle_work", "contact_dissipation", "damping_dissipation", "viscous_dissipation", "contact_flips", "contact_reversals", "friction_force", "shaft_torque", "stick_nodes", "slip_nodes", "friction_work", "shaft_work", "sheet_work", "friction_residual", "coulomb_iterations", "coulomb_fallback", "axle_y", "hub_rate", "drive_torque", "sheet_speed"};
   char                     line[4096];
   PetscInt                 count = 0;
   FILE                    *fp    = fopen(path, "r");
@@ -117,7 +117,11 @@ static PetscErrorCode CheckCsv(const char path[], const char header[], const Row
                                       (double)r->info.friction.sheet_work,
                                       (double)r->info.friction.residual,
                                       (double)r->info.friction.iterations,
-                                      (double)r->info.friction.fallback};
+                                      (double)r->info.friction.fallback,
+                                      (double)r->info.axle.y,
+                                      (double)r->info.axle.hub_rate,
+                                      (double)r->info.axle.drive_torque,
+                                      (double)r->info.axle.sheet_speed};
 
       for (int c = 0; c < NCOLUMNS; ++c) PetscCall(CheckValue(path, count, columns[c], wrote[c], v[c]));
     }
@@ -136,12 +140,12 @@ static PetscErrorCode TestCsv(const char model_md[])
   PetscBool  exists;
   /* hard cases for a text round trip: -0, non-dyadic fractions, extremes, a subnormal, NaN (no gap without an obstacle) */
   const Row rows[3] = {
-    {0, 0.0, {0.0, -0.0, 0.0, 0, 0.0, (PetscReal)NAN, 0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, 0, {0.0, -0.0, 0, 0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, 0}},                                                                                              0.0              },
-    {1, 0.1, {1.0 / 3.0, -2.0 / 7.0 * 1e-5, PETSC_PI * 1e10, 17, 1e-300, -1e-18, 123456, DBL_EPSILON, -1.0 / 7.0, 1e-19, 5e-324, 0.1, 2.0 / 3.0, 4, 1, {-1.0 / 3.0, 1e-310, 7, 11, 1.0 / 7.0, -2.0 / 3.0, 1e-200, 0.0, 0.0, 0.0, 3e-13, 15, 1}},       1.0 + DBL_EPSILON},
-    {2, 0.2, {DBL_MAX, -DBL_MIN, 4.9406564584124654e-324, 2147483647, 6.02214076e23, 2.5e-3, 1, 0.7, -DBL_MAX, 3.0, -0.0, 1e300, DBL_MIN, 2147483647, 0, {DBL_MAX, -DBL_MIN, 2147483647, 0, 6.02214076e23, -1e300, 0.1, 0.0, 0.0, 0.0, 5e-324, 1, 2}}, -PETSC_PI        },
+    {0, 0.0, {0.0, -0.0, 0.0, 0, 0.0, (PetscReal)NAN, 0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, 0, {0.0, -0.0, 0, 0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0, 0}, {0.0, 0.0, -0.0, 0.0}},                                                                                                              0.0              },
+    {1, 0.1, {1.0 / 3.0, -2.0 / 7.0 * 1e-5, PETSC_PI * 1e10, 17, 1e-300, -1e-18, 123456, DBL_EPSILON, -1.0 / 7.0, 1e-19, 5e-324, 0.1, 2.0 / 3.0, 4, 1, {-1.0 / 3.0, 1e-310, 7, 11, 1.0 / 7.0, -2.0 / 3.0, 1e-200, 0.0, 0.0, 0.0, 3e-13, 15, 1}, {-1.0 / 3.0, PETSC_PI / 10.0, 1e-310, 0.15}}, 1.0 + DBL_EPSILON},
+    {2, 0.2, {DBL_MAX, -DBL_MIN, 4.9406564584124654e-324, 2147483647, 6.02214076e23, 2.5e-3, 1, 0.7, -DBL_MAX, 3.0, -0.0, 1e300, DBL_MIN, 2147483647, 0, {DBL_MAX, -DBL_MIN, 2147483647, 0, 6.02214076e23, -1e300, 0.1, 0.0, 0.0, 0.0, 5e-324, 1, 2}, {DBL_MAX, -DBL_MIN, 5e-324, -1e300}},   -PETSC_PI        },
   };
   const Row resumed[3] = {
-    rows[0], rows[1], {2, 0.2, {-1.0 / 9.0, 1e-7, 2.0 / 3.0, 3, 0.125, -0.5, 9, 1e-17, 1.0 / 3.0, -1.0 / 3.0, 0.25, 0.0, 7e-8, 2, 0, {0.5, -0.25, 1, 2, 3.0, 4.0, -5.0, 0.0, 0.0, 0.0, 1e-9, 3, 0}}, 0.30000000000000004}
+    rows[0], rows[1], {2, 0.2, {-1.0 / 9.0, 1e-7, 2.0 / 3.0, 3, 0.125, -0.5, 9, 1e-17, 1.0 / 3.0, -1.0 / 3.0, 0.25, 0.0, 7e-8, 2, 0, {0.5, -0.25, 1, 2, 3.0, 4.0, -5.0, 0.0, 0.0, 0.0, 1e-9, 3, 0}, {2.0 / 3.0, 0.1, -0.5, 7e-8}}, 0.30000000000000004}
   };
 
   PetscFunctionBeginUser;

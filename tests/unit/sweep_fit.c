@@ -1,8 +1,8 @@
-static const char help[] = "Unit test of a transient map's fit (src/app/sweep_transient.c, docs/squeal.md section 6.5):\n"
+static const char help[] = "Unit test of a transient map's fit (src/sweep/sweep_transient.c, docs/squeal.md section 6.5):\n"
                            "RollerSweepFitGrowth on sampled y(t) = a + b t + A exp(sigma t) cos(omega t + phi) (+ a second, weaker\n"
                            "tone) recovers sigma and omega; a constant has no oscillation (NaN).\n";
 
-#include "app/sweep.h"
+#include "sweep/sweep.h"
 
 /* a + b t + A exp(sigma t) cos(omega t + phi) + A2 cos(omega2 t), n samples from t0 by dt */
 typedef struct {
