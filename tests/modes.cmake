@@ -9,3 +9,10 @@ roller_test(modes_damped modes_damped.py LABELS quick PROCESSORS 2 TIMEOUT 300)
 # the steady rolling/sliding state of -modes -obstacle against the long-time transient (frictionless rolling and
 # sliding to t = 30; rolling with stick zones on Carter's scene at three creeps to t = 70; about 8 min)
 roller_test(squeal_steady squeal_steady.py LABELS long TIMEOUT 2400)
+# -modes with the generalized Maxwell rubber (-rubber maxwell: the augmented state of src/modes/branches.c): the free
+# roller at rest, modal loss factors 2|sigma|/omega within 5 % of the model's, the torsional eigenvalue against its
+# closed form, the frames at rest; a seeded transient decays at the CEA's rate (5 %); the rotating roller's lab frame
+# (the branches transported) against the co-rotating one
+roller_test(modes_maxwell modes_maxwell.py LABELS quick TIMEOUT 300)
+roller_test(modes_maxwell_transient modes_maxwell_transient.py LABELS quick TIMEOUT 300)
+roller_test(modes_maxwell_lab modes_maxwell_lab.py LABELS quick TIMEOUT 600)
