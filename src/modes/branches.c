@@ -9,7 +9,10 @@
                         (the branch's spring against its dashpot: a symmetric problem, positive definite at lambda = 0)
      lab frame          W_i = g_i M:     g_i (M (1 + tau_i lambda) z_i + tau_i theta' B_L z_i - M xi) = 0
                         (z_i transported with the material at the objective rate u_t + theta' L u, L = d_phi - J, in
-                        its L2 (Galerkin) form B_L = (L u, v), the mass damping's of section 1.1: first derivatives)
+                        its L2 (Galerkin) form B_L = (L u, v), the mass damping's of section 1.1: first derivatives;
+                        -modes_branch_transport false drops it: the branches frozen in the lab, an approximation whose
+                        error is the loss factor's change over the Doppler shift n theta', which leaves out the
+                        transported creep spectrum -1/tau_i - i m theta' that crowds shift-and-invert)
 
    Eliminating z_i = xi/(1 + tau_i lambda) (co-rotating) gives back K + sum_i g_i K_d tau_i lambda/(1 + tau_i lambda),
    the complex modulus G*(lambda)/mu of model/rubber.c. The augmented matrices are one AIJ each, in MatNest's layout:
@@ -50,7 +53,8 @@ static PetscErrorCode Combine(PetscReal a, Mat B, PetscReal b, Mat T, Mat *A)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode RollerBranchOperators(Roller ctx, Mat *M, Mat *C, Mat *K)
+/* The augmented (M, C, K) from the frame's; in the lab the branches transported by B_L or frozen */
+static PetscErrorCode Augment(Roller ctx, PetscBool transport, Mat *M, Mat *C, Mat *K)
 {
   const RollerMaterial *mat = &ctx->material;
   const PetscInt        n = mat->nbranch, nb = n + 1;
@@ -64,7 +68,7 @@ PetscErrorCode RollerBranchOperators(Roller ctx, Mat *M, Mat *C, Mat *K)
   PetscCall(PetscCalloc3(nb * nb, &bm, nb * nb, &bc, nb * nb, &bk));
   PetscCall(BlockISs(*M, nb, is));
   W = lab ? ctx->ops.M : ctx->ops.Kd;
-  if (lab && w != 0) {
+  if (lab && w != 0 && transport) {
     PetscReal defect;
 
     PetscCall(RollerAssembleRotationalMass(ctx, &B));
@@ -104,6 +108,35 @@ PetscErrorCode RollerBranchOperators(Roller ctx, Mat *M, Mat *C, Mat *K)
   *M = Ma;
   *C = Ca;
   *K = Ka;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerBranchOperators(Roller ctx, Mat *M, Mat *C, Mat *K)
+{
+  PetscFunctionBeginUser;
+  PetscCall(Augment(ctx, ctx->eig.branch_transport, M, C, K));
+  PetscFunctionReturn(0);
+}
+
+/*
+  RollerBranchSteadyStiffness - the lab K the steady rolling state is solved with: K itself (a new reference), except
+  with -modes_branch_transport false, where the steady state still takes the transported branches (its z_i != xi:
+  the rubber's rolling hysteresis; one linear solve, cheap) and only the eigenproblem freezes them.
+*/
+PetscErrorCode RollerBranchSteadyStiffness(Roller ctx, Mat K, Mat *Ks)
+{
+  Mat m, c;
+
+  PetscFunctionBeginUser;
+  if (ctx->material.rubber != ROLLER_RUBBER_MAXWELL || !ctx->material.nbranch || ctx->eig.branch_transport || ctx->eig.frame != ROLLER_FRAME_LAB || ctx->rotation.omega == 0) {
+    PetscCall(PetscObjectReference((PetscObject)K));
+    *Ks = K;
+    PetscFunctionReturn(0);
+  }
+  PetscCall(RollerModeOperators(ctx, &m, &c, Ks));
+  PetscCall(Augment(ctx, PETSC_TRUE, &m, &c, Ks));
+  PetscCall(MatDestroy(&m));
+  PetscCall(MatDestroy(&c));
   PetscFunctionReturn(0);
 }
 

@@ -14,6 +14,7 @@ PetscErrorCode RollerModesSetFromOptions(Roller ctx)
   ctx->eig.nev             = 20;
   ctx->eig.slip_difference = ROLLER_SLIP_BOX; /* the stick CEA converges with h_c (docs/squeal.md 4.4.4) */
   ctx->eig.skew_defect[0] = ctx->eig.skew_defect[1] = -1.0;
+  ctx->eig.branch_transport                         = PETSC_TRUE; /* the lab frame's Maxwell branches transported with the material (docs/squeal.md 1.2) */
   PetscOptionsBegin(ctx->comm, NULL, "Roller: modes (docs/squeal.md); the eigensolver takes -pep_* and -st_* options (SLEPc PEP, TOAR, shift-and-invert about -pep_target 0)", NULL);
   PetscCall(PetscOptionsBool("-modes", "Compute the modes of the scene (the quadratic eigenproblem) instead of stepping", NULL, ctx->eig.on, &ctx->eig.on, NULL));
   ctx->eig.frame = ctx->obstacle.on ? ROLLER_FRAME_LAB : ROLLER_FRAME_ROTATING; /* rolling is steady in the lab only */
@@ -26,6 +27,8 @@ PetscErrorCode RollerModesSetFromOptions(Roller ctx)
                              ctx->eig.stick_margin, &ctx->eig.stick_margin, NULL));
   PetscCall(PetscOptionsEnum("-modes_slip_difference", "With -obstacle: the steady state's slip along Gamma_C from the displacement at a candidate and its upstream neighbour (docs/squeal.md 3, 4.4.4): box (the slip at their midpoint: the stick CEA converges), upwind (at the candidate) or upwind2 (three points at the candidate: not monotone, fragmented stick zones)", "RollerSlipDifference", RollerSlipDifferences,
                              (PetscEnum)ctx->eig.slip_difference, (PetscEnum *)&ctx->eig.slip_difference, NULL));
+  PetscCall(PetscOptionsBool("-modes_branch_transport", "-rubber maxwell, lab frame: the branches' fields transported with the material (exact); false: frozen in the lab, their transported creep left out (docs/squeal.md 1.2)", NULL, ctx->eig.branch_transport,
+                             &ctx->eig.branch_transport, NULL));
   PetscCall(PetscOptionsString("-modes_csv", "Eigenvalue CSV: re,im,frequency,growth_rate,order,wave,error,loss_factor,rubber_loss_factor", NULL, ctx->eig.csv, ctx->eig.csv, sizeof(ctx->eig.csv), NULL));
   PetscCall(PetscOptionsString("-modes_steady_csv", "With -obstacle: the steady state's contact nodes x,y,normal_force,tangential_force,gap,slip_velocity,mu,state", NULL, ctx->eig.steady_csv, ctx->eig.steady_csv, sizeof(ctx->eig.steady_csv), NULL));
   PetscCall(PetscOptionsString("-modes_output", "Mode shapes: HDF5 file F.h5 (+ XDMF index F.xmf for ParaView)", NULL, ctx->eig.output, ctx->eig.output, sizeof(ctx->eig.output), NULL));
@@ -103,8 +106,8 @@ static PetscErrorCode WriteCsv(Roller ctx)
   if (fp) {
     PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "re,im,frequency,growth_rate,order,wave,error,loss_factor,rubber_loss_factor\n"));
     for (PetscInt j = 0; j < e->n; ++j)
-      PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%s,%.3e,%.17g,%.17g\n", (double)e->re[j], (double)e->im[j], (double)e->im[j], (double)e->re[j], e->order[j], RollerWaves[e->wave[j]], (double)e->error[j],
-                             e->im[j] > 0 ? (double)(-2 * e->re[j] / e->im[j]) : 0.0, (double)e->rubber_loss[j]));
+      PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%s,%.3e,%.17g,%.17g\n", (double)e->re[j], (double)e->im[j], (double)e->im[j], (double)e->re[j], e->order[j], RollerWaves[e->wave[j]], (double)e->error[j], e->im[j] > 0 ? (double)(-2 * e->re[j] / e->im[j]) : 0.0,
+                             (double)e->rubber_loss[j]));
   }
   PetscCall(RollerPartFileClose(ctx->comm, &fp, part, e->csv));
   PetscFunctionReturn(0);
@@ -117,9 +120,9 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   RollerPEP            pep;
   RollerModeClassifier cls;
   Vec                 *xr, *xi, w, zr, zi, fr = NULL, fi = NULL, steady = NULL; /* z: the PEP's vectors; f: with -obstacle, the full ones before the reduction */
-  IS                   kept   = NULL; /* with -obstacle: the dofs of the reduced problem */
-  PetscInt             nstick = 0;    /* and the stick nodes' multipliers after them */
-  PetscReal            band[2];       /* the Maxwell branches' relaxation band, left out */
+  IS                   kept   = NULL;                                           /* with -obstacle: the dofs of the reduced problem */
+  PetscInt             nstick = 0;                                              /* and the stick nodes' multipliers after them */
+  PetscReal            band[2];                                                 /* the Maxwell branches' relaxation band, left out */
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_MODES]));
@@ -127,9 +130,11 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   PetscCall(RollerBranchOperators(ctx, &M, &C, &K));
   if (ctx->obstacle.on) { /* the steady state, and the linearization about it on the kept dofs */
     RollerSteady st;
-    Mat          Mr, Cr, Kr;
+    Mat          Mr, Cr, Kr, Ks;
 
-    PetscCall(RollerSteadySolve(ctx, K, &st));
+    PetscCall(RollerBranchSteadyStiffness(ctx, K, &Ks));
+    PetscCall(RollerSteadySolve(ctx, Ks, &st));
+    PetscCall(MatDestroy(&Ks));
     PetscCall(RollerSteadyReport(ctx, &st));
     PetscCall(MatCreateVecs(K, &fr, &fi));
     if (e->nev) PetscCall(RollerSquealOperators(ctx, &st, M, C, K, &Mr, &Cr, &Kr, &kept, &nstick));
