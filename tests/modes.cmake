@@ -15,4 +15,4 @@ roller_test(squeal_steady squeal_steady.py LABELS long TIMEOUT 2400)
 # (the branches transported) against the co-rotating one
 roller_test(modes_maxwell modes_maxwell.py LABELS quick TIMEOUT 300)
 roller_test(modes_maxwell_transient modes_maxwell_transient.py LABELS quick TIMEOUT 300)
-roller_test(modes_maxwell_lab modes_maxwell_lab.py LABELS quick TIMEOUT 600)
+roller_test(modes_maxwell_lab modes_maxwell_lab.py LABELS quick TIMEOUT 1200)
