@@ -268,14 +268,15 @@ typedef struct {
   PetscBool            on;
   RollerFrame          frame;
   PetscInt             nev;
-  PetscReal            stick_eps;       /* the stick nodes' regularized cone, a slip speed (docs/squeal.md 4.4); 0: rigid stick */
-  PetscReal            stick_margin;    /* a stick node with |T| > (1 - margin) mu N is linearized as slipping (docs/squeal.md 4.4.2); 0: none */
-  RollerSlipDifference slip_difference; /* the steady slip along Gamma_C (docs/squeal.md 3, 4.4.4) */
+  PetscReal            stick_eps;        /* the stick nodes' regularized cone, a slip speed (docs/squeal.md 4.4); 0: rigid stick */
+  PetscReal            stick_margin;     /* a stick node with |T| > (1 - margin) mu N is linearized as slipping (docs/squeal.md 4.4.2); 0: none */
+  RollerSlipDifference slip_difference;  /* the steady slip along Gamma_C (docs/squeal.md 3, 4.4.4) */
+  PetscBool            branch_transport; /* -rubber maxwell in the lab: the branches transported (B_L), or frozen (docs/squeal.md 1.2) */
   char                 csv[PETSC_MAX_PATH_LEN], output[PETSC_MAX_PATH_LEN], steady_csv[PETSC_MAX_PATH_LEN];
-  /* the result, sorted by frequency: n eigenvalues re + i im (im >= 0), their order, wave (RollerWave) and error */
-  PetscInt   n, *order, *wave, dofs; /* dofs: the size of the eigenproblem */
-  PetscReal *re, *im, *error;
-  PetscReal  skew_defect[2]; /* the damped lab frame's ||A + A^T||/||A|| of A_L and B_L (-1: not built) */
+  /* the result, sorted by frequency: n eigenvalues re + i im (im >= 0), their order, wave (RollerWave), error and rubber loss factor */
+  PetscInt   n, *order, *wave, dofs;        /* dofs: the size of the eigenproblem */
+  PetscReal *re, *im, *error, *rubber_loss; /* rubber_loss: the rubber's loss factor of the shape at its frequency (modes/branches.c) */
+  PetscReal  skew_defect[2];                /* the damped lab frame's ||A + A^T||/||A|| of A_L and B_L (-1: not built) */
 } RollerEigen;
 
 /* A component's own state in the checkpoint (RollerCheckpointAddVec, RollerCheckpointAddReals in

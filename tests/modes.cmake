@@ -15,3 +15,10 @@ roller_test(axle_modes axle_modes.py LABELS quick mpi PROCESSORS 2 TIMEOUT 600)
 # the CEA on the axle's stick-slip onset scenes (tests/axle_stickslip.py (a)): the drive's growth rate against the closed
 # form and the finite elements' transient, the onset slip
 roller_test(axle_modes_onset axle_modes_onset.py LABELS long PROCESSORS 2 TIMEOUT 1800)
+# -modes with the generalized Maxwell rubber (-rubber maxwell: the augmented state of src/modes/branches.c): the free
+# roller at rest, modal loss factors 2|sigma|/omega within 5 % of the model's, the torsional eigenvalue against its
+# closed form, the frames at rest; a seeded transient decays at the CEA's rate (5 %); the rotating roller's lab frame
+# (the branches transported) against the co-rotating one
+roller_test(modes_maxwell modes_maxwell.py LABELS quick TIMEOUT 300)
+roller_test(modes_maxwell_transient modes_maxwell_transient.py LABELS quick TIMEOUT 300)
+roller_test(modes_maxwell_lab modes_maxwell_lab.py LABELS quick TIMEOUT 1200)

@@ -254,6 +254,15 @@ sc = run.scene_json("s", opts, run.detect_units(opts), {"distance_m": 2.0, "widt
 c.check(sc["units"] == "si" and sc["friction"] == 0.7 and opts["obstacle"] == "true" and abs(sc["creep"] - (1 - 0.2356 / (19.04 * 0.0125))) < 1e-15
         and sc["kelvin_voigt_tau"] == 8e-6 and sc["metres_per_unit"] == 1.0 and sc["listener"]["distance_m"] == 2.0,
         f"scene.json of an SI scene with -friction 0.7: units {sc['units']}, creep {sc['creep']:.6f}, listener {sc['listener']}")
+# a Maxwell rubber's scene: the loss factor is each mode's own (modes.csv's rubber_loss_factor), not 2 pi f tau
+with open(yml, "a") as f:
+    f.write("rubber: maxwell\nrubber_loss_factor: 0.1\nrubber_band: 100,5000\n")
+mx = run.scene_json("m", run.scene_options(yml, ["-viscosity", "0"]), "si")
+row = {"re": "-40.0", "im": "3200.0", "growth_rate": "-40.0", "order": "0", "wave": "standing", "rubber_loss_factor": "0.0987"}
+v = report.verdict(row, mx)
+c.check(mx.get("rubber") == "maxwell" and "kelvin_voigt_tau" not in mx and mx["loss_factor"] == 0.1 and v["loss_factor"] == 0.0987
+        and abs(v["loss_factor_margin"] + 0.025) < 1e-15,
+        f"scene.json of a Maxwell rubber: {mx.get('rubber')}, loss factor {mx.get('loss_factor')}; the verdict takes the mode's {v['loss_factor']}, margin {v['loss_factor_margin']}")
 creeps, speeds, mus = run.map_grid(sc)
 c.check(sc["creep"] in creeps and 1.0 in creeps and speeds[creeps.index(sc["creep"])] == 0.2356 and speeds[-1] == 0.0
         and mus == [0.35, 0.7, 1.0], f"the default map: creeps {[round(x, 5) for x in creeps]}, frictions {mus}")

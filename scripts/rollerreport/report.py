@@ -2,7 +2,8 @@
 
 The folder holds what the steps of the one-command run write (any may be missing; the report says so):
 - `scene.json`: {"name", "units": "si" | "nd", "loss_factor" (or "kelvin_voigt_tau" in the scene's unit of time:
-  the loss factor at the mode's frequency f is then 2 pi f tau), "friction", "creep", "pitch_si_hz" (nd scenes: the
+  the loss factor at the mode's frequency f is then 2 pi f tau; or "rubber": "maxwell": the mode's own
+  rubber_loss_factor column of modes.csv), "friction", "creep", "pitch_si_hz" (nd scenes: the
   SI pitch the predicted mode is heard at), "seconds_per_unit" (optional; else f_nd / pitch_si_hz), "sheet_speed"
   and "surface_speed" (omega r_outer: the map's sheet speeds as creeps)} (rollerreport.run writes it);
 - `commands.json`: the steps as rollerreport.run ran them (listed in the report);
@@ -75,6 +76,8 @@ def verdict(mode, scene, real=None):
     eta = num(scene.get("loss_factor"), 0.0)
     if "kelvin_voigt_tau" in scene:  # Kelvin-Voigt: the loss factor at the mode's frequency, 2 pi f tau (tau and f
         eta = 2 * math.pi * abs(f) * num(scene["kelvin_voigt_tau"])  # in the scene's units of time, SI or not)
+    elif scene.get("rubber") == "maxwell" and "rubber_loss_factor" in mode:  # the Maxwell rubber's loss factor of the
+        eta = num(mode["rubber_loss_factor"])  # mode's shape at its frequency (docs/squeal.md 1.2)
     si = scene.get("units", "nd") == "si"
     s = num(scene.get("seconds_per_unit")) if "seconds_per_unit" in scene else (1.0 if si else f / num(scene.get("pitch_si_hz")))
     pitch = f if si else (num(scene.get("pitch_si_hz")) if "pitch_si_hz" in scene else f / s)

@@ -86,8 +86,13 @@ def scene_json(name, opts, units, listener=None, seconds_per_unit=None):
     surface = omega * r
     scene = {"name": name, "units": units, "friction": value(opts, "friction"), "sheet_speed": value(opts, "sheet_speed"),
              "surface_speed": surface, "creep": 1.0 - value(opts, "sheet_speed") / surface if surface else float("nan"),
-             "kelvin_voigt_tau": value(opts, "viscosity"), "r_outer": r,
-             "metres_per_unit": 1.0 if units == "si" else REF_R_OUTER / r}
+             "r_outer": r, "metres_per_unit": 1.0 if units == "si" else REF_R_OUTER / r}
+    if opts.get("rubber", "kelvin_voigt") == "maxwell":  # the modes' CSV gives each mode's loss factor (rubber_loss_factor)
+        scene["rubber"] = "maxwell"
+        if "rubber_loss_factor" in opts:
+            scene["loss_factor"] = float(opts["rubber_loss_factor"])
+    else:
+        scene["kelvin_voigt_tau"] = value(opts, "viscosity")
     if listener:
         scene["listener"] = dict(listener)
     if "friction_static" in opts:

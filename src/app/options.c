@@ -166,7 +166,6 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
              RollerFrames[ctx->eig.frame]);
   PetscCheck(!(ctx->eig.on && ctx->disc.contact_mass != ROLLER_CONTACT_MASS_CONSISTENT), ctx->comm, PETSC_ERR_ARG_INCOMP, "-modes takes the consistent mass (-contact_mass consistent), not %s", RollerContactMasses[ctx->disc.contact_mass]);
   PetscCheck(!(ctx->eig.on && (ctx->rotation.a != 0 || ctx->ck.restart[0] || ctx->disc.static_solve)), ctx->comm, PETSC_ERR_ARG_INCOMP, "-modes linearizes about steady rotation: it takes no -theta_a, -restart or -static");
-  PetscCheck(!(ctx->eig.on && ctx->material.rubber == ROLLER_RUBBER_MAXWELL), ctx->comm, PETSC_ERR_SUP, "-modes does not carry -rubber maxwell yet (its branches are in the time step only): use -rubber kelvin_voigt");
   PetscCheck(!(ctx->init.mms != ROLLER_MMS_NONE && ctx->material.rubber == ROLLER_RUBBER_MAXWELL), ctx->comm, PETSC_ERR_ARG_INCOMP, "-mms %s: the manufactured solutions' loads are those of the elastic or Kelvin-Voigt solid, not of -rubber maxwell",
              RollerMMSTypes[ctx->init.mms]);
   PetscCheck(!(ctx->eig.on && ctx->obstacle.sheet_mass > 0), ctx->comm, PETSC_ERR_SUP, "-sheet_mass with -modes: the steady state takes the sheet's speed -sheet_speed (the force balance of a moving sheet is the transient's)");

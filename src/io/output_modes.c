@@ -1,7 +1,7 @@
 /* The mode shapes of -modes (-modes_output F.h5, docs/squeal.md): the straight-sided mesh, every mode's real and
    imaginary parts at the vertices (mode_re, mode_im: P1, 3 components, as /vertex_fields series indexed by the
    mode, whose XDMF "time" is the mode's row in the eigenvalue CSV), the eigenvalues (/modes attributes re, im,
-   order), the run's /parameters, and the full FE vectors shape_<j>_re, shape_<j>_im (and with -obstacle the
+   order), the run's /parameters (with -rubber maxwell its branches maxwell_tau_i, maxwell_weight_i), and the full FE vectors shape_<j>_re, shape_<j>_im (and with -obstacle the
    steady state, steady) that -initial_condition mode reads back. Written as F.part and renamed when complete; the index F.xmf beside it. */
 #include "output.h"
 
@@ -52,6 +52,17 @@ PetscErrorCode RollerModeShapesWrite(Roller ctx, const char path[], PetscInt n, 
     PetscCall(PetscViewerHDF5WriteAttribute(out.h5, "/parameters", "modes_frame", PETSC_REAL, &frame));
     if (ctx->eig.skew_defect[0] >= 0) PetscCall(PetscViewerHDF5WriteAttribute(out.h5, "/parameters", "skew_defect_A_L", PETSC_REAL, &ctx->eig.skew_defect[0]));
     if (ctx->eig.skew_defect[1] >= 0) PetscCall(PetscViewerHDF5WriteAttribute(out.h5, "/parameters", "skew_defect_B_L", PETSC_REAL, &ctx->eig.skew_defect[1]));
+    if (ctx->material.rubber == ROLLER_RUBBER_MAXWELL) { /* the rubber the modes are of: the branches, given or fitted */
+      PetscCall(PetscViewerHDF5WriteAttribute(out.h5, "/parameters", "maxwell_branches", PETSC_INT, &ctx->material.nbranch));
+      for (PetscInt i = 0; i < ctx->material.nbranch; ++i) {
+        char name[32];
+
+        PetscCall(PetscSNPrintf(name, sizeof(name), "maxwell_tau_%" PetscInt_FMT, i));
+        PetscCall(PetscViewerHDF5WriteAttribute(out.h5, "/parameters", name, PETSC_REAL, &ctx->material.tau[i]));
+        PetscCall(PetscSNPrintf(name, sizeof(name), "maxwell_weight_%" PetscInt_FMT, i));
+        PetscCall(PetscViewerHDF5WriteAttribute(out.h5, "/parameters", name, PETSC_REAL, &ctx->material.g[i]));
+      }
+    }
   }
   if (steady) PetscCall(RollerPlainVecView(steady, "steady", out.h5, PETSC_FALSE)); /* the state the modes linearize about (lab frame) */
   if (n) {

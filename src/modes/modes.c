@@ -1,6 +1,7 @@
 /* -modes (docs/squeal.md): instead of stepping, the modes of the scene, the quadratic eigenproblem of
    operators.c solved by pep.c, each eigenvalue classified (classify.c), written one row per eigenvalue to the
-   CSV (-modes_csv F: re,im,frequency,growth_rate,order,wave,error, sorted by frequency; written as F.part and
+   CSV (-modes_csv F: re,im,frequency,growth_rate,order,wave,error,loss_factor,rubber_loss_factor, sorted by
+   frequency; loss_factor = -2 re/im, rubber_loss_factor the rubber's for the shape at im, branches.c; written as F.part and
    renamed when complete) and printed; the shapes to HDF5 + XDMF (-modes_output F.h5, io/output_modes.c). */
 #include "modes/modes.h"
 
@@ -13,6 +14,7 @@ PetscErrorCode RollerModesSetFromOptions(Roller ctx)
   ctx->eig.nev             = 20;
   ctx->eig.slip_difference = ROLLER_SLIP_BOX; /* the stick CEA converges with h_c (docs/squeal.md 4.4.4) */
   ctx->eig.skew_defect[0] = ctx->eig.skew_defect[1] = -1.0;
+  ctx->eig.branch_transport                         = PETSC_TRUE; /* the lab frame's Maxwell branches transported with the material (docs/squeal.md 1.2) */
   PetscOptionsBegin(ctx->comm, NULL, "Roller: modes (docs/squeal.md); the eigensolver takes -pep_* and -st_* options (SLEPc PEP, TOAR, shift-and-invert about -pep_target 0)", NULL);
   PetscCall(PetscOptionsBool("-modes", "Compute the modes of the scene (the quadratic eigenproblem) instead of stepping", NULL, ctx->eig.on, &ctx->eig.on, NULL));
   ctx->eig.frame = ctx->obstacle.on || ctx->axle.on ? ROLLER_FRAME_LAB : ROLLER_FRAME_ROTATING; /* rolling, and the axle's vertical guide, are steady in the lab only */
@@ -25,7 +27,9 @@ PetscErrorCode RollerModesSetFromOptions(Roller ctx)
                              ctx->eig.stick_margin, &ctx->eig.stick_margin, NULL));
   PetscCall(PetscOptionsEnum("-modes_slip_difference", "With -obstacle: the steady state's slip along Gamma_C from the displacement at a candidate and its upstream neighbour (docs/squeal.md 3, 4.4.4): box (the slip at their midpoint: the stick CEA converges), upwind (at the candidate) or upwind2 (three points at the candidate: not monotone, fragmented stick zones)", "RollerSlipDifference", RollerSlipDifferences,
                              (PetscEnum)ctx->eig.slip_difference, (PetscEnum *)&ctx->eig.slip_difference, NULL));
-  PetscCall(PetscOptionsString("-modes_csv", "Eigenvalue CSV: re,im,frequency,growth_rate,order,wave,error", NULL, ctx->eig.csv, ctx->eig.csv, sizeof(ctx->eig.csv), NULL));
+  PetscCall(PetscOptionsBool("-modes_branch_transport", "-rubber maxwell, lab frame: the branches' fields transported with the material (exact); false: frozen in the lab, their transported creep left out (docs/squeal.md 1.2)", NULL, ctx->eig.branch_transport,
+                             &ctx->eig.branch_transport, NULL));
+  PetscCall(PetscOptionsString("-modes_csv", "Eigenvalue CSV: re,im,frequency,growth_rate,order,wave,error,loss_factor,rubber_loss_factor", NULL, ctx->eig.csv, ctx->eig.csv, sizeof(ctx->eig.csv), NULL));
   PetscCall(PetscOptionsString("-modes_steady_csv", "With -obstacle: the steady state's contact nodes x,y,normal_force,tangential_force,gap,slip_velocity,mu,state", NULL, ctx->eig.steady_csv, ctx->eig.steady_csv, sizeof(ctx->eig.steady_csv), NULL));
   PetscCall(PetscOptionsString("-modes_output", "Mode shapes: HDF5 file F.h5 (+ XDMF index F.xmf for ParaView)", NULL, ctx->eig.output, ctx->eig.output, sizeof(ctx->eig.output), NULL));
   PetscOptionsEnd();
@@ -103,9 +107,10 @@ static PetscErrorCode WriteCsv(Roller ctx, const PetscReal *hub)
   PetscFunctionBeginUser;
   PetscCall(RollerPartFileOpen(ctx->comm, e->csv, "-modes_csv", part, sizeof(part), &fp));
   if (fp) {
-    PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "re,im,frequency,growth_rate,order,wave,error%s\n", hub ? ",axle_y,hub_phi" : ""));
+    PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "re,im,frequency,growth_rate,order,wave,error,loss_factor,rubber_loss_factor%s\n", hub ? ",axle_y,hub_phi" : ""));
     for (PetscInt j = 0; j < e->n; ++j) {
-      PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%s,%.3e", (double)e->re[j], (double)e->im[j], (double)e->im[j], (double)e->re[j], e->order[j], RollerWaves[e->wave[j]], (double)e->error[j]));
+      PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%s,%.3e,%.17g,%.17g", (double)e->re[j], (double)e->im[j], (double)e->im[j], (double)e->re[j], e->order[j], RollerWaves[e->wave[j]], (double)e->error[j], e->im[j] > 0 ? (double)(-2 * e->re[j] / e->im[j]) : 0.0,
+                             (double)e->rubber_loss[j]));
       if (hub) PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, ",%.17g,%.17g", (double)hub[2 * j], (double)hub[2 * j + 1]));
       PetscCall(PetscFPrintf(PETSC_COMM_SELF, fp, "\n"));
     }
@@ -120,26 +125,31 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   Mat                  M, C, K;
   RollerPEP            pep;
   RollerModeClassifier cls;
-  Vec                 *xr, *xi, w, zr = NULL, zi = NULL, steady = NULL, ar = NULL, ai = NULL; /* ar, ai: with -axle, the body's and the hub's */
+  Vec                 *xr, *xi, w, zr = NULL, zi = NULL, fr = NULL, fi = NULL, steady = NULL; /* z: the PEP's vectors; f: with -obstacle, the full ones before the reduction */
   PetscReal           *hub    = NULL;                                                         /* with -axle: |Y|, |phi| of each mode */
   IS                   kept   = NULL;                                                         /* with -obstacle: the dofs of the reduced problem */
   PetscInt             nstick = 0;                                                            /* and the stick nodes' multipliers after them */
+  PetscReal            band[2];                                                               /* the Maxwell branches' relaxation band, left out */
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_MODES]));
   PetscCall(RollerModeOperators(ctx, &M, &C, &K));
+  PetscCall(RollerBranchOperators(ctx, &M, &C, &K));
   if (ctx->obstacle.on) { /* the steady state, and the linearization about it on the kept dofs */
     RollerSteady st;
-    Mat          Mr, Cr, Kr;
+    Mat          Mr, Cr, Kr, Ks;
     PetscReal    q[2]; /* with -axle: the hub's steady (Y, phi) */
 
-    if (ctx->axle.on) PetscCall(RollerAxleSteadySolve(ctx, K, &st, q));
-    else PetscCall(RollerSteadySolve(ctx, K, &st));
+    PetscCall(RollerBranchSteadyStiffness(ctx, K, &Ks)); /* -modes refuses -axle with -rubber maxwell */
+    if (ctx->axle.on) PetscCall(RollerAxleSteadySolve(ctx, Ks, &st, q));
+    else PetscCall(RollerSteadySolve(ctx, Ks, &st));
+    PetscCall(MatDestroy(&Ks));
     PetscCall(RollerSteadyReport(ctx, &st));
     if (ctx->axle.on && e->nev) PetscCall(RollerAxleModeOperators(ctx, &M, &C, &K));
+    PetscCall(MatCreateVecs(K, &fr, &fi));
     if (e->nev) PetscCall(RollerSquealOperators(ctx, &st, M, C, K, &Mr, &Cr, &Kr, &kept, &nstick));
-    steady = st.u; /* kept for the shapes' file */
-    st.u   = NULL;
+    PetscCall(VecDuplicate(ctx->ops.coordinates, &steady)); /* kept for the shapes' file: the displacement */
+    PetscCall(RollerBranchRestrict(st.u, steady));
     PetscCall(RollerSteadyDestroy(&st, PETSC_TRUE));
     PetscCall(MatDestroy(&M));
     PetscCall(MatDestroy(&C));
@@ -154,44 +164,41 @@ PetscErrorCode RollerModesSolve(Roller ctx)
     C = Cr;
     K = Kr;
   } else if (ctx->axle.on) PetscCall(RollerAxleModeOperators(ctx, &M, &C, &K));
-  PetscCall(RollerPEPCreate(ctx->comm, M, C, K, e->nev, nstick ? PETSC_TRUE : PETSC_FALSE, &pep));
+  PetscCall(RollerPEPCreate(ctx->comm, M, C, K, e->nev, nstick ? PETSC_TRUE : PETSC_FALSE, RollerBranchRelaxationBand(ctx, band) ? band : NULL, &pep));
   PetscCall(RollerPEPSolve(pep, &e->n));
   PetscCall(RollerModeClassifierCreate(ctx, &cls));
-  PetscCall(PetscFree5(e->order, e->wave, e->re, e->im, e->error));
-  PetscCall(PetscMalloc5(e->n, &e->order, e->n, &e->wave, e->n, &e->re, e->n, &e->im, e->n, &e->error));
+  PetscCall(PetscFree6(e->order, e->wave, e->re, e->im, e->error, e->rubber_loss));
+  PetscCall(PetscMalloc6(e->n, &e->order, e->n, &e->wave, e->n, &e->re, e->n, &e->im, e->n, &e->error, e->n, &e->rubber_loss));
   PetscCall(VecDuplicateVecs(ctx->ops.coordinates, e->n, &xr));
   PetscCall(VecDuplicateVecs(ctx->ops.coordinates, e->n, &xi));
   PetscCall(VecDuplicate(ctx->ops.coordinates, &w));
-  if (ctx->axle.on) {
-    PetscCall(RollerAxleModeVec(w, &ar));
-    PetscCall(VecDuplicate(ar, &ai));
-    PetscCall(PetscMalloc1(2 * e->n, &hub));
-  }
+  PetscCall(MatCreateVecs(M, &zr, &zi));
+  if (ctx->axle.on) PetscCall(PetscMalloc1(2 * e->n, &hub));
   for (PetscInt j = 0; j < e->n; ++j) {
     RollerWave wave;
     PetscReal  qr[2] = {0, 0}, qi[2] = {0, 0}, f[2] = {0, 0};
 
+    PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], zr, zi));
     if (kept) { /* the reduced vector into the full space; the active nodes' normal dofs are 0 */
-      if (!zr) PetscCall(MatCreateVecs(M, &zr, &zi));
-      PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], zr, zi));
-      PetscCall(KeptToFull(kept, zr, ar ? ar : xr[j]));
-      PetscCall(KeptToFull(kept, zi, ai ? ai : xi[j]));
-    } else if (ctx->ops.V) { /* -rom: the shape V z of the reduced model's coordinates z (-rom refuses -axle) */
-      if (!zr) PetscCall(MatCreateVecs(ctx->ops.V, &zr, NULL));
-      if (!zi) PetscCall(VecDuplicate(zr, &zi));
-      PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], zr, zi));
+      PetscCall(KeptToFull(kept, zr, fr));
+      PetscCall(KeptToFull(kept, zi, fi));
+    }
+    if (ctx->ops.V && !kept) { /* -rom: the shape V z of the reduced model's coordinates z (-rom refuses -axle) */
       PetscCall(MatMult(ctx->ops.V, zr, xr[j]));
       PetscCall(MatMult(ctx->ops.V, zi, xi[j]));
-    } else PetscCall(RollerPEPGetPair(pep, j, &e->re[j], &e->im[j], ar ? ar : xr[j], ai ? ai : xi[j]));
-    if (ar) { /* the body's part, and the hub's */
-      PetscCall(RollerAxleModeSplit(ar, xr[j], qr));
-      PetscCall(RollerAxleModeSplit(ai, xi[j], qi));
+    } else if (hub) { /* the body's part, and the hub's */
+      PetscCall(RollerAxleModeSplit(kept ? fr : zr, xr[j], qr));
+      PetscCall(RollerAxleModeSplit(kept ? fi : zi, xi[j], qi));
+    } else {
+      PetscCall(RollerBranchRestrict(kept ? fr : zr, xr[j])); /* the displacement part (all of it without branches) */
+      PetscCall(RollerBranchRestrict(kept ? fi : zi, xi[j]));
     }
     PetscCall(RollerPEPGetError(pep, j, &e->error[j]));
     PetscCall(Normalize(xr[j], xi[j], w, f));
     if (hub) /* scaled like the body: |q f| */
       for (PetscInt k = 0; k < 2; ++k) hub[2 * j + k] = PetscSqrtReal((qr[k] * qr[k] + qi[k] * qi[k]) * (f[0] * f[0] + f[1] * f[1]));
     PetscCall(RollerModeClassify(cls, xr[j], xi[j], &e->order[j], &wave));
+    PetscCall(RollerBranchLossFactor(ctx, xr[j], xi[j], e->im[j], &e->rubber_loss[j]));
     e->wave[j] = wave;
   }
   PetscCall(PetscLogStagePop());
@@ -212,8 +219,8 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   PetscCall(VecDestroy(&steady));
   PetscCall(VecDestroy(&zr));
   PetscCall(VecDestroy(&zi));
-  PetscCall(VecDestroy(&ar));
-  PetscCall(VecDestroy(&ai));
+  PetscCall(VecDestroy(&fr));
+  PetscCall(VecDestroy(&fi));
   PetscCall(PetscFree(hub));
   PetscCall(ISDestroy(&kept));
   PetscCall(RollerModeClassifierDestroy(&cls));
@@ -227,7 +234,7 @@ PetscErrorCode RollerModesSolve(Roller ctx)
 PetscErrorCode RollerModesDestroy(Roller ctx)
 {
   PetscFunctionBeginUser;
-  PetscCall(PetscFree5(ctx->eig.order, ctx->eig.wave, ctx->eig.re, ctx->eig.im, ctx->eig.error));
+  PetscCall(PetscFree6(ctx->eig.order, ctx->eig.wave, ctx->eig.re, ctx->eig.im, ctx->eig.error, ctx->eig.rubber_loss));
   ctx->eig.n = 0;
   PetscFunctionReturn(0);
 }

@@ -20,14 +20,24 @@
 
 /* pep.c: the converged eigenpairs with im >= 0 (one of each conjugate pair), sorted by frequency im, then re. */
 typedef struct _n_RollerPEP *RollerPEP;
-PETSC_INTERN PetscErrorCode  RollerPEPCreate(MPI_Comm, Mat, Mat, Mat, PetscInt, PetscBool, RollerPEP *); /* M, C, K, nev (-pep_* may override), pivoting LU */
-PETSC_INTERN PetscErrorCode  RollerPEPSolve(RollerPEP, PetscInt *);                                      /* the number of pairs kept */
-PETSC_INTERN PetscErrorCode  RollerPEPGetPair(RollerPEP, PetscInt, PetscReal *, PetscReal *, Vec, Vec);  /* re, im, x_re, x_im (vectors may be NULL) */
-PETSC_INTERN PetscErrorCode  RollerPEPGetError(RollerPEP, PetscInt, PetscReal *);                        /* backward error of pair i */
-PETSC_INTERN PetscErrorCode  RollerPEPDestroy(RollerPEP *);
+PETSC_INTERN PetscErrorCode RollerPEPCreate(MPI_Comm, Mat, Mat, Mat, PetscInt, PetscBool, const PetscReal[2], RollerPEP *); /* M, C, K, nev (-pep_* may override), pivoting LU, the band [r_lo, r_hi] of decay rates whose overdamped eigenvalues are left out (or NULL) */
+PETSC_INTERN PetscErrorCode RollerPEPSolve(RollerPEP, PetscInt *);                                                          /* the number of pairs kept */
+PETSC_INTERN PetscErrorCode RollerPEPGetPair(RollerPEP, PetscInt, PetscReal *, PetscReal *, Vec, Vec);                      /* re, im, x_re, x_im (vectors may be NULL) */
+PETSC_INTERN PetscErrorCode RollerPEPGetError(RollerPEP, PetscInt, PetscReal *);                                            /* backward error of pair i */
+PETSC_INTERN PetscErrorCode RollerPEPDestroy(RollerPEP *);
 
 /* operators.c: the (M, C, K) of the linearized free annulus in ctx->eig.frame (docs/squeal.md section 1) */
 PETSC_INTERN PetscErrorCode RollerModeOperators(Roller, Mat *, Mat *, Mat *);
+
+/* branches.c: the Maxwell branches' augmented state (xi, z_1, ..., z_n) (docs/squeal.md section 1.2): the frame's
+   (M, C, K) replaced by the augmented ones (unchanged without -rubber maxwell); the xi part of an augmented vector (the
+   leading local entries), an augmented vector of xi and zero branches */
+PETSC_INTERN PetscErrorCode RollerBranchOperators(Roller, Mat *, Mat *, Mat *);
+PETSC_INTERN PetscErrorCode RollerBranchSteadyStiffness(Roller, Mat, Mat *); /* the lab K of the steady state (the branches transported) */
+PETSC_INTERN PetscErrorCode RollerBranchRestrict(Vec, Vec);
+PETSC_INTERN PetscErrorCode RollerBranchExtend(Vec, Vec);
+PETSC_INTERN PetscBool      RollerBranchRelaxationBand(Roller, PetscReal[2]);                 /* the decay rates [r_lo, r_hi] of the relaxation spectrum */
+PETSC_INTERN PetscErrorCode RollerBranchLossFactor(Roller, Vec, Vec, PetscReal, PetscReal *); /* the rubber's loss factor of the shape xr + i xi at w */
 
 /* rotational.c: the damped lab frame's forms of the rotational rate L u = d_phi u - J u (docs/squeal.md section 1.1) */
 PETSC_INTERN PetscErrorCode RollerAssembleRotationalElastic(Roller, Mat *, PetscReal *); /* A_L = a(L u, v): cells + edges; the cells' skewness defect */

@@ -2,7 +2,8 @@
    shift-and-invert about the target (default 0: the slowest modes; one factorization of K - sigma C + sigma^2 M,
    a direct solve like the time step's), every -pep_* / -st_* option honoured. With real scalars a complex pair
    lambda, conj(lambda) comes back as two eigenvalues: one of each is kept (im >= 0), with its vector
-   x_re + i x_im. The same path serves the roller (modes.c) and the 2-DOF friction model of the unit test. */
+   x_re + i x_im. Optionally a band of overdamped eigenvalues is left out (the Maxwell branches' relaxation
+   spectrum). The same path serves the roller (modes.c) and the 2-DOF friction model of the unit test. */
 #include "modes/modes.h"
 
 struct _n_RollerPEP {
@@ -12,7 +13,23 @@ struct _n_RollerPEP {
   PetscReal *re, *im;
 };
 
-PetscErrorCode RollerPEPCreate(MPI_Comm comm, Mat M, Mat C, Mat K, PetscInt nev, PetscBool pivot, RollerPEP *p)
+/* The region of the wanted eigenvalues: all but the trapezoid -band[1] <= Re <= -band[0], |Im| <= -Re (the
+   eigenvalues there have a modal loss factor 2|Re|/|Im| >= 2: overdamped; branches.c puts the Maxwell branches'
+   relaxation spectrum there, docs/squeal.md section 1.2). */
+static PetscErrorCode ExcludeBand(PEP pep, const PetscReal band[2])
+{
+  RG          rg;
+  PetscScalar vr[4] = {-band[0], -band[1], -band[1], -band[0]}, vi[4] = {band[0], band[1], -band[1], -band[0]};
+
+  PetscFunctionBeginUser;
+  PetscCall(PEPGetRG(pep, &rg));
+  PetscCall(RGSetType(rg, RGPOLYGON));
+  PetscCall(RGPolygonSetVertices(rg, 4, vr, vi));
+  PetscCall(RGSetComplement(rg, PETSC_TRUE));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerPEPCreate(MPI_Comm comm, Mat M, Mat C, Mat K, PetscInt nev, PetscBool pivot, const PetscReal exclude[2], RollerPEP *p)
 {
   RollerPEP r;
   Mat       ops[3] = {K, C, M};
@@ -44,6 +61,7 @@ PetscErrorCode RollerPEPCreate(MPI_Comm comm, Mat M, Mat C, Mat K, PetscInt nev,
     PetscCall(KSPGetPC(ksp, &pc));
     PetscCall(PCFactorSetMatSolverType(pc, size > 1 ? MATSOLVERMUMPS : MATSOLVERSUPERLU));
   }
+  if (exclude) PetscCall(ExcludeBand(r->pep, exclude));
   PetscCall(PEPSetFromOptions(r->pep));
   *p = r;
   PetscFunctionReturn(0);

@@ -28,8 +28,9 @@ static PetscBool OnOuterCircle(Roller ctx, PetscReal x0, PetscReal x1)
   return PetscAbsReal(PetscSqrtReal(x0 * x0 + x1 * x1) - ctx->mesh.r_outer) <= 1e-8 * ctx->mesh.r_outer ? PETSC_TRUE : PETSC_FALSE;
 }
 
-/* The Gamma_C nodes (|x| = r_outer) with rigid gap y_2 - g below reach, gathered on every rank, sorted by angle. */
-static PetscErrorCode Candidates(Roller ctx, PetscReal g, PetscReal reach, RollerSteady *st)
+/* The Gamma_C nodes (|x| = r_outer) with rigid gap y_2 - g below reach, gathered on every rank, sorted by angle; their
+   dofs in the operator K (with Maxwell branches the augmented one, whose every rank's rows start with its xi rows). */
+static PetscErrorCode Candidates(Roller ctx, Mat K, PetscReal g, PetscReal reach, RollerSteady *st)
 {
   const PetscScalar *x;
   PetscInt           n, lo, nloc = 0, *dof;
@@ -38,7 +39,7 @@ static PetscErrorCode Candidates(Roller ctx, PetscReal g, PetscReal reach, Rolle
 
   PetscFunctionBeginUser;
   PetscCall(VecGetLocalSize(ctx->ops.coordinates, &n));
-  PetscCall(VecGetOwnershipRange(ctx->ops.coordinates, &lo, NULL));
+  PetscCall(MatGetOwnershipRange(K, &lo, NULL));
   PetscCall(PetscMalloc2(n / 2, &dof, n, &xy));
   PetscCall(VecGetArrayRead(ctx->ops.coordinates, &x));
   for (PetscInt j = 0; j < n; j += 2) {
@@ -272,15 +273,15 @@ PetscErrorCode RollerSteadySolveWith(Roller ctx, KSP ksp, RollerSteady *st)
   st->difference = ctx->eig.slip_difference;
   PetscCall(KSPGetOperators(ksp, &Klab, NULL));
   PetscCall(MatCreateVecs(Klab, &uf, &st->u));
-  PetscCall(VecCopy(ctx->ops.L_centrifugal, st->u));
+  PetscCall(RollerBranchExtend(ctx->ops.L_centrifugal, st->u));
   PetscCall(VecScale(st->u, rho * w * w));
   PetscCall(KSPSolve(ksp, st->u, uf));
   for (PetscInt attempt = 0;; ++attempt) { /* widen the candidate zone until no node outside it penetrates */
     Vec      *wk;
     PetscReal gmin, *G, *d;
-    PetscInt  lo, hi, n, m;
+    PetscInt  n, m;
 
-    PetscCall(Candidates(ctx, g, reach, st));
+    PetscCall(Candidates(ctx, Klab, g, reach, st));
     PetscCheck(st->n > 2, ctx->comm, PETSC_ERR_ARG_WRONG, "-obstacle_depth %g: fewer than three Gamma_C nodes within reach of the sheet; press deeper or refine the mesh", (double)ctx->obstacle.depth);
     PetscCall(PetscCalloc7(st->n, &st->normal, st->n, &st->tangent, st->n, &st->mu, st->n, &st->dmu, st->n, &st->slip, st->n, &st->gap, st->n, &st->state));
     {
@@ -321,8 +322,7 @@ PetscErrorCode RollerSteadySolveWith(Roller ctx, KSP ksp, RollerSteady *st)
     PetscCall(PetscFree2(G, d));
     /* every Gamma_C node outside the candidates above the sheet? */
     gmin = PETSC_MAX_REAL;
-    PetscCall(VecGetLocalSize(uf, &n));
-    PetscCall(VecGetOwnershipRange(uf, &lo, &hi));
+    PetscCall(VecGetLocalSize(ctx->ops.coordinates, &n)); /* the xi part of u leads its local array */
     {
       const PetscScalar *x, *u;
 

@@ -121,7 +121,7 @@ static PetscErrorCode Solve(const Hoffmann *h, PetscReal mu, PetscReal c1, Petsc
   PetscCall(Mat2x2(m, &M));
   PetscCall(Mat2x2(c, &C));
   PetscCall(Mat2x2(k, &K));
-  PetscCall(RollerPEPCreate(PETSC_COMM_SELF, M, C, K, 4, PETSC_FALSE, &pep));
+  PetscCall(RollerPEPCreate(PETSC_COMM_SELF, M, C, K, 4, PETSC_FALSE, NULL, &pep));
   PetscCall(RollerPEPSolve(pep, n));
   PetscCheck(*n <= 4, PETSC_COMM_SELF, PETSC_ERR_PLIB, "mu = %g: %" PetscInt_FMT " kept eigenvalues of a 2-DOF problem", (double)mu, *n);
   for (PetscInt i = 0; i < *n; ++i) PetscCall(RollerPEPGetPair(pep, i, &re[i], &im[i], NULL, NULL));

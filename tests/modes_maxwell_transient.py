@@ -1,0 +1,79 @@
+"""A seeded transient decays at the CEA's rate with the generalized Maxwell rubber (issue 35; docs/squeal.md section 1.2).
+
+The free roller at rest (-omega 0, P2, -mesh_h 0.05), the rubber fitted to the loss factor 0.1 over 0.1-10 cycles per
+unit time. -modes (the augmented eigenproblem of src/modes/branches.c) gives the torsional eigenvalue
+lambda = sigma + i omega and its shape; the time step (src/integrate/scheme_maxwell.c, the default trapezoidal rule,
+-ts_dt 0.05: 160 steps a period) is started on that shape (-initial_condition mode, the branches unstretched, as the
+step starts them) and its rotation angle alpha(t) over 0 <= t <= 60 (7 periods, the amplitude down to 10 %) is fitted
+by exp(s t)(a cos w t + b sin w t) + sum_j c_j exp(r_j t): s and w free, the r_j the creep roots of the torsional
+closed form lambda^2 + w0^2 G*(lambda)/mu = 0 (the unstretched branches start them), w0 backed out of the CEA's own
+lambda (w0^2 = -lambda^2 mu/G*(lambda)), the branches read from the shapes' file. The transient's s within 5 % of the
+CEA's sigma and w within 0.5 % of its omega; the modal loss factor 2|s|/w of the transient within 5 % of the
+rubber's G''/G' at w (the torsional mode is deviatoric)."""
+import h5py
+import numpy as np
+from scipy.optimize import least_squares
+
+from rollertest import Checker, read_csv, run
+
+c = Checker("modes_maxwell_transient")
+BASE = ["-omega", 0, "-mesh_h", 0.05, "-degree", 2, "-quiet"]
+RUBBER = ["-rubber", "maxwell", "-rubber_loss_factor", 0.1, "-rubber_band", "0.1,10"]
+DT, T = 0.05, 60.0
+
+run(["-modes", *BASE, *RUBBER, "-modes_nev", 4, "-modes_csv", "modes.csv", "-modes_output", "modes.h5"])
+m = read_csv("modes.csv")
+j = int(np.where((m["order"] == 0) & (m["im"] > 0))[0][0])
+lam = m["re"][j] + 1j * m["im"][j]
+with h5py.File("modes.h5", "r") as f:
+    par = dict(f["parameters"].attrs)
+nb = int(np.ravel(par["maxwell_branches"])[0])
+tau = np.array([float(np.ravel(par[f"maxwell_tau_{i}"])[0]) for i in range(nb)])
+g = np.array([float(np.ravel(par[f"maxwell_weight_{i}"])[0]) for i in range(nb)])
+
+
+def modulus(s):
+    """G*(s)/mu (docs/model.md section 1.1)"""
+    return 1 + np.sum(g * s * tau / (1 + s * tau))
+
+
+w0 = np.sqrt((-lam * lam / modulus(lam)).real)
+poly = np.poly1d([1.0, 0.0, w0 * w0])
+for t in tau:
+    poly *= np.poly1d([t, 1.0])
+for i, t in enumerate(tau):
+    term = np.poly1d([w0 * w0 * g[i] * t, 0.0])
+    for k, tk in enumerate(tau):
+        if k != i:
+            term *= np.poly1d([tk, 1.0])
+    poly += term
+creep = sorted(r.real for r in poly.roots if abs(r.imag) < 1e-9 * abs(r))
+c.check(m["order"][j] == 0 and len(creep) == nb,
+        f"the CEA's torsional mode {j}: lambda = {lam.real:.6f} + {lam.imag:.6f} i ({nb} branches; w0 = {w0:.6f}, creep roots {', '.join(f'{r:.4f}' for r in creep)})")
+
+run([*BASE, *RUBBER, "-initial_condition", "mode", "-initial_mode_file", "modes.h5", "-initial_mode", j, "-ic_amplitude", 1e-3,
+     "-ts_dt", DT, "-ts_max_time", T, "-monitor_csv", "decay.csv"])
+d = read_csv("decay.csv")
+t, a = d["t"], d["alpha"]
+
+
+def basis(p):
+    return np.array([np.exp(p[0] * t) * np.cos(p[1] * t), np.exp(p[0] * t) * np.sin(p[1] * t)] + [np.exp(r * t) for r in creep]).T
+
+
+def residual(p):
+    B = basis(p)
+    return B @ np.linalg.lstsq(B, a, rcond=None)[0] - a
+
+
+zero = np.where(np.diff(np.sign(a)) != 0)[0]  # the first guess from the signal: its zero crossings
+fit = least_squares(residual, [-0.01, np.pi / np.diff(t[zero]).mean()], x_scale=[0.01, 0.1])
+s, w = fit.x
+es, ew, r = s / lam.real - 1, w / lam.imag - 1, np.abs(fit.fun).max() / np.abs(a).max()
+c.check(abs(es) < 0.05 and abs(ew) < 0.005 and s < 0,
+        f"the transient decays at s = {s:.6f} against the CEA's {lam.real:.6f} ({100 * es:+.2f} %, < 5 %), w = {w:.6f} against {lam.imag:.6f} ({100 * ew:+.3f} %, < 0.5 %); "
+        f"the fit's largest residual {r:.1e} of max |alpha|")
+eta = modulus(1j * w)
+eta = eta.imag / eta.real
+c.check(abs(2 * abs(s) / w / eta - 1) < 0.05, f"the transient's modal loss factor 2|s|/w = {2 * abs(s) / w:.5f} against the rubber's G''/G' = {eta:.5f} at w (< 5 %)")
+c.close()
