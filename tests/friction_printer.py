@@ -1,4 +1,4 @@
-"""The printer roller's transient with its own velocity-weakening friction law (jobs/printer_roller.yaml, SI units;
+"""The printer roller's transient with its own velocity-weakening friction law (jobs/printer_roller_kelvin_voigt.yaml, SI units;
 docs/friction.md section 3, docs/squeal.md section 7.5).
 
 mu(v) = 0.8 + 0.2 exp(-|v|/0.01 m/s) is steep against the creep speeds of the feeding roller (1 % of 0.24 m/s): the
@@ -15,7 +15,7 @@ import numpy as np
 
 from rollertest import Checker, SOURCE, read_csv, run
 
-SCENE = f"{SOURCE}/jobs/printer_roller.yaml"
+SCENE = f"{SOURCE}/jobs/printer_roller_kelvin_voigt.yaml"
 MU, MU_S, V_C, V = 0.8, 1.0, 0.01, 0.2356
 
 

@@ -1,5 +1,5 @@
 """Contact and friction on the reduced model (-rom -obstacle, docs/model.md "The reduced model", docs/performance.md
-"Reduced-order transient"): the printer roller (jobs/printer_roller.yaml: press by the sheet, then feeding with
+"Reduced-order transient"): the printer roller (jobs/printer_roller_kelvin_voigt.yaml: press by the sheet, then feeding with
 velocity-weakening Coulomb friction) on a coarse mesh (h 1.2 mm, 0.3 mm at Gamma_C), 4 ms, the 150 lowest modes
 clamped at the shaft and the two static load responses.
 
@@ -15,7 +15,7 @@ from rollertest import SOURCE, Checker, read_csv, run
 
 c = Checker("rom_contact")
 R_OUTER = 0.0125
-SCENE = ["-options_file", f"{SOURCE}/jobs/printer_roller.yaml", "-mesh_h", "0.0012", "-mesh_h_contact", "3e-4", "-ts_max_time", "0.004", "-quiet"]
+SCENE = ["-options_file", f"{SOURCE}/jobs/printer_roller_kelvin_voigt.yaml", "-mesh_h", "0.0012", "-mesh_h_contact", "3e-4", "-ts_max_time", "0.004", "-quiet"]
 run(SCENE + ["-rom", "-rom_modes", "150", "-monitor_csv", "rom_contact.csv"])
 d = read_csv("rom_contact.csv")
 on = d["contact_nodes"] > 0

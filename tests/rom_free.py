@@ -1,6 +1,6 @@
 """The reduced-order transient without contact (-rom, docs/performance.md "Reduced-order transient").
 
-1. Frequencies: the printer roller (jobs/printer_roller.yaml without the sheet, a uniform coarse mesh) rotating at
+1. Frequencies: the printer roller (jobs/printer_roller_kelvin_voigt.yaml without the sheet, a uniform coarse mesh) rotating at
    19 rad/s with its Kelvin-Voigt damping: every eigenvalue of the reduced model (-modes -rom -rom_cutoff 5000, the
    modes clamped at the shaft below 5 kHz and the two static load responses; Coriolis, centrifugal softening and the
    damping reduced) below 0.8 of the cutoff matches the full model's -modes (same order and wave) within 0.1 % in
@@ -20,7 +20,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from rollertest import SOURCE, Checker, read_csv, run  # noqa: E402
 
 c = Checker("rom_free")
-PRINTER = ["-options_file", os.path.join(SOURCE, "jobs", "printer_roller.yaml"), "-obstacle", "false", "-mesh_h", "0.0012", "-mesh_h_contact", "0", "-quiet"]
+PRINTER = ["-options_file", os.path.join(SOURCE, "jobs", "printer_roller_kelvin_voigt.yaml"), "-obstacle", "false", "-mesh_h", "0.0012", "-mesh_h_contact", "0", "-quiet"]
 CUT = 5000.0
 
 run(PRINTER + ["-modes", "-modes_nev", "60", "-modes_csv", "rom_full_modes.csv"])

@@ -1,5 +1,5 @@
 """The issue's agreement of the reduced model with the full one (issue 37, docs/performance.md "Reduced-order
-transient"): jobs/printer_roller.yaml over 30 ms (press by the sheet for 3 ms, then feeding with velocity-weakening
+transient"): jobs/printer_roller_kelvin_voigt.yaml over 30 ms (press by the sheet for 3 ms, then feeding with velocity-weakening
 Coulomb friction), the full model and -rom at its default cutoff (the modes clamped at the shaft up to where the
 step's frequency error reaches -ts_phase_error, 9.9 kHz here, and the two static load responses), both CSVs read:
 - the mean contact force and the mean friction force over the feeding (t > 3 ms) within 1 % and 2 % of the full
@@ -13,7 +13,7 @@ import numpy as np
 from rollertest import SOURCE, Checker, read_csv, run
 
 c = Checker("rom_printer")
-SCENE = ["-options_file", f"{SOURCE}/jobs/printer_roller.yaml", "-ts_max_time", "0.03", "-quiet"]
+SCENE = ["-options_file", f"{SOURCE}/jobs/printer_roller_kelvin_voigt.yaml", "-ts_max_time", "0.03", "-quiet"]
 run(SCENE + ["-monitor_csv", "rom_printer_full.csv"])
 run(SCENE + ["-rom", "-monitor_csv", "rom_printer_rom.csv"])
 a, b = read_csv("rom_printer_full.csv"), read_csv("rom_printer_rom.csv")

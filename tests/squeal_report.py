@@ -1,5 +1,5 @@
 """The one-command squeal report (docs/squeal.md section 9.2, issue 25): `python3 -m rollerreport.run SCENE OUT` on
-the printer roller (jobs/printer_roller.yaml, SI, its own friction law) and the feeder (jobs/feed.yaml,
+the printer roller (jobs/printer_roller_kelvin_voigt.yaml, SI, its own friction law) and the feeder (jobs/feed.yaml,
 non-dimensional, on the coarse graded mesh of docs/squeal.md 4.2), each with a 2 x 2 map (the scene's creep and
 full sliding, creep 1; the scene's friction and 0.4) on 2 ranks. Reads what the run writes and checks each file:
 - commands.json: every step (CEA, map, seeded transient, report) ran and exited 0; report.md lists each command;
@@ -39,7 +39,7 @@ COARSE = ["-mesh_h", "0.05", "-mesh_h_contact", "0.0112", "-mesh_contact_layer",
 SCENES = [  # name, scene, creeps, frictions, extra roller options, growth tolerance, whether the mode is heard
     # the printer roller's least stable mode is the torsional one (order 0 standing: the surface moves tangentially,
     # which radiates nothing in the model of docs/squeal.md 9.3); the feeder's an order-3 wave, radial
-    ("printer_roller", "jobs/printer_roller.yaml", "1", "0.4", [], 0.25, False),
+    ("printer_roller", "jobs/printer_roller_kelvin_voigt.yaml", "1", "0.4", [], 0.25, False),
     ("feed", "jobs/feed.yaml", "1", "0.4", COARSE, 0.2, True),
 ]
 
