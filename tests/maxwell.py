@@ -22,7 +22,7 @@
 import numpy as np
 from scipy.optimize import least_squares
 
-from rollertest import SOURCE, Checker, read_csv, run
+from rollertest import SOURCE, Checker, read_csv, run, maxwell_oscillator_roots
 
 c = Checker("maxwell")
 
@@ -56,22 +56,7 @@ w0 = m["im"][0]
 c.check(m["order"][0] == 0 and abs(w0 / 0.7229 - 1) < 0.01, f"the torsional mode (order 0) is -modes' lowest: w0 = {w0:.6f} (the annulus' 0.7229)")
 
 
-def closed_form(w0, tau, g):
-    """The roots of (s^2 + w0^2) prod(1 + s tau_j) + w0^2 sum_i g_i s tau_i prod_{j != i}(1 + s tau_j)."""
-    poly = np.poly1d([1.0, 0.0, w0 * w0])
-    for t in tau:
-        poly *= np.poly1d([t, 1.0])
-    for i, t in enumerate(tau):
-        term = np.poly1d([w0 * w0 * g[i] * t, 0.0])
-        for j, tj in enumerate(tau):
-            if j != i:
-                term *= np.poly1d([tj, 1.0])
-        poly += term
-    roots = poly.roots
-    return next(r for r in roots if r.imag > 0), sorted(r.real for r in roots if abs(r.imag) < 1e-9 * abs(r))
-
-
-lam, creep = closed_form(w0, TAU, G)
+lam, creep = maxwell_oscillator_roots(w0, np.array(TAU), np.array(G))
 s_tau = np.array(TAU) * 1j * abs(lam)
 modulus = 1 + np.sum(np.array(G) * s_tau / (1 + s_tau))
 print(f"closed form: lambda = {lam.real:.6f} + {lam.imag:.6f} i, creep roots {', '.join(f'{r:.4f}' for r in creep)}; "

@@ -20,10 +20,9 @@ unit time (the branches read back from the shapes' file, /parameters maxwell_tau
 4. no eigenvalue grows.
 The seeded transient against the CEA's decay is tests/modes_maxwell_transient.py; the rotating roller's lab frame
 against the co-rotating one tests/modes_maxwell_lab.py."""
-import h5py
 import numpy as np
 
-from rollertest import Checker, read_csv, run
+from rollertest import Checker, read_csv, run, maxwell_branches, maxwell_modulus
 
 c = Checker("modes_maxwell")
 BASE = ["-omega", 0, "-mesh_h", 0.05, "-degree", 2, "-quiet"]
@@ -33,16 +32,12 @@ run(["-modes", *BASE, "-modes_nev", 4, "-modes_csv", "elastic.csv"])
 run(["-modes", *BASE, *RUBBER, "-modes_nev", 16, "-modes_csv", "rot.csv", "-modes_output", "rot.h5"])
 run(["-modes", *BASE, *RUBBER, "-modes_nev", 16, "-modes_frame", "lab", "-modes_csv", "lab.csv"])
 el, rot, lab = read_csv("elastic.csv"), read_csv("rot.csv"), read_csv("lab.csv")
-with h5py.File("rot.h5", "r") as f:
-    par = dict(f["parameters"].attrs)
-nb = int(np.ravel(par["maxwell_branches"])[0])
-tau = np.array([float(np.ravel(par[f"maxwell_tau_{i}"])[0]) for i in range(nb)])
-g = np.array([float(np.ravel(par[f"maxwell_weight_{i}"])[0]) for i in range(nb)])
+tau, g = maxwell_branches("rot.h5")
+nb = len(tau)
 
 
 def modulus(s):
-    """G*(s)/mu = 1 + sum_i g_i s tau_i/(1 + s tau_i) (docs/model.md section 1.1)"""
-    return 1 + np.sum(g * s * tau / (1 + s * tau))
+    return maxwell_modulus(s, tau, g)
 
 
 # 1. modal loss factors against the model's

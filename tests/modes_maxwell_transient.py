@@ -10,11 +10,10 @@ closed form lambda^2 + w0^2 G*(lambda)/mu = 0 (the unstretched branches start th
 lambda (w0^2 = -lambda^2 mu/G*(lambda)), the branches read from the shapes' file. The transient's s within 5 % of the
 CEA's sigma and w within 0.5 % of its omega; the modal loss factor 2|s|/w of the transient within 5 % of the
 rubber's G''/G' at w (the torsional mode is deviatoric)."""
-import h5py
 import numpy as np
 from scipy.optimize import least_squares
 
-from rollertest import Checker, read_csv, run
+from rollertest import Checker, read_csv, run, maxwell_branches, maxwell_modulus, maxwell_oscillator_roots
 
 c = Checker("modes_maxwell_transient")
 BASE = ["-omega", 0, "-mesh_h", 0.05, "-degree", 2, "-quiet"]
@@ -25,29 +24,16 @@ run(["-modes", *BASE, *RUBBER, "-modes_nev", 4, "-modes_csv", "modes.csv", "-mod
 m = read_csv("modes.csv")
 j = int(np.where((m["order"] == 0) & (m["im"] > 0))[0][0])
 lam = m["re"][j] + 1j * m["im"][j]
-with h5py.File("modes.h5", "r") as f:
-    par = dict(f["parameters"].attrs)
-nb = int(np.ravel(par["maxwell_branches"])[0])
-tau = np.array([float(np.ravel(par[f"maxwell_tau_{i}"])[0]) for i in range(nb)])
-g = np.array([float(np.ravel(par[f"maxwell_weight_{i}"])[0]) for i in range(nb)])
+tau, g = maxwell_branches("modes.h5")
+nb = len(tau)
 
 
 def modulus(s):
-    """G*(s)/mu (docs/model.md section 1.1)"""
-    return 1 + np.sum(g * s * tau / (1 + s * tau))
+    return maxwell_modulus(s, tau, g)
 
 
 w0 = np.sqrt((-lam * lam / modulus(lam)).real)
-poly = np.poly1d([1.0, 0.0, w0 * w0])
-for t in tau:
-    poly *= np.poly1d([t, 1.0])
-for i, t in enumerate(tau):
-    term = np.poly1d([w0 * w0 * g[i] * t, 0.0])
-    for k, tk in enumerate(tau):
-        if k != i:
-            term *= np.poly1d([tk, 1.0])
-    poly += term
-creep = sorted(r.real for r in poly.roots if abs(r.imag) < 1e-9 * abs(r))
+_, creep = maxwell_oscillator_roots(w0, tau, g)
 c.check(m["order"][j] == 0 and len(creep) == nb,
         f"the CEA's torsional mode {j}: lambda = {lam.real:.6f} + {lam.imag:.6f} i ({nb} branches; w0 = {w0:.6f}, creep roots {', '.join(f'{r:.4f}' for r in creep)})")
 

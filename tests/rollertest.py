@@ -73,3 +73,36 @@ class Checker:
     def close(self):
         print(f"{self.name}: {self.passed} passed, {self.failed} failed")
         sys.exit(1 if self.failed or not self.passed else 0)
+
+
+def maxwell_branches(h5path):
+    """The generalized Maxwell rubber's branches (relaxation times tau_i, weights g_i) from a run's HDF5 parameters."""
+    import h5py
+
+    with h5py.File(h5path, "r") as f:
+        par = dict(f["parameters"].attrs)
+    nb = int(np.ravel(par["maxwell_branches"])[0])
+    tau = np.array([float(np.ravel(par[f"maxwell_tau_{i}"])[0]) for i in range(nb)])
+    g = np.array([float(np.ravel(par[f"maxwell_weight_{i}"])[0]) for i in range(nb)])
+    return tau, g
+
+
+def maxwell_modulus(s, tau, g):
+    """G*(s)/mu = 1 + sum_i g_i s tau_i/(1 + s tau_i) (docs/model.md section 1.1)"""
+    return 1 + np.sum(g * s * tau / (1 + s * tau))
+
+
+def maxwell_oscillator_roots(w0, tau, g):
+    """The roots of (s^2 + w0^2) prod(1 + s tau_j) + w0^2 sum_i g_i s tau_i prod_{j != i}(1 + s tau_j): an oscillator of
+    relaxed frequency w0 on the Maxwell modulus. Returns the root with positive imaginary part and the real (creep) roots."""
+    poly = np.poly1d([1.0, 0.0, w0 * w0])
+    for t in tau:
+        poly *= np.poly1d([t, 1.0])
+    for i, t in enumerate(tau):
+        term = np.poly1d([w0 * w0 * g[i] * t, 0.0])
+        for j, tj in enumerate(tau):
+            if j != i:
+                term *= np.poly1d([tj, 1.0])
+        poly += term
+    roots = poly.roots
+    return next(r for r in roots if r.imag > 0), sorted(r.real for r in roots if abs(r.imag) < 1e-9 * abs(r))
