@@ -15,7 +15,9 @@ cases, then every file is read:
 - forced: the hub's response at the ripple within 10 % of rollerref.forced's closed form, its level finite;
 - propensity: 64 cases in propensity.csv, the fraction inside its interval;
 - report.html plays squeal.wav; a second run reuses every part (journal.json).
-long: the CEA (40 eigenvalues of about 40k unknowns) and two finite-element runs of about 4100 steps (about 4 CPU
+The CEA with --nev 8 (the drive's mode and the rubber's lowest, as tests/axle_modes_onset.py: about a CPU minute;
+the report's default 40 takes over 10 CPU minutes on this scene).
+long: the CEA (8 eigenvalues of about 40k unknowns) and two finite-element runs of about 4100 steps (about 4 CPU
 minutes each)."""
 import csv
 import json
@@ -33,7 +35,7 @@ c = Checker("report_axle")
 out = os.path.abspath("report_axle")
 scene = os.path.join(SOURCE, "jobs", "axle_bistable.yaml")
 cmd = [sys.executable, "-m", "rollerreport.run", scene, out, "--angle", "45", "--ripple", "0.001,0.03", "--forced-options",
-       "-theta_start 0 -drive_ramp 0 -nip_ramp 60", "--roller", os.path.abspath(EXE)]
+       "-theta_start 0 -drive_ramp 0 -nip_ramp 60", "--nev", "8", "--roller", os.path.abspath(EXE)]
 r = subprocess.run(cmd, capture_output=True, text=True)
 c.check(r.returncode == 0 and os.path.exists(os.path.join(out, "report.json")), f"rollerreport.run exits 0 ({r.stderr.strip()[-400:]})")
 rep = json.load(open(os.path.join(out, "report.json")))
