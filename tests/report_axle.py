@@ -2,8 +2,10 @@
 stable (jobs/axle_bistable.yaml; docs/validation.md 10.5, docs/squeal.md 9.4): `python3 -m rollerreport.run` with the
 listener at 45 degrees from the sheet, the motor's ripple for the forced run (a start sliding) and 64 propensity
 cases, then every file is read:
-- report.json: verdict "squeals", by stick-slip (report.md says so); stick-slip run and squeaking; flutter "not run: -modes does not take -axle" with the
-  1-DOF closed form (stable) as its stated stand-in;
+- report.json: verdict "squeals", by stick-slip (report.md says so); stick-slip run and squeaking; flutter run by the
+  CEA (roller -modes on the scene, -axle: docs/squeal.md 3.1), not squeaking: steady sliding stable (every eigenvalue,
+  real ones too, Re < 0), the drive's mode (the largest hub_phi) within 5 % of the 1-DOF closed form -0.007939
+  (docs/validation.md 10.5; tests/axle_modes_onset.py: -0.0080459), which the report states beside it;
 - stickslip.csv read here: the period of hub_rate - omega over its last four upward crossings (as
   tests/axle_stickslip.py measures it), the patch stuck in each of those periods; the report's pitch within 0.5 % of
   it and within 1 % of docs/validation.md's 19.536, its amplitude within 2 % of 0.007621;
@@ -13,7 +15,10 @@ cases, then every file is read:
 - forced: the hub's response at the ripple within 10 % of rollerref.forced's closed form, its level finite;
 - propensity: 64 cases in propensity.csv, the fraction inside its interval;
 - report.html plays squeal.wav; a second run reuses every part (journal.json).
-long: two finite-element runs of about 4100 steps (about 4 CPU minutes each)."""
+The CEA with --nev 8 (the drive's mode and the rubber's lowest, as tests/axle_modes_onset.py: about a CPU minute;
+the report's default 40 takes over 10 CPU minutes on this scene).
+long: the CEA (8 eigenvalues of about 40k unknowns) and two finite-element runs of about 4100 steps (about 4 CPU
+minutes each)."""
 import csv
 import json
 import math
@@ -30,7 +35,7 @@ c = Checker("report_axle")
 out = os.path.abspath("report_axle")
 scene = os.path.join(SOURCE, "jobs", "axle_bistable.yaml")
 cmd = [sys.executable, "-m", "rollerreport.run", scene, out, "--angle", "45", "--ripple", "0.001,0.03", "--forced-options",
-       "-theta_start 0 -drive_ramp 0 -nip_ramp 60", "--roller", os.path.abspath(EXE)]
+       "-theta_start 0 -drive_ramp 0 -nip_ramp 60", "--nev", "8", "--roller", os.path.abspath(EXE)]
 r = subprocess.run(cmd, capture_output=True, text=True)
 c.check(r.returncode == 0 and os.path.exists(os.path.join(out, "report.json")), f"rollerreport.run exits 0 ({r.stderr.strip()[-400:]})")
 rep = json.load(open(os.path.join(out, "report.json")))
@@ -39,10 +44,27 @@ mech = {m["kind"]: m for m in rep["mechanisms"]}
 ss, fl, fo = mech["stick-slip"], mech["flutter"], mech["forced"]
 md = open(os.path.join(out, "report.md")).read()
 c.check(rep["verdict"] == "squeals" and rep["squeals_by"] == ["stick-slip"] and "**squeals** by stick-slip" in md
-        and ss["status"] == "run" and ss["squeals"] is True
-        and fl["status"] == "not run: -modes does not take -axle" and sc["onedof"]["stable"] and "stand-in" in fl["evidence"][0],
-        f"verdict {rep['verdict']} by {rep['squeals_by']}: stick-slip {ss['status']}, squeals {ss['squeals']}; flutter {fl['status']}; "
-        f"the 1-DOF closed form stable ({sc['onedof']['growth_rate']:+.6f})")
+        and ss["status"] == "run" and ss["squeals"] is True and rep["verdict_complete"],
+        f"verdict {rep['verdict']} by {rep['squeals_by']} (complete: {rep['verdict_complete']}): stick-slip {ss['status']}, squeals {ss['squeals']}; "
+        f"flutter {fl['status']}, squeals {fl['squeals']}")
+
+# the CEA on the axle: steady sliding stable, the drive's mode against the closed form (read here from modes.csv)
+with open(os.path.join(out, "modes.csv"), newline="") as f:
+    modes = list(csv.DictReader(f))
+cea = rep.get("cea") or {}
+dm = cea.get("drive_mode") or {}
+drive = max(modes, key=lambda m: float(m["hub_phi"]))
+worst = max(float(m["re"]) for m in modes)
+CLOSED = -0.007939  # docs/validation.md 10.5
+c.check(fl["status"] == "run" and fl["squeals"] is False and not cea.get("unstable", True) and worst < 0
+        and abs(sc["onedof"]["growth_rate"] / CLOSED - 1) < 1e-3 and dm.get("row") == modes.index(drive)
+        and abs(float(drive["re"]) / CLOSED - 1) < 0.05 and abs(dm["growth_rate"] - float(drive["growth_rate"])) < 1e-12
+        and abs(dm["one_dof_growth_rate"] - sc["onedof"]["growth_rate"]) < 1e-12 and any("1-DOF closed form" in e for e in fl["evidence"])
+        and math.isfinite(fl["growth_rate_per_s"]) and math.isfinite(fl["loss_factor_margin"]),
+        f"the CEA ({len(modes)} eigenvalues): steady sliding stable (the largest Re {worst:+.6g}; the least stable oscillating mode "
+        f"{cea.get('growth_rate', math.nan):+.6g} at {cea.get('frequency', math.nan):.5g}, loss-factor margin {cea.get('loss_factor_margin', math.nan):+.3g}); "
+        f"the drive's mode (row {modes.index(drive)}, hub_phi {float(drive['hub_phi']):.4g}) {float(drive['re']):+.7f} + {float(drive['im']):.5f} i against the "
+        f"closed form {CLOSED} ({100 * (float(drive['re']) / CLOSED - 1):+.2f} %; tests/axle_modes_onset.py: -0.0080459)")
 
 # the limit cycle read here from the run's own CSV
 with open(os.path.join(out, "stickslip.csv"), newline="") as f:
@@ -103,7 +125,7 @@ c.check("src='squeal.wav'" in page and "propensity.png" in page, "report.html pl
 r2 = subprocess.run(cmd, capture_output=True, text=True)
 again = json.load(open(os.path.join(out, "report.json")))
 jr = json.load(open(os.path.join(out, "journal.json")))
-c.check(r2.returncode == 0 and all(p.get("reused") for name, p in jr.get("parts", jr).items() if name in ("stickslip", "forced", "propensity", "sound"))
+c.check(r2.returncode == 0 and all(p.get("reused") for name, p in jr.get("parts", jr).items() if name in ("cea", "stickslip", "forced", "propensity", "sound"))
         and again["mechanisms"][1]["period"] == ss["period"],
         "the same command again reuses every part: " + ", ".join(f"{k} {'reused' if p.get('reused') else 'REDONE'}" for k, p in jr.get("parts", jr).items()))
 c.close()

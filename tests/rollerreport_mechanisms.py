@@ -5,8 +5,11 @@ mechanisms, heard.write_cycle; docs/squeal.md 9.4) on synthetic monitor CSVs, no
   scene's step with a node-passing ripple of 3 % added: the period within 0.5 % of rollerref's own cycle, the amplitude
   within 4 %, stuck in every period, sustained; a decaying oscillation is not sustained, a sustained one without stick
   is not stick-slip, a series of two periods is too short;
-- the report of that folder: verdict "squeals" by stick-slip, flutter "not run: -modes does not take -axle" with the
-  1-DOF closed form as its stated stand-in; squeal.wav as long as the simulated span times the time scale, its pitch
+- the report of that folder: verdict "squeals" by stick-slip; without modes.csv flutter "not run" (the 1-DOF closed
+  form named "not a substitute"); with a modes.csv of the axle's columns (axle_y, hub_phi) flutter run by it, stable,
+  the drive's mode (the largest hub_phi) beside the 1-DOF closed form, the stick-slip "bistable" by the CEA; with the
+  CEA refused (roller's PETSc error for -rubber maxwell, parsed by rollerreport.run.Steps from a log) flutter "not run"
+  with roller's reason, the part not counted as failed; squeal.wav as long as the simulated span times the time scale, its pitch
   (measured here by the autocorrelation of its last two thirds) within 2 % of the cycle's, its envelope sustained (the
   RMS of the last two spans of four periods within 10 %), full scale the stated 94 dB SPL; the friction force's dipole against its
   closed form cos(phi) w F W / (4 pi c d);
@@ -91,8 +94,8 @@ mech = {m["kind"]: m for m in out.get("mechanisms", [])}
 s = sc["seconds_per_unit"]
 ss = mech.get("stick-slip", {})
 c.check(out.get("verdict") == "squeals" and out.get("squeals_by") == ["stick-slip"] and ss.get("squeals") is True and abs(ss["frequency_hz"] * s * cyc["period"] - 1) < 1e-9
-        and mech["flutter"]["status"] == "not run: -modes does not take -axle" and "stand-in" in mech["flutter"]["evidence"][0]
-        and mech["forced"]["status"].startswith("not run"),
+        and mech["flutter"]["status"].startswith("not run: no CEA") and "not a substitute" in mech["flutter"]["evidence"][0]
+        and mech["flutter"]["squeals"] is None and mech["forced"]["status"].startswith("not run"),
         f"report.json: verdict {out.get('verdict')}, stick-slip at {ss.get('frequency_hz', 0):.3f} Hz; flutter {mech.get('flutter', {}).get('status')} "
         f"({r.stderr.strip()[-300:]})")
 with wave.open(os.path.join(d, "squeal.wav"), "rb") as f:
@@ -112,6 +115,42 @@ c.check(src["file"] == "stickslip.csv" and abs(n / rate_wav - span) <= 1.5 / rat
         and abs(rms[1] / rms[0] - 1) < 0.10 and out["sound"]["wav_reference"]["full_scale_db_spl"] == 94.0 and math.isfinite(out["spl_db"]),
         f"squeal.wav: {n / rate_wav:.4f} s (span x scale {span:.4f}), pitch {pitch:.3f} Hz (the cycle's {ss['frequency_hz']:.3f}), "
         f"the RMS of the last two spans of four periods {rms[0]:.1f}, {rms[1]:.1f}; {out['spl_db']:.1f} dB SPL at full scale 94 dB")
+# ---- the CEA on the axle: a modes.csv as roller -modes -axle writes it (docs/squeal.md 3.1), the drive's mode the
+# largest hub_phi (tests/axle_modes_onset.py's -0.0080459 + 0.32001 i), a rubber mode stabler, a real one
+DRIVE = -0.0080459
+with open(os.path.join(d, "modes.csv"), "w") as f:
+    f.write("re,im,frequency,growth_rate,order,wave,error,axle_y,hub_phi\n")
+    f.write(f"{DRIVE!r},0.32001,{0.32001 / (2 * math.pi)!r},{DRIVE!r},1,forward,1e-9,0.001,2.5\n")
+    f.write("-0.05,7.23,1.1507,-0.05,0,standing,1e-9,0.0002,0.01\n")
+    f.write("-0.2,0,0,-0.2,0,standing,1e-9,0.9,0.003\n")
+r = subprocess.run([sys.executable, "-m", "rollerreport", d], capture_output=True, text=True)
+out2 = json.load(open(os.path.join(d, "report.json"))) if r.returncode == 0 else {}
+m2 = {m["kind"]: m for m in out2.get("mechanisms", [])}
+fl, dm = m2.get("flutter", {}), (out2.get("cea") or {}).get("drive_mode") or {}
+c.check(fl.get("status") == "run" and fl.get("squeals") is False and dm.get("row") == 0 and dm.get("growth_rate") == DRIVE
+        and abs(dm["ratio"] - DRIVE / lin["growth_rate"]) < 1e-12 and any("1-DOF closed form" in e and "%" in e for e in fl["evidence"])
+        and abs(fl["growth_rate_per_s"] * s / DRIVE - 1) < 1e-12 and abs(fl["loss_factor_margin"] - 2 * DRIVE / 0.32001) < 1e-12
+        and fl["spl_db"] is None and out2["verdict"] == "squeals" and out2["squeals_by"] == ["stick-slip"] and out2["verdict_complete"] is False
+        and any("CEA" in e and "bistable" in e for e in m2["stick-slip"]["evidence"]),
+        f"with modes.csv: flutter {fl.get('status')}, squeals {fl.get('squeals')}; the drive's mode row {dm.get('row')} against the 1-DOF "
+        f"{100 * (dm.get('ratio', math.nan) - 1):+.2f} %; verdict {out2.get('verdict')} by {out2.get('squeals_by')} ({r.stderr.strip()[-300:]})")
+os.remove(os.path.join(d, "modes.csv"))
+log = ("[0]PETSC ERROR: --------------------- Error Message -------\n[0]PETSC ERROR: No support for this operation for this object type\n"
+       "[0]PETSC ERROR: -modes does not carry -rubber maxwell yet (its branches are in the time step only): use -rubber kelvin_voigt\n"
+       "[0]PETSC ERROR: See https://petsc.org/release/faq/ for trouble shooting.\n[0]PETSC ERROR: #1 RollerSetFromOptions() at options.c:167\n"
+       "[0]PETSC ERROR: WARNING! There are option(s) set that were not used!\n[0]PETSC ERROR: Option left: name:-axle value: true\n")
+steps = run.Steps(d, "/bin/sh")
+steps.run("cea", ["/bin/sh", "-c", f"printf '%s' '{log}'; exit 56"], "the CEA", outputs=["modes.csv"])
+rec = steps.done[-1]
+r = subprocess.run([sys.executable, "-m", "rollerreport", d], capture_output=True, text=True)
+out3 = json.load(open(os.path.join(d, "report.json"))) if r.returncode == 0 else {}
+fl3 = {m["kind"]: m for m in out3.get("mechanisms", [])}.get("flutter", {})
+why = "-modes does not carry -rubber maxwell yet (its branches are in the time step only): use -rubber kelvin_voigt"
+c.check(rec.get("refused") is True and rec["error"].endswith(why) and fl3.get("status") == f"not run: roller -modes refused the scene: {why}"
+        and fl3.get("squeals") is None and "not a substitute" in fl3["evidence"][0] and out3["squeals_by"] == ["stick-slip"],
+        f"the CEA refused: {fl3.get('status')} (the part refused, not failed: {rec.get('refused')})")
+os.remove(os.path.join(d, "commands.json"))
+
 tt = np.arange(20000) / 20000.0
 F0, f0, phi, dist = 0.3, 200.0, 30.0, 2.0
 pd = radiation.force_dipole(tt, F0 * np.sin(2 * math.pi * f0 * tt), dist, phi)

@@ -7,7 +7,7 @@ Modules:
   (journal) so that a re-run reuses what the folder holds, with their cost;
 - mechanisms: flutter, stick-slip, forced resonance, each a function of the folder returning a dict;
 - cycle: the limit cycle of a monitor series (stick in every period), the pitch of a periodic sound, the lock-in;
-- onedof: a scene on -axle as rollerref's 1-DOF (the CEA's stated stand-in, the forced closed form);
+- onedof: a scene on -axle as rollerref's 1-DOF (the cross-check of the CEA's drive mode, the forced closed form);
 - propensity: the odds over the real spread (Latin hypercube, Wilson's interval, the ranking);
 - radiation: the sound pressure at a listener from the roller's surface velocity (2-D cylinder, finite width);
 - sound: the WAV of the simulated time at a stated level, the loudest line, A-weighting, the spectrogram;

@@ -32,17 +32,26 @@ def flutter(ctx):
     """Mode coupling about the steady rolling state: the CEA's least stable mode (modes.csv), the map, the seeded
     transient's fit of the seed's response."""
     v = ctx.get("verdict")
+    axle = bool(ctx.get("scene", {}).get("axle"))
     if v is None:
-        if ctx.get("scene", {}).get("axle"):
-            lin = ctx.get("onedof")
-            return not_run("flutter", "-modes does not take -axle", [] if not lin else [
-                f"stand-in: the 1-DOF closed form (rollerref.stickslip.linear_stability) of the scene's drive: steady "
-                f"sliding {'stable' if lin['stable'] else 'UNSTABLE'}, growth rate {lin['growth_rate']:+.4g} per unit time at "
-                f"{lin['frequency']:.4g} cycles per unit time"])
-        return not_run("flutter", "no CEA (modes.csv missing or its run failed)")
+        lin = ctx.get("onedof") if axle else None
+        ev = [] if not lin else [
+            f"not a substitute: the 1-DOF closed form (rollerref.stickslip.linear_stability) of the scene's drive alone "
+            f"(no rubber modes, no mode coupling) has steady sliding {'stable' if lin['stable'] else 'UNSTABLE'}, growth "
+            f"rate {lin['growth_rate']:+.4g} per unit time at {lin['frequency']:.4g} cycles per unit time"]
+        if ctx.get("cea_error"):
+            return not_run("flutter", f"roller -modes refused the scene: {ctx['cea_error']}", ev)
+        return not_run("flutter", "no CEA (modes.csv missing or its run failed)", ev)
     s = v["seconds_per_unit"]
     ev = [f"CEA: the least stable oscillating mode (order {v['order']}, {v['wave']}) grows at {v['growth_rate'] / s:+.4g} /s "
           f"at {v['pitch_hz']:.1f} Hz; loss-factor margin {v['loss_factor_margin']:+.3g} (modes.csv)"]
+    if v.get("diverges"):
+        ev.append(f"CEA: a real positive eigenvalue {v['real_growth_rate']:+.4g}: the steady state diverges (no pitch)")
+    dm = v.get("drive_mode")
+    if dm:
+        from .report import drive_mode_line
+
+        ev.append("CEA on the axle: " + drive_mode_line(dm))
     fit = ctx.get("fit")
     if fit:
         ev.append(f"seeded transient ({'the seed' + chr(39) + 's response' if fit.get('response') else 'the seeded run alone'}, "
@@ -52,9 +61,15 @@ def flutter(ctx):
     elif "friction_onset" in ctx:
         ev.append("map: no squeal at any swept point (sweep.csv)")
     snd = ctx.get("sound") or {}
+    if axle and not snd:  # no seeded transient on the axle: the mode's level is not computed
+        return {"kind": "flutter", "status": "run", "squeals": bool(v["squeals"]), "frequency_hz": v["pitch_hz"],
+                "growth_rate_per_s": v["growth_rate"] / s, "limit_cycle_amplitude": None, "spl_db": None,
+                "loss_factor_margin": v["loss_factor_margin"],
+                "spl_note": "not computed: on the axle the report runs no seeded transient (docs/squeal.md 10)",
+                "drive_mode": dm, "evidence": ev}
     return {"kind": "flutter", "status": "run", "squeals": bool(v["squeals"]), "frequency_hz": v["pitch_hz"],
             "growth_rate_per_s": v["growth_rate"] / s, "limit_cycle_amplitude": None,
-            "spl_db": snd.get("spl_mode_db"), "spl_note": ("the level of the mode's line (within 20 % of its pitch) in the "
+            "loss_factor_margin": v["loss_factor_margin"], "spl_db": snd.get("spl_mode_db"), "spl_note": ("the level of the mode's line (within 20 % of its pitch) in the "
             "seeded transient's sound, its line at {:.1f} Hz".format(snd.get("mode_line_hz", 0)) if snd.get("mode_line_resolved", True)
             else "an upper bound: the sound within 20 % of the pitch has no line at it (its loudest at "
             f"{snd.get('mode_line_hz', 0):.1f} Hz): the mode hardly moves the surface normally (a torsional mode moves it "
@@ -118,10 +133,15 @@ def stick_slip(ctx):
               + cyc["why"] + (": a sustained stick-slip limit cycle" if cyc["stick_slip"] else
                               ": a sustained oscillation without stick" if cyc["sustained"] else ": no sustained cycle"))
     lin = ctx.get("onedof")
+    cea_stable = None if not v else not v.get("unstable")
+    if v:
+        ev.append(f"CEA (modes.csv): steady sliding {'stable' if cea_stable else 'UNSTABLE'}, the least stable mode "
+                  f"{v['growth_rate']:+.4g} per unit time" + (": the cycle coexists with a stable steady state (bistable)"
+                                                              if cea_stable and cyc["stick_slip"] else ""))
     if lin:
-        ev.append(f"1-DOF closed form (rollerref, the stand-in for the CEA while -modes does not take -axle): steady "
+        ev.append(f"1-DOF closed form (rollerref, the CEA's cross-check on the drive): steady "
                   f"sliding {'stable' if lin['stable'] else 'UNSTABLE'}, growth rate {lin['growth_rate']:+.4g} per unit time"
-                  + (": the cycle coexists with a stable steady state (bistable)" if lin["stable"] and cyc["stick_slip"] else ""))
+                  + (": the cycle coexists with a stable steady state (bistable)" if not v and lin["stable"] and cyc["stick_slip"] else ""))
         if lin.get("start_from_rest"):
             ev.append(f"1-DOF start from rest (rollerref.basin.classify): {lin['start_from_rest']}")
     ok = math.isfinite(cyc["frequency"])

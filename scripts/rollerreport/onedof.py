@@ -1,5 +1,5 @@
-"""The scene on -axle as rollerref's torsional oscillator (docs/validation.md 10.1, 10.5): the stated stand-in for the
-CEA while `roller -modes` does not take -axle, the closed form of the forced response, and the classifier of the
+"""The scene on -axle as rollerref's torsional oscillator (docs/validation.md 10.1, 10.5): the stated cross-check of
+the CEA's drive mode (`roller -modes -axle`, docs/squeal.md 3.1 and 9.4), the closed form of the forced response, and the classifier of the
 propensity's cases.
 
     I th'' = k_d (th_m - th) + c_d (th_m' - th') - r F,   I = axle_inertia + density pi (r_outer^4 - r_inner^4) / 2,

@@ -88,6 +88,34 @@ def verdict(mode, scene, real=None):
             "diverges": bool(real) and g_real > 0, "unstable": sigma > 0 or (bool(real) and g_real > 0)}
 
 
+def drive_mode(rows, scene):
+    """On the axle (modes.csv's hub_phi, docs/squeal.md 3.1): the drive's mode, the row of largest hub_phi, against
+    the 1-DOF closed form of scene.json's "onedof" (rollerref.stickslip.linear_stability: the cross-check); None
+    without the column."""
+    have = [r for r in rows if math.isfinite(num(r.get("hub_phi")))]
+    if not have:
+        return None
+    r = max(have, key=lambda x: num(x["hub_phi"]))
+    d = {"row": rows.index(r), "growth_rate": num(r["growth_rate"]), "frequency": abs(num(r["im"])) / (2 * math.pi),
+         "hub_phi": num(r["hub_phi"]), "axle_y": num(r.get("axle_y"))}
+    lin = scene.get("onedof")
+    if lin:
+        d["one_dof_growth_rate"] = lin["growth_rate"]
+        d["one_dof_frequency"] = lin["frequency"]
+        d["ratio"] = d["growth_rate"] / lin["growth_rate"] if lin["growth_rate"] else math.nan
+    return d
+
+
+def drive_mode_line(dm):
+    """The drive's mode against the 1-DOF closed form, one sentence."""
+    line = (f"the drive's mode (modes.csv row {dm['row']}, the largest hub_phi): growth rate {dm['growth_rate']:+.5g} per unit "
+            f"time at {dm['frequency']:.5g} cycles per unit time")
+    if "one_dof_growth_rate" in dm:
+        line += (f"; the 1-DOF closed form (rollerref.stickslip.linear_stability, the cross-check) {dm['one_dof_growth_rate']:+.5g} "
+                 f"at {dm['one_dof_frequency']:.5g} ({100 * (dm['ratio'] - 1):+.2f} %)")
+    return line
+
+
 def stick_slip_lines(cyc, s, scene):
     """The stick-slip run's section of report.md."""
     word = ("a sustained stick-slip limit cycle" if cyc["stick_slip"] else "a sustained oscillation without stick"
@@ -100,8 +128,7 @@ def stick_slip_lines(cyc, s, scene):
                f"({s:.4g} s per unit: {scene.get('time_scale_note', 'the scene is SI' if scene.get('units') == 'si' else 'the report time scale')})."]
     lin = scene.get("onedof")
     if lin:
-        md += ["", f"The 1-DOF closed form of the scene's drive (rollerref; the stand-in for the CEA, which does not take "
-               f"-axle): steady sliding {'stable' if lin['stable'] else 'unstable'} (growth rate {lin['growth_rate']:+.4g} "
+        md += ["", f"The 1-DOF closed form of the scene's drive (rollerref; the CEA's cross-check): steady sliding {'stable' if lin['stable'] else 'unstable'} (growth rate {lin['growth_rate']:+.4g} "
                f"per unit time, {lin['frequency']:.4g} cycles per unit time); its start from rest: {lin.get('start_from_rest')}."]
     return md + [""]
 
@@ -215,6 +242,8 @@ def verdict_lines(v):
           f"factor of about {v['loss_factor_onset']:.3g}" if v["loss_factor_onset"] > 0 else
           "the mode is stable without the rubber's damping too (the contact alone damps it: the loss factor "
           f"at onset {v['loss_factor_onset']:.3g} would be negative)")]
+    if v.get("drive_mode"):
+        md += ["- on the axle, " + drive_mode_line(v["drive_mode"])]
     if v["diverges"]:
         md += [f"- **unstable without a pitch**: a real eigenvalue {v['real_growth_rate']:+.4g} (order {v['real_order']}, "
                "no frequency): a divergence, not a tone. The steady sliding state does not persist (with velocity "
@@ -384,9 +413,17 @@ def write(folder, parts=PARTS):
     if os.path.exists(j("modes.csv")):
         rows = read_rows(j("modes.csv"))
         v = out["cea"] = verdict(leading_mode(rows), scene, leading_real(rows))
+        if scene.get("axle"):
+            v["drive_mode"] = drive_mode(rows, scene)
         body += verdict_lines(v)
     else:
         out["missing"].append("modes.csv")
+        refused = [c for c in commands if c.get("step") == "cea" and c.get("returncode")]
+        if refused:
+            # roller's own reason, without PETSc's generic line before it
+            out["cea_error"] = refused[0]["error"].replace("No support for this operation for this object type: ", "")
+            body += ["## Flutter: the CEA", "", f"The CEA **did not run**: roller -modes stopped with: {refused[0]['error']} "
+                     f"(its log: {refused[0]['log']}).", ""]
     if os.path.exists(j("sweep.csv")):
         rows = read_rows(j("sweep.csv"))
         xname = next((k for k in rows[0] if k not in FIXED and k != "friction"), None)
@@ -454,6 +491,8 @@ def write(folder, parts=PARTS):
                forced_sound=forced_level(folder, scene, s_unit, forced_r["frequency"]) if forced_r else None)
     if "friction_onset" in out:
         ctx["friction_onset"] = out["friction_onset"]
+    if "cea_error" in out:
+        ctx["cea_error"] = out["cea_error"]
     out["mechanisms"] = mechanisms.evaluate(ctx)
     out["verdict"], out["verdict_complete"] = mechanisms.verdict_word(out["mechanisms"])
     out["spl_db"] = snd["spl_db"] if snd else None
