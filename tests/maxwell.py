@@ -20,9 +20,8 @@
    The branches are given (-maxwell_tau, -maxwell_weight: the fit of 0.1 over 0.02-2 rounded to 4 digits) so that
    the closed form has them exactly."""
 import numpy as np
-from scipy.optimize import least_squares
 
-from rollertest import SOURCE, Checker, read_csv, run, maxwell_oscillator_roots
+from rollertest import SOURCE, Checker, read_csv, run, maxwell_oscillator_roots, fit_maxwell_decay
 
 c = Checker("maxwell")
 
@@ -69,18 +68,8 @@ for scheme in ("dmf", "trapezoidal"):
     d = read_csv(csv)
     t, a = d["t"], d["alpha"]
 
-    def basis(p):
-        return np.array([np.exp(p[0] * t) * np.cos(p[1] * t), np.exp(p[0] * t) * np.sin(p[1] * t)] + [np.exp(r * t) for r in creep]).T
-
-    def residual(p):
-        B = basis(p)
-        return B @ np.linalg.lstsq(B, a, rcond=None)[0] - a
-
-    zero = np.where(np.diff(np.sign(a)) != 0)[0]  # the first guess from the signal: its zero crossings and first two peaks
-    w_guess = np.pi / np.diff(t[zero]).mean()
-    fit = least_squares(residual, [-0.01, w_guess], x_scale=[0.01, 0.1])
-    sigma, w = fit.x
-    es, ew, r = sigma / lam.real - 1, w / lam.imag - 1, np.abs(fit.fun).max() / np.abs(a).max()
+    sigma, w, r = fit_maxwell_decay(t, a, creep)
+    es, ew = sigma / lam.real - 1, w / lam.imag - 1
     c.check(abs(es) < 0.02 and abs(ew) < 0.005,
             f"{scheme}: torsional decay sigma = {sigma:.6f} (closed form {lam.real:.6f}: {100 * es:+.2f} %), w = {w:.6f} ({lam.imag:.6f}: {100 * ew:+.3f} %); "
             f"the fit's largest residual {r:.1e} of max |alpha|")

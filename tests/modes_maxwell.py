@@ -22,7 +22,7 @@ The seeded transient against the CEA's decay is tests/modes_maxwell_transient.py
 against the co-rotating one tests/modes_maxwell_lab.py."""
 import numpy as np
 
-from rollertest import Checker, read_csv, run, maxwell_branches, maxwell_modulus
+from rollertest import Checker, read_csv, run, maxwell_branches, maxwell_modulus, maxwell_oscillator_roots
 
 c = Checker("modes_maxwell")
 BASE = ["-omega", 0, "-mesh_h", 0.05, "-degree", 2, "-quiet"]
@@ -63,16 +63,7 @@ c.check(abs(rot["rubber_loss_factor"][j] / eta - 1) < 1e-3,
 # 2. the torsional eigenvalue against the closed form
 w0 = el["im"][0]
 c.check(el["order"][0] == 0, f"the elastic roller's lowest mode is the torsional one, w0 = {w0:.6f}")
-poly = np.poly1d([1.0, 0.0, w0 * w0])
-for t in tau:
-    poly *= np.poly1d([t, 1.0])
-for i, t in enumerate(tau):
-    term = np.poly1d([w0 * w0 * g[i] * t, 0.0])
-    for k, tk in enumerate(tau):
-        if k != i:
-            term *= np.poly1d([tk, 1.0])
-    poly += term
-lam = next(r for r in poly.roots if r.imag > 0)
+lam, _ = maxwell_oscillator_roots(w0, tau, g)
 got = rot["re"][j] + 1j * rot["im"][j]
 c.check(abs(got - lam) / abs(lam) < 1e-4, f"torsional lambda = {got.real:.8f} + {got.imag:.8f} i, closed form {lam.real:.8f} + {lam.imag:.8f} i: {abs(got - lam) / abs(lam):.1e} < 1e-4")
 

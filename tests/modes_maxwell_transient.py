@@ -11,9 +11,8 @@ lambda (w0^2 = -lambda^2 mu/G*(lambda)), the branches read from the shapes' file
 CEA's sigma and w within 0.5 % of its omega; the modal loss factor 2|s|/w of the transient within 5 % of the
 rubber's G''/G' at w (the torsional mode is deviatoric)."""
 import numpy as np
-from scipy.optimize import least_squares
 
-from rollertest import Checker, read_csv, run, maxwell_branches, maxwell_modulus, maxwell_oscillator_roots
+from rollertest import Checker, read_csv, run, maxwell_branches, maxwell_modulus, maxwell_oscillator_roots, fit_maxwell_decay
 
 c = Checker("modes_maxwell_transient")
 BASE = ["-omega", 0, "-mesh_h", 0.05, "-degree", 2, "-quiet"]
@@ -43,19 +42,8 @@ d = read_csv("decay.csv")
 t, a = d["t"], d["alpha"]
 
 
-def basis(p):
-    return np.array([np.exp(p[0] * t) * np.cos(p[1] * t), np.exp(p[0] * t) * np.sin(p[1] * t)] + [np.exp(r * t) for r in creep]).T
-
-
-def residual(p):
-    B = basis(p)
-    return B @ np.linalg.lstsq(B, a, rcond=None)[0] - a
-
-
-zero = np.where(np.diff(np.sign(a)) != 0)[0]  # the first guess from the signal: its zero crossings
-fit = least_squares(residual, [-0.01, np.pi / np.diff(t[zero]).mean()], x_scale=[0.01, 0.1])
-s, w = fit.x
-es, ew, r = s / lam.real - 1, w / lam.imag - 1, np.abs(fit.fun).max() / np.abs(a).max()
+s, w, r = fit_maxwell_decay(t, a, creep)
+es, ew = s / lam.real - 1, w / lam.imag - 1
 c.check(abs(es) < 0.05 and abs(ew) < 0.005 and s < 0,
         f"the transient decays at s = {s:.6f} against the CEA's {lam.real:.6f} ({100 * es:+.2f} %, < 5 %), w = {w:.6f} against {lam.imag:.6f} ({100 * ew:+.3f} %, < 0.5 %); "
         f"the fit's largest residual {r:.1e} of max |alpha|")

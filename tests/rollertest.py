@@ -106,3 +106,21 @@ def maxwell_oscillator_roots(w0, tau, g):
         poly += term
     roots = poly.roots
     return next(r for r in roots if r.imag > 0), sorted(r.real for r in roots if abs(r.imag) < 1e-9 * abs(r))
+
+
+def fit_maxwell_decay(t, a, creep):
+    """Fit a(t) = e^{s t} (A cos w t + B sin w t) + sum_r C_r e^{r t} (the oscillator on the Maxwell modulus: its pair
+    and its creep roots, maxwell_oscillator_roots) by least squares in (s, w), the amplitudes linear. Returns s, w and
+    the largest residual over max |a|."""
+    from scipy.optimize import least_squares
+
+    def basis(p):
+        return np.array([np.exp(p[0] * t) * np.cos(p[1] * t), np.exp(p[0] * t) * np.sin(p[1] * t)] + [np.exp(r * t) for r in creep]).T
+
+    def residual(p):
+        B = basis(p)
+        return B @ np.linalg.lstsq(B, a, rcond=None)[0] - a
+
+    zero = np.where(np.diff(np.sign(a)) != 0)[0]  # the first guess from the signal: its zero crossings
+    fit = least_squares(residual, [-0.01, np.pi / np.diff(t[zero]).mean()], x_scale=[0.01, 0.1])
+    return fit.x[0], fit.x[1], np.abs(fit.fun).max() / np.abs(a).max()
