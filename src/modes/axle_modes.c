@@ -338,18 +338,15 @@ PetscErrorCode RollerAxleModeSplit(Vec z, Vec x, PetscReal q[2])
   MPI_Comm           comm = PetscObjectComm((PetscObject)z);
   PetscMPIInt        rank, size;
   const PetscScalar *a;
-  PetscScalar       *b;
   PetscInt           n;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(RollerBranchRestrict(z, x)); /* the body's part: the leading local entries */
   PetscCall(VecGetLocalSize(x, &n));
   PetscCall(VecGetArrayRead(z, &a));
-  PetscCall(VecGetArrayWrite(x, &b));
-  for (PetscInt i = 0; i < n; ++i) b[i] = a[i];
   if (rank == size - 1) q[0] = PetscRealPart(a[n]), q[1] = PetscRealPart(a[n + 1]);
-  PetscCall(VecRestoreArrayWrite(x, &b));
   PetscCall(VecRestoreArrayRead(z, &a));
   PetscCallMPI(MPI_Bcast(q, 2, MPIU_REAL, size - 1, comm));
   PetscFunctionReturn(0);
