@@ -103,7 +103,7 @@ cases = [
     (["-obstacle", "-sweep", "bad_sweep.csv", "-sweep_friction", "0.3,0.8", "-friction_table", "0:1,0.1:0.5"], "-sweep_friction", "-friction_table"),
     (["-rom", "-axle", "-drive_stiffness", "1"], "-axle", "-rom"),
     (["-rom", "-obstacle", "-contact_solver", "vi"], "-contact_solver", "not vi"),
-    (["-modes", "-axle", "-drive_stiffness", "1", "-omega", "0", "-rubber", "maxwell", "-rubber_loss_factor", "0.1", "-rubber_band", "0.1,10"], "-rubber maxwell", "kelvin_voigt"),
+    (["-modes", "-axle", "-drive_stiffness", "1", "-omega", "1", "-rubber", "maxwell", "-rubber_loss_factor", "0.1", "-rubber_band", "0.1,10"], "-modes_branch_transport", "got true"),
 ]
 for args, name, value in cases:
     code, out, err = run(["-mesh_h", "0.05", "-ts_max_steps", "2", "-quiet"] + args if args[0] != "-mesh_h" else args + ["-ts_max_steps", "2"], check=False)

@@ -12,6 +12,9 @@ roller_test(squeal_steady squeal_steady.py LABELS long TIMEOUT 2400)
 # -modes with -axle (docs/squeal.md section 3.1): the hub's torsion and bounce in the stiff-rubber limit against the closed
 # forms, at rest and turning (the lab frame's borders), rolling on the sheet on 1 and 2 ranks, the refusals
 roller_test(axle_modes axle_modes.py LABELS quick mpi PROCESSORS 2 TIMEOUT 600)
+# -modes with -axle and -rubber maxwell (the branches over the bordered body): the bounce's growth rate and frequency
+# against the transient at rest and rolling (frozen branches), its modal loss factor, 1 = 2 ranks, the refused transport
+roller_test(axle_modes_maxwell axle_modes_maxwell.py LABELS quick mpi PROCESSORS 2 TIMEOUT 600)
 # the CEA on the axle's stick-slip onset scenes (tests/axle_stickslip.py (a)): the drive's growth rate against the closed
 # form and the finite elements' transient, the onset slip
 roller_test(axle_modes_onset axle_modes_onset.py LABELS long PROCESSORS 2 TIMEOUT 1800)

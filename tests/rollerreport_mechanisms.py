@@ -136,16 +136,18 @@ c.check(fl.get("status") == "run" and fl.get("squeals") is False and dm.get("row
         f"{100 * (dm.get('ratio', math.nan) - 1):+.2f} %; verdict {out2.get('verdict')} by {out2.get('squeals_by')} ({r.stderr.strip()[-300:]})")
 os.remove(os.path.join(d, "modes.csv"))
 log = ("[0]PETSC ERROR: --------------------- Error Message -------\n[0]PETSC ERROR: No support for this operation for this object type\n"
-       "[0]PETSC ERROR: -axle with -modes and -rubber maxwell: the augmented eigenproblem of the Maxwell branches does not border the rows of the hub yet (the time step carries both): use -rubber kelvin_voigt for the CEA on the axle\n"
+       "[0]PETSC ERROR: -sheet_mass with -modes: the steady state takes the sheet's speed -sheet_speed (the force balance of a moving sheet is the transient's)\n"
        "[0]PETSC ERROR: See https://petsc.org/release/faq/ for trouble shooting.\n[0]PETSC ERROR: #1 RollerSetFromOptions() at options.c:167\n"
-       "[0]PETSC ERROR: WARNING! There are option(s) set that were not used!\n[0]PETSC ERROR: Option left: name:-axle value: true\n")
+       "[0]PETSC ERROR: WARNING! There are option(s) set that were not used!\n[0]PETSC ERROR: Option left: name:-sheet_mass value: 0.1\n")
 steps = run.Steps(d, "/bin/sh")
-steps.run("cea", ["/bin/sh", "-c", f"printf '%s' '{log}'; exit 56"], "the CEA", outputs=["modes.csv"])
+with open("refused.log", "w") as f:  # roller's words, quotes and all, as its stderr
+    f.write(log)
+steps.run("cea", ["/bin/sh", "-c", f"cat {os.path.abspath('refused.log')}; exit 56"], "the CEA", outputs=["modes.csv"])
 rec = steps.done[-1]
 r = subprocess.run([sys.executable, "-m", "rollerreport", d], capture_output=True, text=True)
 out3 = json.load(open(os.path.join(d, "report.json"))) if r.returncode == 0 else {}
 fl3 = {m["kind"]: m for m in out3.get("mechanisms", [])}.get("flutter", {})
-why = "-axle with -modes and -rubber maxwell: the augmented eigenproblem of the Maxwell branches does not border the rows of the hub yet (the time step carries both): use -rubber kelvin_voigt for the CEA on the axle"
+why = "-sheet_mass with -modes: the steady state takes the sheet's speed -sheet_speed (the force balance of a moving sheet is the transient's)"
 c.check(rec.get("refused") is True and rec["error"].endswith(why) and fl3.get("status") == f"not run: roller -modes refused the scene: {why}"
         and fl3.get("squeals") is None and "not a substitute" in fl3["evidence"][0] and out3["squeals_by"] == ["stick-slip"],
         f"the CEA refused: {fl3.get('status')} (the part refused, not failed: {rec.get('refused')})")

@@ -172,7 +172,10 @@ static PetscErrorCode Bordered(Mat A, const Border *b, Mat *B)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode RollerAxleModeOperators(Roller ctx, Mat *M, Mat *C, Mat *K)
+/* bd: with the Maxwell branches (NULL otherwise), their K_d bordered the same way (C_D, D_D of model/axle.c: the
+   branch energy of the time step, 1/2 g_i (xi - z_i, q - zeta_i) . K_d,aug (xi - z_i, q - zeta_i)), for branches.c to augment the bordered operators with: each branch's field then carries
+   its hub part zeta_i = (Y, phi) as the step's */
+PetscErrorCode RollerAxleModeOperators(Roller ctx, Mat *M, Mat *C, Mat *K, RollerBranchBorder *bd)
 {
   const RollerHubCoupling *hc  = &ctx->axle.hub->c;
   const PetscReal          rho = ctx->material.density, w = ctx->rotation.omega, tau = ctx->material.viscosity, eta = ctx->disc.damping;
@@ -256,6 +259,20 @@ PetscErrorCode RollerAxleModeOperators(Roller ctx, Mat *M, Mat *C, Mat *K)
   PetscCall(Bordered(*K, &bk, &B));
   PetscCall(MatDestroy(K));
   *K = B;
+  if (bd) {
+    Border    bb;
+    PetscReal DDh[4];
+    Vec       cd[2];
+
+    PetscCheck(hc->CD[1], ctx->comm, PETSC_ERR_PLIB, "-axle: the branches' border C_D was not made (no K_d)");
+    cd[0] = hc->CD[1], cd[1] = hc->CD[2];
+    Sub(hc->DD, DDh);
+    PetscCall(BorderCreate(r[0], &bb));
+    PetscCall(BorderAdd(&bb, 1.0, cd, 1.0, DDh));
+    PetscCall(Bordered(ctx->ops.Kd, &bb, &bd->Kd));
+    PetscCall(BorderDestroy(&bb));
+    bd->W = *M; /* the bordered mass (a reference the caller's M holds) */
+  }
   PetscCall(BorderDestroy(&bm));
   PetscCall(BorderDestroy(&bc));
   PetscCall(BorderDestroy(&bk));
@@ -267,6 +284,26 @@ PetscErrorCode RollerAxleModeOperators(Roller ctx, Mat *M, Mat *C, Mat *K)
     PetscCall(PetscPrintf(ctx->comm, "roller: -modes -axle: the hub's (Y, phi) appended (mass %g, inertia %g, axle spring %g, drive %g, damper %g): free torsion sqrt(k_d/(I + I_rubber)) = %g, bounce sqrt(k/(m + m_rubber)) = %g\n", (double)ctx->axle.mass,
                           (double)ctx->axle.inertia, (double)ctx->axle.stiffness, (double)ctx->axle.drive_stiffness, (double)ctx->axle.drive_damping, (double)PetscSqrtReal(ctx->axle.drive_stiffness / (ctx->axle.inertia + rho * hc->inertia)),
                           (double)PetscSqrtReal(ctx->axle.stiffness / (ctx->axle.mass + rho * hc->mass))));
+  PetscFunctionReturn(0);
+}
+
+/* u += q_0 r_0 + q_1 r_1 on the body's part of u (all of it, or the leading local entries of the Maxwell branches'
+   augmented layout: the branches' fields are not read from the steady state) */
+static PetscErrorCode AddToBody(Vec u, const PetscReal q[2], Vec r[2])
+{
+  const PetscScalar *a, *b;
+  PetscScalar       *pu;
+  PetscInt           n;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(r[0], &n));
+  PetscCall(VecGetArray(u, &pu));
+  PetscCall(VecGetArrayRead(r[0], &a));
+  PetscCall(VecGetArrayRead(r[1], &b));
+  for (PetscInt i = 0; i < n; ++i) pu[i] += q[0] * a[i] + q[1] * b[i];
+  PetscCall(VecRestoreArrayRead(r[1], &b));
+  PetscCall(VecRestoreArrayRead(r[0], &a));
+  PetscCall(VecRestoreArray(u, &pu));
   PetscFunctionReturn(0);
 }
 
@@ -322,8 +359,7 @@ PetscErrorCode RollerAxleSteadySolve(Roller ctx, Mat Klab, RollerSteady *st, Pet
   q[0] = -d1;                                /* the hub lowered onto the sheet at -r_outer */
   q[1] = torque / ctx->axle.drive_stiffness; /* the drive's spring holds the friction torque */
   PetscCall(RigidFields(ctx, r));
-  PetscCall(VecAXPY(st->u, q[0], r[0]));
-  PetscCall(VecAXPY(st->u, q[1], r[1]));
+  PetscCall(AddToBody(st->u, q, r));
   PetscCall(VecDestroy(&r[0]));
   PetscCall(VecDestroy(&r[1]));
   if (!ctx->ts.quiet)
@@ -349,6 +385,23 @@ PetscErrorCode RollerAxleModeSplit(Vec z, Vec x, PetscReal q[2])
   if (rank == size - 1) q[0] = PetscRealPart(a[n]), q[1] = PetscRealPart(a[n + 1]);
   PetscCall(VecRestoreArrayRead(z, &a));
   PetscCallMPI(MPI_Bcast(q, 2, MPIU_REAL, size - 1, comm));
+  PetscFunctionReturn(0);
+}
+
+/* rel = x - Y e2 - phi J x on the free nodes: the body's shape relative to the hub, whose strain is the whole body's
+   (K and K_d annihilate the rigid fields; Gamma_D's nodes carry no relative motion), for the clamped body's quadratic
+   forms (the rubber's loss factor of a mode, branches.c) */
+PetscErrorCode RollerAxleModeRelative(Roller ctx, Vec x, const PetscReal q[2], Vec rel)
+{
+  const PetscReal mq[2] = {-q[0], -q[1]};
+  Vec             r[2];
+
+  PetscFunctionBeginUser;
+  PetscCall(RigidFields(ctx, r));
+  PetscCall(VecCopy(x, rel));
+  PetscCall(AddToBody(rel, mq, r));
+  PetscCall(VecDestroy(&r[0]));
+  PetscCall(VecDestroy(&r[1]));
   PetscFunctionReturn(0);
 }
 

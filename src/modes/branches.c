@@ -53,23 +53,30 @@ static PetscErrorCode Combine(PetscReal a, Mat B, PetscReal b, Mat T, Mat *A)
   PetscFunctionReturn(0);
 }
 
-/* The augmented (M, C, K) from the frame's; in the lab the branches transported by B_L or frozen */
-static PetscErrorCode Augment(Roller ctx, PetscBool transport, Mat *M, Mat *C, Mat *K)
+/* The augmented (M, C, K) from the frame's; in the lab the branches transported by B_L or frozen. bd: the branches'
+   stiffness K_d and the flow rules' weight W of a bordered body (-axle: the hub's rows, axle_modes.c; W its bordered
+   mass, since the bordered K_d annihilates the rigid fields; frozen in the lab), or NULL (the body's K_d; W = M in the
+   lab, K_d co-rotating). */
+static PetscErrorCode Augment(Roller ctx, PetscBool transport, const RollerBranchBorder *bd, Mat *M, Mat *C, Mat *K)
 {
   const RollerMaterial *mat = &ctx->material;
   const PetscInt        n = mat->nbranch, nb = n + 1;
   const PetscReal       w   = ctx->rotation.omega;
   const PetscBool       lab = ctx->eig.frame == ROLLER_FRAME_LAB ? PETSC_TRUE : PETSC_FALSE;
-  Mat                   W, B = NULL, *bm, *bc, *bk, Ma, Ca, Ka;
+  const MatStructure    str = bd ? DIFFERENT_NONZERO_PATTERN : SUBSET_NONZERO_PATTERN;
+  Mat                   Kd, W, B = NULL, *bm, *bc, *bk, Ma, Ca, Ka;
   IS                    is[ROLLER_MAX_BRANCHES + 1];
 
   PetscFunctionBeginUser;
   if (mat->rubber != ROLLER_RUBBER_MAXWELL || !n) PetscFunctionReturn(0);
   PetscCall(PetscCalloc3(nb * nb, &bm, nb * nb, &bc, nb * nb, &bk));
   PetscCall(BlockISs(*M, nb, is));
-  W = lab ? ctx->ops.M : ctx->ops.Kd;
+  Kd = bd ? bd->Kd : ctx->ops.Kd;
+  W  = bd ? bd->W : (lab ? ctx->ops.M : ctx->ops.Kd);
   if (lab && w != 0 && transport) {
     PetscReal defect;
+
+    PetscCheck(!bd, ctx->comm, PETSC_ERR_SUP, "the branches' transport B_L has no hub rows (options.c refuses -axle with -modes_branch_transport)");
 
     PetscCall(RollerAssembleRotationalMass(ctx, &B));
     PetscCall(RollerSkewPart(B, &defect));
@@ -81,8 +88,8 @@ static PetscErrorCode Augment(Roller ctx, PetscBool transport, Mat *M, Mat *C, M
     const PetscInt  d = (i + 1) * nb + i + 1;
     const PetscReal g = mat->g[i], tau = mat->tau[i];
 
-    PetscCall(MatAXPY(bk[0], g, ctx->ops.Kd, SUBSET_NONZERO_PATTERN));
-    PetscCall(Combine(-g, ctx->ops.Kd, 0, NULL, &bk[i + 1])); /* -g_i K_d z_i in the rows of xi */
+    PetscCall(MatAXPY(bk[0], g, Kd, str));
+    PetscCall(Combine(-g, Kd, 0, NULL, &bk[i + 1])); /* -g_i K_d z_i in the rows of xi */
     PetscCall(Combine(-g, W, 0, NULL, &bk[(i + 1) * nb]));    /* -W_i xi in the rows of z_i */
     PetscCall(Combine(g * tau, W, 0, NULL, &bc[d]));
     PetscCall(Combine(g, W, g * tau * w, B, &bk[d]));
@@ -111,30 +118,33 @@ static PetscErrorCode Augment(Roller ctx, PetscBool transport, Mat *M, Mat *C, M
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode RollerBranchOperators(Roller ctx, Mat *M, Mat *C, Mat *K)
+/* bd: NULL for the body (clamped at the shaft); the bordered K_d and M with -axle */
+PetscErrorCode RollerBranchOperators(Roller ctx, const RollerBranchBorder *bd, Mat *M, Mat *C, Mat *K)
 {
   PetscFunctionBeginUser;
-  PetscCall(Augment(ctx, ctx->eig.branch_transport, M, C, K));
+  PetscCall(Augment(ctx, ctx->eig.branch_transport, bd, M, C, K));
   PetscFunctionReturn(0);
 }
 
 /*
-  RollerBranchSteadyStiffness - the lab K the steady rolling state is solved with: K itself (a new reference), except
-  with -modes_branch_transport false, where the steady state still takes the transported branches (its z_i != xi:
-  the rubber's rolling hysteresis; one linear solve, cheap) and only the eigenproblem freezes them.
+  RollerBranchSteadyStiffness - the lab K the steady rolling state is solved with: K itself (a new reference) when it
+  carries the branches (augmented) as the steady state takes them, else the frame's K augmented anew: with
+  -modes_branch_transport false the steady state still takes the transported branches (its z_i != xi: the rubber's
+  rolling hysteresis; one linear solve, cheap) and only the eigenproblem freezes them; with -axle K is the body's
+  alone (the branches come after the hub's border) and the steady state is the clamped hub's (axle_modes.c).
 */
-PetscErrorCode RollerBranchSteadyStiffness(Roller ctx, Mat K, Mat *Ks)
+PetscErrorCode RollerBranchSteadyStiffness(Roller ctx, Mat K, PetscBool augmented, Mat *Ks)
 {
   Mat m, c;
 
   PetscFunctionBeginUser;
-  if (ctx->material.rubber != ROLLER_RUBBER_MAXWELL || !ctx->material.nbranch || ctx->eig.branch_transport || ctx->eig.frame != ROLLER_FRAME_LAB || ctx->rotation.omega == 0) {
+  if (ctx->material.rubber != ROLLER_RUBBER_MAXWELL || !ctx->material.nbranch || (augmented && (ctx->eig.branch_transport || ctx->eig.frame != ROLLER_FRAME_LAB || ctx->rotation.omega == 0))) {
     PetscCall(PetscObjectReference((PetscObject)K));
     *Ks = K;
     PetscFunctionReturn(0);
   }
   PetscCall(RollerModeOperators(ctx, &m, &c, Ks));
-  PetscCall(Augment(ctx, PETSC_TRUE, &m, &c, Ks));
+  PetscCall(Augment(ctx, PETSC_TRUE, NULL, &m, &c, Ks));
   PetscCall(MatDestroy(&m));
   PetscCall(MatDestroy(&c));
   PetscFunctionReturn(0);

@@ -119,13 +119,30 @@ static PetscErrorCode WriteCsv(Roller ctx, const PetscReal *hub)
   PetscFunctionReturn(0);
 }
 
+/* -axle: the hub's border (axle_modes.c), then the Maxwell branches over the bordered body, their flow rules weighted
+   by its mass (the bordered K_d is singular on the rigid fields) */
+static PetscErrorCode AxleOperators(Roller ctx, Mat *M, Mat *C, Mat *K)
+{
+  const PetscBool    branches = ctx->material.rubber == ROLLER_RUBBER_MAXWELL && ctx->material.nbranch ? PETSC_TRUE : PETSC_FALSE;
+  RollerBranchBorder bd       = {NULL, NULL};
+
+  PetscFunctionBeginUser;
+  PetscCall(RollerAxleModeOperators(ctx, M, C, K, branches ? &bd : NULL));
+  if (!branches) PetscFunctionReturn(0);
+  PetscCall(PetscObjectReference((PetscObject)bd.W));
+  PetscCall(RollerBranchOperators(ctx, &bd, M, C, K));
+  PetscCall(MatDestroy(&bd.W));
+  PetscCall(MatDestroy(&bd.Kd));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode RollerModesSolve(Roller ctx)
 {
   RollerEigen         *e = &ctx->eig;
   Mat                  M, C, K;
   RollerPEP            pep;
   RollerModeClassifier cls;
-  Vec                 *xr, *xi, w, zr = NULL, zi = NULL, fr = NULL, fi = NULL, steady = NULL; /* z: the PEP's vectors; f: with -obstacle, the full ones before the reduction */
+  Vec                 *xr, *xi, w, rel = NULL, zr = NULL, zi = NULL, fr = NULL, fi = NULL, steady = NULL; /* z: the PEP's vectors; f: with -obstacle, the full ones before the reduction */
   PetscReal           *hub    = NULL;                                                         /* with -axle: |Y|, |phi| of each mode */
   IS                   kept   = NULL;                                                         /* with -obstacle: the dofs of the reduced problem */
   PetscInt             nstick = 0;                                                            /* and the stick nodes' multipliers after them */
@@ -134,18 +151,18 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   PetscFunctionBeginUser;
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_MODES]));
   PetscCall(RollerModeOperators(ctx, &M, &C, &K));
-  PetscCall(RollerBranchOperators(ctx, &M, &C, &K));
+  if (!ctx->axle.on) PetscCall(RollerBranchOperators(ctx, NULL, &M, &C, &K)); /* with -axle after the hub's border */
   if (ctx->obstacle.on) { /* the steady state, and the linearization about it on the kept dofs */
     RollerSteady st;
     Mat          Mr, Cr, Kr, Ks;
     PetscReal    q[2]; /* with -axle: the hub's steady (Y, phi) */
 
-    PetscCall(RollerBranchSteadyStiffness(ctx, K, &Ks)); /* -modes refuses -axle with -rubber maxwell */
+    PetscCall(RollerBranchSteadyStiffness(ctx, K, ctx->axle.on ? PETSC_FALSE : PETSC_TRUE, &Ks));
     if (ctx->axle.on) PetscCall(RollerAxleSteadySolve(ctx, Ks, &st, q));
     else PetscCall(RollerSteadySolve(ctx, Ks, &st));
     PetscCall(MatDestroy(&Ks));
     PetscCall(RollerSteadyReport(ctx, &st));
-    if (ctx->axle.on && e->nev) PetscCall(RollerAxleModeOperators(ctx, &M, &C, &K));
+    if (ctx->axle.on && e->nev) PetscCall(AxleOperators(ctx, &M, &C, &K));
     PetscCall(MatCreateVecs(K, &fr, &fi));
     if (e->nev) PetscCall(RollerSquealOperators(ctx, &st, M, C, K, &Mr, &Cr, &Kr, &kept, &nstick));
     PetscCall(VecDuplicate(ctx->ops.coordinates, &steady)); /* kept for the shapes' file: the displacement */
@@ -163,7 +180,7 @@ PetscErrorCode RollerModesSolve(Roller ctx)
     M = Mr;
     C = Cr;
     K = Kr;
-  } else if (ctx->axle.on) PetscCall(RollerAxleModeOperators(ctx, &M, &C, &K));
+  } else if (ctx->axle.on) PetscCall(AxleOperators(ctx, &M, &C, &K));
   PetscCall(RollerPEPCreate(ctx->comm, M, C, K, e->nev, nstick ? PETSC_TRUE : PETSC_FALSE, RollerBranchRelaxationBand(ctx, band) ? band : NULL, &pep));
   PetscCall(RollerPEPSolve(pep, &e->n));
   PetscCall(RollerModeClassifierCreate(ctx, &cls));
@@ -173,6 +190,7 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   PetscCall(VecDuplicateVecs(ctx->ops.coordinates, e->n, &xi));
   PetscCall(VecDuplicate(ctx->ops.coordinates, &w));
   PetscCall(MatCreateVecs(M, &zr, &zi));
+  if (ctx->axle.on) PetscCall(VecDuplicate(w, &rel));
   if (ctx->axle.on) PetscCall(PetscMalloc1(2 * e->n, &hub));
   for (PetscInt j = 0; j < e->n; ++j) {
     RollerWave wave;
@@ -194,11 +212,16 @@ PetscErrorCode RollerModesSolve(Roller ctx)
       PetscCall(RollerBranchRestrict(kept ? fi : zi, xi[j]));
     }
     PetscCall(RollerPEPGetError(pep, j, &e->error[j]));
+    if (hub) { /* the rubber's loss factor of the strain: the shape relative to the hub (its scale drops out) */
+      PetscCall(RollerAxleModeRelative(ctx, xr[j], qr, w));
+      PetscCall(RollerAxleModeRelative(ctx, xi[j], qi, rel));
+      PetscCall(RollerBranchLossFactor(ctx, w, rel, e->im[j], &e->rubber_loss[j]));
+    }
     PetscCall(Normalize(xr[j], xi[j], w, f));
     if (hub) /* scaled like the body: |q f| */
       for (PetscInt k = 0; k < 2; ++k) hub[2 * j + k] = PetscSqrtReal((qr[k] * qr[k] + qi[k] * qi[k]) * (f[0] * f[0] + f[1] * f[1]));
     PetscCall(RollerModeClassify(cls, xr[j], xi[j], &e->order[j], &wave));
-    PetscCall(RollerBranchLossFactor(ctx, xr[j], xi[j], e->im[j], &e->rubber_loss[j]));
+    if (!hub) PetscCall(RollerBranchLossFactor(ctx, xr[j], xi[j], e->im[j], &e->rubber_loss[j]));
     e->wave[j] = wave;
   }
   PetscCall(PetscLogStagePop());
@@ -216,6 +239,7 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   PetscCall(VecDestroyVecs(e->n, &xr));
   PetscCall(VecDestroyVecs(e->n, &xi));
   PetscCall(VecDestroy(&w));
+  PetscCall(VecDestroy(&rel));
   PetscCall(VecDestroy(&steady));
   PetscCall(VecDestroy(&zr));
   PetscCall(VecDestroy(&zi));
