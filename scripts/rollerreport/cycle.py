@@ -5,7 +5,7 @@ mechanisms, read from what roller wrote (`-monitor_csv`: t, hub_rate, drive_torq
   mean (with a hysteresis of a quarter of the tail's half peak-to-peak, so that the node passing's ripple does not
   count as a crossing), the half peak-to-peak of each period, whether the patch stuck in each period (stick_nodes > 0),
   the envelope's growth rate (the slope of log amplitude over the last periods). Sustained: the amplitude changes by
-  less than SUSTAINED_PER_PERIOD per period and the periods agree within PERIOD_SPREAD; stick-slip: sustained and stuck
+  less than SUSTAINED_PER_PERIOD per period and the periods agree within PERIOD_SPREAD; stick-slip: sustained, stuck and slipping whole
   once in every one of those periods.
 - `fundamental`: the pitch of a periodic sound (the stick-slip saw-tooth's harmonics may be louder than its
   fundamental): the first peak of the normalized autocorrelation above 0.5, refined by a parabola.
@@ -61,24 +61,27 @@ def detect(t, y, stick=None, t_min=None, tail=1.0 / 3, periods=8):
         out["crossings"] = tc.tolist()
         return out
     per = np.diff(tc)
-    amps, sticks, mids = [], [], []
+    amps, sticks, slips, mids = [], [], [], []
     for a, b in zip(tc[:-1], tc[1:]):
         w = (t >= a) & (t < b)
         amps.append(0.5 * float(np.ptp(y[w])))
         sticks.append(int(np.max(st[w])) if st is not None else None)
+        slips.append(bool(np.min(st[w]) == 0) if st is not None else None)  # the whole patch slipping at some step
         mids.append(0.5 * (a + b))
     amps = np.array(amps)
     g = float(np.polyfit(mids, np.log(amps), 1)[0]) if len(amps) >= 2 and np.all(amps > 0) else math.nan
     T = float(np.mean(per))
     spread = float(np.max(np.abs(per / T - 1)))
     sustained = bool(math.isfinite(g) and abs(g) * T < SUSTAINED_PER_PERIOD and spread < PERIOD_SPREAD)
-    every = None if st is None else all(s > 0 for s in sticks)
+    # stick-slip: the patch sticks and slips whole in every period (a rolling patch's stick zone that never lets go
+    # while a forced oscillation rides on it is not stick-slip)
+    every = None if st is None else all(s > 0 for s in sticks) and all(slips)
     out.update(period=T, frequency=1.0 / T, amplitude=float(np.mean(amps)), growth_rate=g, sustained=sustained,
                stick_every_period=every, stick_slip=bool(sustained and every), crossings=tc.tolist(),
                amplitudes=amps.tolist(), sticks=sticks, period_spread=spread, periods_used=len(per))
     out["why"] = (f"{len(per)} periods of {T:.5g} (spread {100 * spread:.2f} %), amplitude {out['amplitude']:.4g}, "
                   f"envelope {g:+.3g} per unit time ({100 * g * T:+.2f} % per period)"
-                  + ("" if st is None else f", stuck in {sum(s > 0 for s in sticks)} of them"))
+                  + ("" if st is None else f", stuck in {sum(s > 0 for s in sticks)} of them, slipping whole in {sum(slips)}"))
     return out
 
 

@@ -164,15 +164,16 @@ def forced_response(folder, scene):
     from . import cycle
 
     rip = scene.get("ripple") or {}
-    if not os.path.exists(os.path.join(folder, "forced.csv")) or not rip.get("frequency"):
+    monitor = (rip.get("files") or ["forced.csv"])[0]
+    if not os.path.exists(os.path.join(folder, monitor)) or not rip.get("frequency"):
         return None
-    d = _monitor(folder, "forced.csv", ["t", "hub_rate", "stick_nodes"])
+    d = _monitor(folder, monitor, ["t", "hub_rate", "stick_nodes"])
     t, f, a = d["t"], float(rip["frequency"]), float(rip["amplitude"])
     keep = t >= t[-1] - max((t[-1] - t[0]) / 2, 1.0 / f)
     lin = scene.get("onedof") or {}
     free = [(lin["frequency"], lin["growth_rate"])] if lin.get("frequency") else []  # the drive's own, decaying
     amp, phase = cycle.lock_in(t[keep], d["hub_rate"][keep], f, free=free)
-    out = {"frequency": f, "ripple": a, "rate_amplitude": amp, "phase": phase, "t_window": [float(t[keep][0]), float(t[-1])],
+    out = {"frequency": f, "ripple": a, "rate_amplitude": amp, "phase": phase, "t_window": [float(t[keep][0]), float(t[-1])], "file": monitor,
            "stick_nodes_max": int(np.max(d["stick_nodes"][keep])) if "stick_nodes" in d else None}
     ref = rip.get("one_dof")
     if ref:
@@ -190,7 +191,7 @@ def forced(ctx):
     s = ctx.get("seconds_per_unit", 1.0)
     snd = ctx.get("forced_sound") or {}
     ev = [f"ripple {r['ripple']:.4g} rad at {r['frequency']:.5g} per unit time ({r['frequency'] / s:.2f} Hz): the hub rate's "
-          f"amplitude at it {r['rate_amplitude']:.5g} over t = {r['t_window'][0]:.4g}..{r['t_window'][1]:.4g} (forced.csv)"]
+          f"amplitude at it {r['rate_amplitude']:.5g} over t = {r['t_window'][0]:.4g}..{r['t_window'][1]:.4g} ({r.get('file', 'forced.csv')})"]
     if "one_dof_rate_amplitude" in r:
         ev.append(f"1-DOF closed form (rollerref.forced.one_dof, the friction's slope about steady sliding): "
                   f"{r['one_dof_rate_amplitude']:.5g} ({100 * (r['ratio'] - 1):+.1f} %)")

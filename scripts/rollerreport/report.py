@@ -370,9 +370,10 @@ def forced_level(folder, scene, s, f):
     frequency f (per unit time) (rollerreport.heard.pressure of forced.csv and forced_surface.csv), or None."""
     from . import heard
 
-    if not os.path.exists(os.path.join(folder, "forced_surface.csv")):
+    monitor, surface = (scene.get("ripple") or {}).get("files") or ["forced.csv", "forced_surface.csv"]
+    if not os.path.exists(os.path.join(folder, surface)):
         return None
-    pr = heard.pressure(folder, scene, s, "forced.csv", "forced_surface.csv")
+    pr = heard.pressure(folder, scene, s, monitor, surface)
     return {"spl_line_db": heard.line_level(pr["t"], pr["p"], f / s), "spl_db": radiation_level(pr)}
 
 
@@ -457,6 +458,18 @@ def write(folder, parts=PARTS):
             snd = out["sound"] = recorded(jr, "sound", ("wav_pitch_hz", "wav_source"))
         if snd:
             out["files"] += ["squeal.wav", "sound.csv", "spectrogram.png"]
+    heard_run = False
+    if not (heard_cycle and math.isfinite(cyc["frequency"])) and cyc is not None and os.path.exists(j("stickslip_surface.csv")) and not os.path.exists(j("transient.csv")):
+        # no stick-slip cycle: the WAV is the scene's own run from its start (the bounce, the ripple's line, a decay
+        # decaying), at its level; the line looked at: the ripple's, else the CEA's least stable mode's
+        rip = (scene.get("ripple") or {}).get("frequency")
+        f_line = float(rip) if rip else (float(v["frequency"]) if v and v.get("frequency") else None)
+        if f_line:
+            snd = out["sound"] = (cycle_sound_part(folder, scene, s_unit, f_line / s_unit, jr) if "sound" in parts
+                                  else recorded(jr, "sound", ("wav_pitch_hz", "wav_source")))
+            heard_run, heard_cycle = bool(snd), heard_cycle and not snd
+            if snd:
+                out["files"] += ["squeal.wav", "sound.csv", "spectrogram.png"]
     if os.path.exists(j("transient.csv")) and v is not None and not (heard_cycle and snd):
         body += fit_lines(j, v, out)
         if "sound" in parts:
@@ -485,7 +498,7 @@ def write(folder, parts=PARTS):
         out["missing"].append("transient.h5")
     # the mechanisms and the verdict (SPEC section 10)
     forced_r = mechanisms.forced_response(folder, scene)
-    ctx = dict(folder=folder, scene=scene, verdict=v, fit=out.get("fit"), sound=snd if not heard_cycle else None,
+    ctx = dict(folder=folder, scene=scene, verdict=v, fit=out.get("fit"), sound=snd if not (heard_cycle or heard_run) else None,
                divergent=out.get("divergent", []), seconds_per_unit=s_unit, stick_slip_cycle=cyc,
                stick_slip_sound=snd if heard_cycle else None, onedof=scene.get("onedof"), forced_response=forced_r,
                forced_sound=forced_level(folder, scene, s_unit, forced_r["frequency"]) if forced_r else None)

@@ -404,7 +404,8 @@ def main(argv=None):
 def axle_parts(steps, base, opts, scene, a, extra, out):
     """The parts of a scene on the axle besides the CEA (run by main as for any scene; scene.json's "onedof", the 1-DOF
     closed form, is its cross-check on the drive's mode): the start from rest to its limit cycle (stickslip.csv, stickslip_surface.csv), long enough for
-    0.5 s of audio; the forced run with the ripple; the propensity study (rollerreport.propensity)."""
+    0.5 s of audio; the forced run with the ripple (the start from rest itself when the scene carries that ripple:
+    scene.json's ripple "files"); the propensity study (rollerreport.propensity)."""
     j = lambda f: os.path.join(out, f)  # noqa: E731
     s = scene.get("seconds_per_unit", 1.0)
     # at least 0.5 s of audio after the first row (the state before the first contact solve, left out) and whatever
@@ -423,12 +424,21 @@ def axle_parts(steps, base, opts, scene, a, extra, out):
         p = onedof.torsion(opts, ripple=False)
         ref = ref_forced.one_dof(p.I, p.k_d, p.c_d, ripple[1], ripple[0], c_f=lin["c_eff"] - p.c_d)
         scene["ripple"] = {"amplitude": ripple[0], "frequency": ripple[1], "one_dof": ref}
+        own = [onedof.value(opts, "drive_ripple"), onedof.value(opts, "drive_ripple_frequency")]
+        if not a.forced_options and ripple == own:  # the scene runs with its own ripple: the start from rest is the forced run
+            scene["ripple"]["files"] = ["stickslip.csv", "stickslip_surface.csv"]
+            return propensity_part(steps, opts, a, out)
         more = a.forced_options.split()
         steps.run("forced", base + more + ["-drive_ripple", repr(ripple[0]), "-drive_ripple_frequency", repr(ripple[1]),
                                            "-ts_max_time", repr(T), "-monitor_csv", j("forced.csv"), "-monitor_surface_csv",
                                            j("forced_surface.csv"), "-quiet"] + extra,
                   f"the motor's ripple {ripple[0]:g} rad at {ripple[1]:g} per unit time: the forced response "
                   "(docs/squeal.md 9.4)", outputs=["forced.csv", "forced_surface.csv"])
+    propensity_part(steps, opts, a, out)
+
+
+def propensity_part(steps, opts, a, out):
+    """The propensity study (rollerreport.propensity), journalled."""
     if a.propensity_cases > 0 and (steps.only is None or "propensity" in steps.only):
         from . import propensity
 
