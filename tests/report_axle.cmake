@@ -5,3 +5,9 @@
 # envelope, the forced response against rollerref.forced's closed form (10 %), 64 propensity cases, the journal's
 # reuse. Two finite-element runs of about 4100 steps (about 8 CPU minutes).
 roller_test(report_axle report_axle.py LABELS long TIMEOUT 2400)
+# The report on the printer's own scenes (issue 38, docs/squeal.md 7.10): jobs/printer_roller.yaml (the feed on the axle)
+# and jobs/printer_pick.yaml (the pick from rest) with the report's defaults: SPEC section 10's keys, squeal.wav of
+# 0.51 s against its source (level, the bounce's decay, the ripple's sustained line), stick-slip only if the patch lets
+# go, forced against rollerref.forced.two_dof (5 %), the CEA's bounce against the run's (1.5 %, 10 %), the page in
+# Chromium. A CEA of 115k unknowns and two finite-element runs of 90,600 steps (about an hour of CPU).
+roller_test(report_printer report_printer.py LABELS long TIMEOUT 7200)

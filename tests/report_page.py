@@ -13,16 +13,7 @@ import sys
 import tempfile
 
 import rollerreport_data as D
-from rollertest import Checker
-
-PROBE = """<script>
-function probe(){var a=document.querySelector('audio');
-document.title='PROBE '+JSON.stringify({audio:a?a.duration:null,error:a&&a.error?a.error.code:null,
-images:[...document.images].map(function(i){return [i.getAttribute('src'),i.naturalWidth,i.complete];})});}
-window.addEventListener('load',function(){var a=document.querySelector('audio');
-if(a&&a.readyState<1){a.addEventListener('loadedmetadata',probe);a.addEventListener('error',probe);}probe();});
-</script>"""
-
+from rollertest import Checker, chromium_probe
 
 def width(path):
     with open(path, "rb") as f:
@@ -45,18 +36,11 @@ page = open(os.path.join(d, "report.html")).read()
 refs = sorted(set(re.findall(r"(?:src|href)='([^']+)'", page)))
 c.check(refs and all(not re.match(r"^[a-z]+:|^/", x) and os.path.exists(os.path.join(d, x)) for x in refs),
         f"every link and source of report.html is relative and a file of the folder: {refs}")
-with open(os.path.join(d, "probe.html"), "w") as f:
-    f.write(page.replace("</body>", PROBE + "</body>"))
 out = json.load(open(os.path.join(d, "report.json")))
 if browser:
-    profile = tempfile.mkdtemp(prefix="chromium_")
-    cmd = [browser, "--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking", "--disable-component-update",
-           "--disable-sync", "--no-first-run", f"--user-data-dir={profile}", "--virtual-time-budget=10000", "--dump-dom",
-           "file://" + os.path.join(d, "probe.html")]
-    p = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
-    m = re.search(r"<title>PROBE (.*?)</title>", p.stdout)
-    got = json.loads(m.group(1).replace("&quot;", '"')) if m else {}
-    c.check(m is not None, f"chromium ran the page (exit {p.returncode}{'' if m else ': ' + p.stderr.strip()[-300:]})")
+    got, p = chromium_probe(browser, d, page)
+    c.check(got is not None, f"chromium ran the page (exit {p.returncode}{'' if got is not None else ': ' + p.stderr.strip()[-300:]})")
+    got = got or {}
     dur = got.get("audio")
     c.check(dur is not None and got.get("error") is None and abs(dur - out["wav_seconds"]) < 1e-4,
             f"the audio element loads squeal.wav: duration {dur} s, the WAV's {out['wav_seconds']:.6f} s (error {got.get('error')})")
@@ -65,5 +49,4 @@ if browser:
     c.check({"spectrogram.png", "map.png"} <= set(names) and any(n.endswith(".gif") for n in names)
             and all(w > 0 and w == width(os.path.join(d, src)) for src, w, _ in imgs),
             f"every image loads at its own width: {imgs}")
-    shutil.rmtree(profile, ignore_errors=True)
 c.close()

@@ -124,3 +124,35 @@ def fit_maxwell_decay(t, a, creep):
     zero = np.where(np.diff(np.sign(a)) != 0)[0]  # the first guess from the signal: its zero crossings
     fit = least_squares(residual, [-0.01, np.pi / np.diff(t[zero]).mean()], x_scale=[0.01, 0.1])
     return fit.x[0], fit.x[1], np.abs(fit.fun).max() / np.abs(a).max()
+
+
+# report.html's probe: the page as written plus a script that puts what it loaded into the title (Chromium's
+# --dump-dom after a virtual time budget), from a copy beside it (the same relative links)
+PROBE = """<script>
+function probe(){var a=document.querySelector('audio');
+document.title='PROBE '+JSON.stringify({audio:a?a.duration:null,error:a&&a.error?a.error.code:null,
+images:[...document.images].map(function(i){return [i.getAttribute('src'),i.naturalWidth,i.complete];})});}
+window.addEventListener('load',function(){var a=document.querySelector('audio');
+if(a&&a.readyState<1){a.addEventListener('loadedmetadata',probe);a.addEventListener('error',probe);}probe();});
+</script>"""
+
+
+def chromium_probe(browser, folder, page):
+    """Open `page` (report.html's text) as folder/probe.html in headless Chromium: ({audio: duration, error, images:
+    [[src, naturalWidth, complete]]} or None when the page did not run, the process)."""
+    import json
+    import re
+    import shutil
+    import subprocess
+    import tempfile
+
+    with open(os.path.join(folder, "probe.html"), "w") as f:
+        f.write(page.replace("</body>", PROBE + "</body>"))
+    profile = tempfile.mkdtemp(prefix="chromium_")
+    cmd = [browser, "--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking", "--disable-component-update",
+           "--disable-sync", "--no-first-run", f"--user-data-dir={profile}", "--virtual-time-budget=10000", "--dump-dom",
+           "file://" + os.path.join(folder, "probe.html")]
+    p = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
+    shutil.rmtree(profile, ignore_errors=True)
+    m = re.search(r"<title>PROBE (.*?)</title>", p.stdout)
+    return (json.loads(m.group(1).replace("&quot;", '"')) if m else None), p

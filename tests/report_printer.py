@@ -1,0 +1,183 @@
+"""The squeak report on the printer's own scenes (issue 38; docs/squeal.md 7.10): `python3 -m rollerreport.run` on
+jobs/printer_roller.yaml (the feed on the real axle, the Maxwell EPDM, the stepper's ripple) and jobs/printer_pick.yaml
+(the pick from rest, the sheet with its own mass), with the report's defaults, then every file is read:
+- report.json has SPEC section 10's keys: verdict, mechanisms of the kinds flutter, stick-slip and forced, spl_db (a
+  finite level), wav_seconds, propensity with at least 64 cases (propensity.csv as many rows), wav_source;
+- squeal.wav: mono 16-bit 44.1 kHz, at least 0.5 s, as long as the simulated span of wav_source times its time scale
+  (1.5 samples); its envelope the source's: the pressure at the listener (sound.csv) in the WAV at the stated full
+  scale (the RMS of 25 ms windows above the 16-bit floor within 2 %), the bounce decaying in it as in the source column
+  (the band 150-270 Hz of the WAV and of friction_force in 20 ms windows over 12-60 ms: the decay rates within 15 %),
+  and the ripple's line sustained in both (the band 800-950 Hz over the last two 0.1 s within 10 %);
+- stick-slip: run; it squeaks only if the patch lets go whole in the run (stick_nodes 0 after the nip) and sticks again;
+- forced: run at the ripple's 873 Hz; the hub rate's line within 5 % of rollerref.forced.two_dof (hub and tyre, the
+  tyre free, the rubber's torsion at the Maxwell EPDM's storage modulus at 873 Hz, read from the CEA's branches);
+- flutter: on printer_roller.yaml run by the CEA on the axle (roller -modes with -axle and -rubber maxwell), squeaking
+  only with an eigenvalue of positive real part; its bounce (the largest axle_y) within 1.5 % in frequency and 10 % in
+  decay of the same run's contact_force (a damped sine fitted over 12-30 ms; the frozen branches' error, docs/squeal.md
+  3.1); on printer_pick.yaml "not run" with roller's reason (-sheet_mass);
+- report.html loads squeal.wav with its duration and every image in headless Chromium.
+long: per scene a CEA of 115k unknowns (printer_roller only, about 4 CPU minutes) and one finite-element run of 0.51 s
+(90,600 steps, 16-25 CPU minutes)."""
+import csv
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import wave
+
+import numpy as np
+
+from rollertest import EXE, SOURCE, Checker, chromium_probe, maxwell_branches, maxwell_modulus
+
+sys.path.insert(0, os.path.join(SOURCE, "scripts"))
+from rollerref import forced as ref_forced  # noqa: E402
+
+c = Checker("report_printer")
+RIPPLE = 873.0
+
+
+def column(path, names):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))[1:]
+    return {n: np.array([float(r[n]) for r in rows]) for n in names}
+
+
+def band_rms(t, y, lo, hi, windows):
+    """The RMS of y's band lo..hi (FFT mask over the whole series, uniform t) in each window [a, b)."""
+    Y = np.fft.rfft(y - y.mean())
+    f = np.fft.rfftfreq(len(y), t[1] - t[0])
+    yb = np.fft.irfft(Y * ((f >= lo) & (f <= hi)), len(y))
+    return np.array([math.sqrt(np.mean(yb[(t >= a) & (t < b)] ** 2)) for a, b in windows])
+
+
+def decay(windows, rms):
+    mids = np.array([0.5 * (a + b) for a, b in windows])
+    return float(np.polyfit(mids, np.log(rms), 1)[0])
+
+
+def fit_bounce(t, y):
+    """A damped sine plus a constant fitted to y(t): (growth rate, angular frequency)."""
+    from scipy.optimize import least_squares
+
+    def basis(p):
+        return np.array([np.exp(p[0] * t) * np.cos(p[1] * t), np.exp(p[0] * t) * np.sin(p[1] * t), np.ones_like(t)]).T
+
+    def residual(p):
+        B = basis(p)
+        return B @ np.linalg.lstsq(B, y, rcond=None)[0] - y
+
+    fit = least_squares(residual, [-60.0, 2 * math.pi * 209.0], x_scale=[10.0, 50.0])
+    return fit.x[0], fit.x[1]
+
+
+def wav(path):
+    with wave.open(path, "rb") as f:
+        ok = f.getnchannels() == 1 and f.getsampwidth() == 2 and f.getframerate() == 44100
+        rate, n = f.getframerate(), f.getnframes()
+        x = np.frombuffer(f.readframes(n), "<i2").astype(float)
+    return ok, rate, x
+
+
+def branch_modulus(out):
+    """G'(873 Hz)/mu of the scene's Maxwell branches (the CEA's modes.h5, else a free roller's eigenproblem's)."""
+    h5 = os.path.join(out, "modes.h5")
+    if not os.path.exists(h5):
+        h5 = os.path.join(out, "branches.h5")
+        subprocess.run([EXE, "-options_file", os.path.join(SOURCE, "jobs", "printer_pick.yaml"), "-obstacle", "false", "-axle", "false", "-sheet_mass", "0", "-mesh_h", "0.003",
+                        "-mesh_h_contact", "0", "-modes", "-modes_nev", "2", "-modes_output", h5, "-quiet"], check=True, capture_output=True)
+    tau, g = maxwell_branches(h5)
+    return maxwell_modulus(2j * math.pi * RIPPLE, tau, g).real
+
+
+browser = shutil.which("chromium") or shutil.which("chromium-browser")
+for name in ("printer_roller", "printer_pick"):
+    out = os.path.abspath(name)
+    scene = os.path.join(SOURCE, "jobs", f"{name}.yaml")
+    r = subprocess.run([sys.executable, "-m", "rollerreport.run", scene, out, "--roller", os.path.abspath(EXE)], capture_output=True, text=True)
+    ok = r.returncode == 0 and os.path.exists(os.path.join(out, "report.json"))
+    c.check(ok, f"{name}: rollerreport.run exits 0 ({r.stderr.strip()[-300:]})")
+    if not ok:
+        continue
+    rep = json.load(open(os.path.join(out, "report.json")))
+    sc = json.load(open(os.path.join(out, "scene.json")))
+    mech = {m["kind"]: m for m in rep["mechanisms"]}
+    keys = ("verdict", "mechanisms", "spl_db", "wav_seconds", "propensity", "wav_source")
+    with open(os.path.join(out, "propensity.csv"), newline="") as f:
+        cases = list(csv.DictReader(f))
+    c.check(all(k in rep for k in keys) and set(mech) == {"flutter", "stick-slip", "forced"} and rep["spl_db"] is not None and math.isfinite(rep["spl_db"])
+            and rep["propensity"]["cases"] >= 64 and len(cases) == rep["propensity"]["cases"] and rep["wav_source"],
+            f"{name}: report.json {', '.join(k for k in keys if k in rep)}; verdict {rep['verdict']} by {rep['squeals_by']}; "
+            f"{rep['spl_db']:.1f} dB SPL; propensity {rep['propensity']['cases']} cases, {100 * rep['propensity']['fraction']:.1f} %")
+
+    # squeal.wav against its source
+    src = rep["wav_source"]
+    good, rate, x = wav(os.path.join(out, "squeal.wav"))
+    span = (src["t1"] - src["t0"]) * src["seconds_per_unit"]
+    c.check(good and len(x) / rate >= 0.5 and abs(len(x) / rate - span) <= 1.5 / rate and rep["wav_seconds"] == len(x) / rate,
+            f"{name}: squeal.wav {len(x) / rate:.4f} s, the span {src['t0']:.4g}..{src['t1']:.5g} of {src['file']} x {src['seconds_per_unit']:g} s = {span:.4f} s")
+    snd = column(os.path.join(out, "sound.csv"), ["t", "p"])
+    full = rep["sound"]["wav_reference"]["full_scale_peak_pa"]
+    tw = np.arange(len(x)) / rate
+    wins = [(a, a + 0.025) for a in np.arange(0.0, span - 0.025, 0.025)]
+    rw = np.array([math.sqrt(np.mean((x[(tw >= a) & (tw < b)] / 32767 * full) ** 2)) for a, b in wins])
+    rp = np.array([math.sqrt(np.mean(np.interp(tw[(tw >= a) & (tw < b)], snd["t"], snd["p"]) ** 2)) for a, b in wins])
+    above = rw > 100 * full / 32767
+    dev = float(np.max(np.abs(rw[above] / rp[above] - 1))) if above.any() else math.inf
+    c.check(dev < 0.02, f"{name}: the WAV is the pressure at the listener at full scale {full:.4g} Pa: 25 ms RMS within {100 * dev:.2f} % over {above.sum()} windows")
+    mon = column(os.path.join(out, src["file"]), ["t", "friction_force", "contact_force", "hub_rate", "stick_nodes", "slip_nodes"])
+    tm = mon["t"]
+    early = [(a, a + 0.02) for a in np.arange(0.012, 0.06, 0.01)]
+    kw = decay(early, band_rms(tw + src["t0"], x, 150, 270, early))
+    kf = decay(early, band_rms(tm, mon["friction_force"], 150, 270, early))
+    c.check(kw < 0 and kf < 0 and abs(kw / kf - 1) < 0.15, f"{name}: the bounce decays in the WAV at {kw:.1f} /s, in friction_force at {kf:.1f} /s ({100 * (kw / kf - 1):+.1f} %)")
+    late = [(src["t1"] - 0.2, src["t1"] - 0.1), (src["t1"] - 0.1, src["t1"])]
+    lw, lf = band_rms(tw + src["t0"], x, 800, 950, late), band_rms(tm, mon["friction_force"], 800, 950, late)
+    c.check(abs(lw[1] / lw[0] - 1) < 0.10 and abs(lf[1] / lf[0] - 1) < 0.10,
+            f"{name}: the ripple's line sustained over the last 0.2 s: WAV {lw[0]:.1f}, {lw[1]:.1f}; friction_force {lf[0]:.4g}, {lf[1]:.4g}")
+
+    # stick-slip: the patch letting go whole
+    after = tm > 0.012
+    let_go = bool(np.any(mon["stick_nodes"][after] == 0) and np.any(mon["stick_nodes"][after] > 0))
+    ss = mech["stick-slip"]
+    c.check(ss["status"] == "run" and (not ss["squeals"] or let_go),
+            f"{name}: stick-slip {ss['status']}, squeals {ss['squeals']}; stick_nodes after the nip {int(mon['stick_nodes'][after].min())}..{int(mon['stick_nodes'][after].max())}")
+
+    # forced: the ripple's line against the two-degree-of-freedom closed form
+    fo = mech["forced"]
+    k_r = ref_forced.annulus_torsion(2.0e6 * branch_modulus(out), 0.49, 0.005, 0.0125)
+    I_t = ref_forced.annulus_inertia(1200.0, 0.005, 0.0125)
+    ref = ref_forced.two_dof(1.0e-4, I_t, 1000.0, 0.023, k_r, RIPPLE, 2.0e-3)["hub"]["rate_amplitude"]
+    c.check(fo["status"] == "run" and abs(fo["frequency_hz"] - RIPPLE) < 1e-6 and abs(fo["response_rate_amplitude"] / ref - 1) < 0.05,
+            f"{name}: forced at {fo['frequency_hz']:.1f} Hz: the hub rate's line {fo['response_rate_amplitude']:.4g} against two_dof's {ref:.4g} "
+            f"({100 * (fo['response_rate_amplitude'] / ref - 1):+.2f} %), {fo['spl_db']:.1f} dB SPL")
+
+    # flutter
+    fl = mech["flutter"]
+    if name == "printer_pick":
+        c.check(fl["status"].startswith("not run") and "-sheet_mass" in fl["status"], f"{name}: flutter {fl['status'][:160]}")
+    else:
+        with open(os.path.join(out, "modes.csv"), newline="") as f:
+            modes = list(csv.DictReader(f))
+        worst = max(float(m["re"]) for m in modes)
+        b = max(modes, key=lambda m: float(m["axle_y"]))
+        w = (tm >= 0.012) & (tm <= 0.03)
+        s_fe, w_fe = fit_bounce(tm[w] - tm[w][0], mon["contact_force"][w])
+        c.check(fl["status"] == "run" and fl["squeals"] == (worst > 0), f"{name}: flutter {fl['status']}, squeals {fl['squeals']}; the largest Re of {len(modes)} eigenvalues {worst:+.4g}")
+        c.check(abs(float(b["im"]) / w_fe - 1) < 0.015 and abs(float(b["re"]) / s_fe - 1) < 0.10,
+                f"{name}: the CEA's bounce {float(b['re']):.2f} + {float(b['im']) / (2 * math.pi):.2f} Hz i against the run's contact_force "
+                f"{s_fe:.2f}, {w_fe / (2 * math.pi):.2f} Hz ({100 * (float(b['re']) / s_fe - 1):+.1f} %, {100 * (float(b['im']) / w_fe - 1):+.2f} %)")
+
+    # the page
+    page = open(os.path.join(out, "report.html")).read()
+    if browser:
+        got, p = chromium_probe(browser, out, page)
+        got = got or {}
+        imgs = got.get("images", [])
+        c.check(got.get("audio") is not None and got.get("error") is None and abs(got["audio"] - rep["wav_seconds"]) < 1e-4
+                and imgs and all(w > 0 for _, w, _ in imgs),
+                f"{name}: report.html in Chromium: the audio {got.get('audio')} s (the WAV's {rep['wav_seconds']:.6f}), images {imgs}")
+    else:
+        c.check(False, "chromium on the PATH (scripts/install-deps.sh installs Debian's chromium)")
+c.close()
