@@ -144,6 +144,9 @@ def stick_slip(ctx):
                   + (": the cycle coexists with a stable steady state (bistable)" if not v and lin["stable"] and cyc["stick_slip"] else ""))
         if lin.get("start_from_rest"):
             ev.append(f"1-DOF start from rest (rollerref.basin.classify): {lin['start_from_rest']}")
+        if ctx.get("steady_stuck"):
+            ev.append(f"the 1-DOF slides whole, the CEA's steady state rolls with {ctx['steady_stuck']} nodes stuck: its "
+                      "sliding closed form is not this scene's")
     ok = math.isfinite(cyc["frequency"])
     snd = ctx.get("stick_slip_sound") or {}
     return {"kind": "stick-slip", "status": "run", "squeals": bool(cyc["stick_slip"]),

@@ -76,6 +76,8 @@ def write(folder, out, name="report.html"):
                     f"<a href='propensity.csv'>propensity.csv</a>): <b>{100 * prop['fraction']:.1f} % squeak</b> (95 %: "
                     f"{100 * lo:.1f}-{100 * hi:.1f} %); classified by {_e(prop['classifier'])}. Ranked: "
                     + ", ".join(f"{_e(e['parameter'])} {e['spearman']:+.2f}" for e in prop["ranking"]) + ".</p>")
+        if prop.get("validity"):
+            body.append(f"<p><i>Validity: {_e(prop['validity'])}.</i></p>")
         if has("propensity.png"):
             body.append("<img src='propensity.png' alt='the propensity study'>")
     else:

@@ -116,8 +116,8 @@ def drive_mode_line(dm):
     return line
 
 
-def stick_slip_lines(cyc, s, scene):
-    """The stick-slip run's section of report.md."""
+def stick_slip_lines(cyc, s, scene, stuck=0):
+    """The stick-slip run's section of report.md (stuck: the CEA's steady state's stuck nodes)."""
     word = ("a sustained stick-slip limit cycle" if cyc["stick_slip"] else "a sustained oscillation without stick"
             if cyc["sustained"] else "no sustained cycle")
     md = ["## Stick-slip: the start from rest", "",
@@ -129,8 +129,18 @@ def stick_slip_lines(cyc, s, scene):
     lin = scene.get("onedof")
     if lin:
         md += ["", f"The 1-DOF closed form of the scene's drive (rollerref; the CEA's cross-check): steady sliding {'stable' if lin['stable'] else 'unstable'} (growth rate {lin['growth_rate']:+.4g} "
-               f"per unit time, {lin['frequency']:.4g} cycles per unit time); its start from rest: {lin.get('start_from_rest')}."]
+               f"per unit time, {lin['frequency']:.4g} cycles per unit time); its start from rest: {lin.get('start_from_rest')}."
+               + (f" It slides whole; the CEA's steady state rolls with {stuck} nodes stuck: the sliding closed form is not this "
+                  "scene's." if stuck else "")]
     return md + [""]
+
+
+def steady_stick_nodes(folder):
+    """The number of stuck nodes of the CEA's steady state (steady.csv, state 1), 0 without it."""
+    path = os.path.join(folder, "steady.csv")
+    if not os.path.exists(path):
+        return 0
+    return sum(1 for r in read_rows(path) if str(r.get("state", "")).strip() in ("1", "1.0"))
 
 
 def propensity_lines(prop, folder):
@@ -145,6 +155,8 @@ def propensity_lines(prop, folder):
            + ", ".join(f"{k} {100 * x:.1f} %" for k, x in prop["by_class"].items()) + f". Classified by {prop['classifier']}.",
            "", "Ranked by the rank correlation with squeaking: " + ", ".join(
                f"{e['parameter']} {e['spearman']:+.2f}" for e in prop["ranking"]) + "."]
+    if prop.get("validity"):
+        md += ["", f"> Validity: {prop['validity']}."]
     if os.path.exists(os.path.join(folder, "propensity.png")):
         md += ["", "![propensity](propensity.png)"]
     return md + [""]
@@ -499,7 +511,7 @@ def write(folder, parts=PARTS):
     # the mechanisms and the verdict (SPEC section 10)
     forced_r = mechanisms.forced_response(folder, scene)
     ctx = dict(folder=folder, scene=scene, verdict=v, fit=out.get("fit"), sound=snd if not (heard_cycle or heard_run) else None,
-               divergent=out.get("divergent", []), seconds_per_unit=s_unit, stick_slip_cycle=cyc,
+               divergent=out.get("divergent", []), seconds_per_unit=s_unit, stick_slip_cycle=cyc, steady_stuck=steady_stick_nodes(folder),
                stick_slip_sound=snd if heard_cycle else None, onedof=scene.get("onedof"), forced_response=forced_r,
                forced_sound=forced_level(folder, scene, s_unit, forced_r["frequency"]) if forced_r else None)
     if "friction_onset" in out:
@@ -513,6 +525,12 @@ def write(folder, parts=PARTS):
     out["wav_seconds"] = snd["wav_seconds"] if snd else 0.0
     out["wav_source"] = snd["wav_source"] if snd else None
     out["propensity"] = mechanisms.propensity(folder)
+    stuck = steady_stick_nodes(folder)
+    if out["propensity"].get("status") == "run" and stuck:
+        out["propensity"]["validity"] = (
+            f"the 1-DOF models the roller sliding on the sheet; this scene's steady state rolls with {stuck} contact "
+            "nodes stuck (steady.csv), whose tangential stiffness and lack of slip the 1-DOF leaves out: its cases are "
+            "classified as if the patch slid whole (the finite elements' own classification is not built)")
     by = [m["kind"] for m in out["mechanisms"] if m["status"] == "run" and m["squeals"]]
     out["squeals_by"] = by
     md += ["## Verdict", "", f"The roller **{out['verdict']}**" + (f" by {' and '.join(by)}" if by else "") + ("" if out["verdict_complete"] else
@@ -526,7 +544,7 @@ def write(folder, parts=PARTS):
                   f"{f(m['frequency_hz'], '.1f')} | {f(m['growth_rate_per_s'], '.4g')} | {f(m['spl_db'], '.1f')} |")
     md += [""] + body
     if cyc is not None:
-        md += stick_slip_lines(cyc, s_unit, scene)
+        md += stick_slip_lines(cyc, s_unit, scene, steady_stick_nodes(folder))
     if snd:
         lis, src = snd["listener"], snd["wav_source"]
         pitch = v["pitch_hz"] if v is not None and not heard_cycle else snd["mode_line_hz"]
