@@ -157,19 +157,23 @@ def force_scale(scene):
     return float(scene.get("newtons_per_metre_per_unit", math.nan))
 
 
-def pressure(folder, scene, s, monitor, surface, column="friction_force"):
+def pressure(folder, scene, s, monitor, surface, column="friction_force", keep=None):
     """The pressure at the listener of a run on the axle (the stick-slip or the forced run: its monitor CSV and its
     -monitor_surface_csv): the surface's orders radiated (rollerreport.radiation.radiate) plus the friction force on
     the sheet (`column`, per unit width, times the roller's width) as a compact force dipole
     (radiation.force_dipole); both without the components above a quarter of the step's rate, 1/(4 dt) (fewer than 4
-    steps a period: the trapezoidal rule's undamped step-to-step ringing of the contact, an artefact). Returns
-    {t (s of audio from 0), p, p_surface, p_force, cutoff_hz, t0, t1, source}."""
+    steps a period: the trapezoidal rule's undamped step-to-step ringing of the contact, an artefact), and without the
+    mesh-passing lines (rollerreport.lines: the vertices of mesh.h5 crossing the patch, a discretization artefact;
+    `keep`, per unit time, is never removed). Returns {t (s of audio from 0), p, p_surface, p_force, cutoff_hz,
+    mesh_passing, t0, t1, source}."""
     lis = listener(scene)
     L = float(scene.get("metres_per_unit", 1.0 if scene.get("units") == "si" else math.nan))
-    t, orders, source = surface_orders(folder, None, None, files=(monitor, surface))
+    f_m = lines.mesh_passing(os.path.join(folder, "mesh.h5")) if os.path.exists(os.path.join(folder, "mesh.h5")) else None
+    t, orders, source = surface_orders(folder, f_m, keep, files=(monitor, surface))
     cols = _columns(os.path.join(folder, monitor), [column])
     t, orders = uniform(t, orders)
     force = np.interp(t, cols["t"], cols[column]) if column in cols else np.zeros_like(t)
+    force = lines.notch(t, force, f_m, keep=keep) if f_m else force
     ts = (t - t[0]) * s
     metres = {n: (c * L, None if sn is None else sn * L) for n, (c, sn) in orders.items()}
     cut = 1.0 / (4 * (ts[1] - ts[0]))
@@ -177,7 +181,7 @@ def pressure(folder, scene, s, monitor, surface, column="friction_force"):
                                                lis["angle_deg"]), 0.0, cut)
     p_f = radiation.band(ts, radiation.force_dipole(ts, force * force_scale(scene) * lis["width_m"], lis["distance_m"],
                                                     lis["angle_deg"]), 0.0, cut)
-    return {"t": ts, "p": p_s + p_f, "p_surface": p_s, "p_force": p_f, "cutoff_hz": cut, "t0": float(t[0]),
+    return {"t": ts, "p": p_s + p_f, "p_surface": p_s, "p_force": p_f, "cutoff_hz": cut, "mesh_passing": f_m, "t0": float(t[0]),
             "t1": float(t[-1]), "source": source, "column": column}
 
 
@@ -196,7 +200,7 @@ def write_cycle(folder, scene, s, pitch_hz, monitor="stickslip.csv", surface="st
 
     j = lambda name: os.path.join(folder, name)  # noqa: E731
     lis = listener(scene)
-    pr = pressure(folder, scene, s, monitor, surface, column)
+    pr = pressure(folder, scene, s, monitor, surface, column, keep=pitch_hz * s)
     ts, p = pr["t"], pr["p"]
     lis["model"] += ("; plus the friction force on the sheet as a compact force dipole, cos(angle from the sheet) / "
                      "(4 pi c d) dF/dt (docs/squeal.md 9.4)")
@@ -223,7 +227,8 @@ def write_cycle(folder, scene, s, pitch_hz, monitor="stickslip.csv", surface="st
     note = (f"the run's own level (no seed): the surface radiates {levels['surface']:.1f} dB SPL, the friction force's "
             f"dipole {levels['force']:.1f} dB SPL (cos of the listener's angle from the sheet, "
             f"{math.cos(math.radians(lis['angle_deg'])):.3f}: none above the roller); components above "
-            f"{pr['cutoff_hz']:.0f} Hz (a quarter of the step's rate) removed")
+            f"{pr['cutoff_hz']:.0f} Hz (a quarter of the step's rate) removed"
+            + (f", and the mesh-passing lines k x {pr['mesh_passing'] / s:.1f} Hz (a discretization artefact)" if pr["mesh_passing"] else ""))
     return {"spl_db": lmax, "spl_leq_db": leq, "spl_dba": lmax_a, "spl_leq_dba": leq_a, "loudest_hz": loud,
             "spl_mode_db": line_db, "spl_mode_dba": line_db + float(radiation.a_weighting_db(pitch_hz)),
             "mode_band_hz": [0.8 * pitch_hz, 1.2 * pitch_hz], "mode_line_hz": pitch_hz, "mode_line_resolved": True,

@@ -174,7 +174,9 @@ def forced_response(folder, scene):
     t, f, a = d["t"], float(rip["frequency"]), float(rip["amplitude"])
     keep = t >= t[-1] - max((t[-1] - t[0]) / 2, 1.0 / f)
     lin = scene.get("onedof") or {}
-    free = [(lin["frequency"], lin["growth_rate"])] if lin.get("frequency") else []  # the drive's own, decaying
+    # the drive's own oscillation, decaying, fitted beside the line (a growing one, the 1-DOF's unstable sliding, is not
+    # in a run that stays bounded: left out, it would swamp the fit)
+    free = [(lin["frequency"], lin["growth_rate"])] if lin.get("frequency") and lin.get("growth_rate", 0) < 0 else []
     amp, phase = cycle.lock_in(t[keep], d["hub_rate"][keep], f, free=free)
     out = {"frequency": f, "ripple": a, "rate_amplitude": amp, "phase": phase, "t_window": [float(t[keep][0]), float(t[-1])], "file": monitor,
            "stick_nodes_max": int(np.max(d["stick_nodes"][keep])) if "stick_nodes" in d else None}

@@ -301,11 +301,11 @@ def base_command(cmd):
 OUTPUTS = ("modes.csv", "modes.h5", "modes.xmf", "steady.csv", "sweep.csv", "transient.csv", "surface.csv", "transient_base.csv", "surface_base.csv",
            "transient.h5", "transient.xmf", "transient_base.h5", "transient_base.xmf", "scene.json", "commands.json",
            "journal.json", "report.md", "report.json", "report.html", "map.png", "squeal.wav", "sound.csv", "spectrogram.png",
-           "vibration.gif", "vibration.mp4")
+           "vibration.gif", "vibration.mp4", "mesh.h5", "mesh.xmf")
 # PETSc's message for PETSC_ERR_SUP: what roller refuses as not carried (e.g. -modes with -rubber maxwell or
 # -sheet_mass): the part is "not run" with roller's reason, and the driver does not count it as failed
 REFUSED = "No support for this operation"
-ROLLER_PARTS = ("cea", "map", "transient", "transient_base", "stickslip", "forced", "propensity")
+ROLLER_PARTS = ("cea", "map", "transient", "transient_base", "mesh", "stickslip", "forced", "propensity")
 
 
 def parse(argv):
@@ -411,6 +411,9 @@ def axle_parts(steps, base, opts, scene, a, extra, out):
     # at least 0.5 s of audio after the first row (the state before the first contact solve, left out) and whatever
     # the last step falls short of -ts_max_time: 2 % more
     T = a.stickslip_time or max(float(opts.get("ts_max_time", 0.0)), 0.5 / s * 1.02)
+    steps.run("mesh", base + ["-ts_max_steps", "0", "-output", j("mesh.h5"), "-quiet"] + extra,
+              "the mesh alone (no step): its vertices on the outer circle set the mesh-passing lines the sound leaves out "
+              "(rollerreport.lines)", outputs=["mesh.h5", "mesh.xmf"])
     steps.run("stickslip", base + ["-ts_max_time", repr(T), "-monitor_csv", j("stickslip.csv"), "-monitor_surface_csv",
                                    j("stickslip_surface.csv"), "-quiet"] + extra,
               f"the start from rest on the axle to t = {T:.5g} ({T * s:.3g} s of audio): the stick-slip limit cycle "
