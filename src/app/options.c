@@ -174,8 +174,7 @@ PetscErrorCode RollerSetFromOptions(Roller ctx)
                RollerFrames[ctx->eig.frame]);
     PetscCheck(!(ctx->eig.on && ctx->disc.damping != 0 && ctx->rotation.omega != 0), ctx->comm, PETSC_ERR_SUP, "-axle with -modes and -omega != 0: the mass damping's rotational form B_L does not border the hub's rows: -damping %g must be 0 (the Kelvin-Voigt -viscosity is carried)",
                (double)ctx->disc.damping);
-    PetscCheck(!(ctx->eig.on && ctx->material.rubber == ROLLER_RUBBER_MAXWELL && ctx->eig.frame == ROLLER_FRAME_LAB && ctx->rotation.omega != 0 && ctx->eig.branch_transport), ctx->comm, PETSC_ERR_SUP,
-               "-axle with -modes, -rubber maxwell and -omega != 0: the branches' transport B_L does not border the hub's rows: -modes_branch_transport must be false (the branches frozen in the lab, docs/squeal.md 1.2), got true");
+    PetscCheck(!(ctx->eig.on && ctx->material.rubber == ROLLER_RUBBER_MAXWELL && ctx->eig.frame == ROLLER_FRAME_LAB && ctx->rotation.omega != 0 && ctx->eig.branch_transport), ctx->comm, PETSC_ERR_SUP, "-axle with -modes, -rubber maxwell and -omega != 0: the branches' transport B_L does not border the hub's rows: -modes_branch_transport must be false (the branches frozen in the lab, docs/squeal.md 1.2), got true");
     PetscCheck(!ctx->disc.static_solve && ctx->init.mms == ROLLER_MMS_NONE, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes no -static or -mms");
     PetscCheck(ctx->disc.coriolis != ROLLER_CORIOLIS_CENTERED, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes -coriolis_velocity backward or extrapolated, not centered");
     PetscCheck(ctx->disc.contact_mass == ROLLER_CONTACT_MASS_CONSISTENT, ctx->comm, PETSC_ERR_ARG_INCOMP, "-axle takes the consistent mass (-contact_mass consistent), not %s", RollerContactMasses[ctx->disc.contact_mass]);

@@ -89,8 +89,8 @@ static PetscErrorCode Augment(Roller ctx, PetscBool transport, const RollerBranc
     const PetscReal g = mat->g[i], tau = mat->tau[i];
 
     PetscCall(MatAXPY(bk[0], g, Kd, str));
-    PetscCall(Combine(-g, Kd, 0, NULL, &bk[i + 1])); /* -g_i K_d z_i in the rows of xi */
-    PetscCall(Combine(-g, W, 0, NULL, &bk[(i + 1) * nb]));    /* -W_i xi in the rows of z_i */
+    PetscCall(Combine(-g, Kd, 0, NULL, &bk[i + 1]));       /* -g_i K_d z_i in the rows of xi */
+    PetscCall(Combine(-g, W, 0, NULL, &bk[(i + 1) * nb])); /* -W_i xi in the rows of z_i */
     PetscCall(Combine(g * tau, W, 0, NULL, &bc[d]));
     PetscCall(Combine(g, W, g * tau * w, B, &bk[d]));
   }

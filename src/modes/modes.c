@@ -143,16 +143,16 @@ PetscErrorCode RollerModesSolve(Roller ctx)
   RollerPEP            pep;
   RollerModeClassifier cls;
   Vec                 *xr, *xi, w, rel = NULL, zr = NULL, zi = NULL, fr = NULL, fi = NULL, steady = NULL; /* z: the PEP's vectors; f: with -obstacle, the full ones before the reduction */
-  PetscReal           *hub    = NULL;                                                         /* with -axle: |Y|, |phi| of each mode */
-  IS                   kept   = NULL;                                                         /* with -obstacle: the dofs of the reduced problem */
-  PetscInt             nstick = 0;                                                            /* and the stick nodes' multipliers after them */
-  PetscReal            band[2];                                                               /* the Maxwell branches' relaxation band, left out */
+  PetscReal           *hub    = NULL;                                                                     /* with -axle: |Y|, |phi| of each mode */
+  IS                   kept   = NULL;                                                                     /* with -obstacle: the dofs of the reduced problem */
+  PetscInt             nstick = 0;                                                                        /* and the stick nodes' multipliers after them */
+  PetscReal            band[2];                                                                           /* the Maxwell branches' relaxation band, left out */
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogStagePush(ctx->stage[ROLLER_STAGE_MODES]));
   PetscCall(RollerModeOperators(ctx, &M, &C, &K));
   if (!ctx->axle.on) PetscCall(RollerBranchOperators(ctx, NULL, &M, &C, &K)); /* with -axle after the hub's border */
-  if (ctx->obstacle.on) { /* the steady state, and the linearization about it on the kept dofs */
+  if (ctx->obstacle.on) {                                                     /* the steady state, and the linearization about it on the kept dofs */
     RollerSteady st;
     Mat          Mr, Cr, Kr, Ks;
     PetscReal    q[2]; /* with -axle: the hub's steady (Y, phi) */

@@ -38,7 +38,7 @@ typedef struct {
   Mat Kd, W;
 } RollerBranchBorder;
 PETSC_INTERN PetscErrorCode RollerBranchOperators(Roller, const RollerBranchBorder *, Mat *, Mat *, Mat *); /* NULL: the clamped body */
-PETSC_INTERN PetscErrorCode RollerBranchSteadyStiffness(Roller, Mat, PetscBool, Mat *); /* the lab K of the steady state (the branches transported) */
+PETSC_INTERN PetscErrorCode RollerBranchSteadyStiffness(Roller, Mat, PetscBool, Mat *);                     /* the lab K of the steady state (the branches transported) */
 PETSC_INTERN PetscErrorCode RollerBranchRestrict(Vec, Vec);
 PETSC_INTERN PetscErrorCode RollerBranchExtend(Vec, Vec);
 PETSC_INTERN PetscBool      RollerBranchRelaxationBand(Roller, PetscReal[2]);                 /* the decay rates [r_lo, r_hi] of the relaxation spectrum */
