@@ -89,6 +89,7 @@ PETSC_INTERN PetscErrorCode RollerSquealOperators(Roller, const RollerSteady *, 
    of it, the body's state with the hub's rigid motion); an augmented vector's parts and one with the body's layout */
 PETSC_INTERN PetscErrorCode RollerAxleModeOperators(Roller, Mat *, Mat *, Mat *, RollerBranchBorder *); /* and the branches' bordered K_d, M, or NULL */
 PETSC_INTERN PetscErrorCode RollerAxleSteadySolve(Roller, Mat, RollerSteady *, PetscReal[2]);
+PETSC_INTERN PetscErrorCode RollerAxleRigidFields(Roller, Vec[2]); /* e2, J x on the free nodes */
 PETSC_INTERN PetscErrorCode RollerAxleModeSplit(Vec, Vec, PetscReal[2]);
 PETSC_INTERN PetscErrorCode RollerAxleModeRelative(Roller, Vec, const PetscReal[2], Vec); /* the body's shape less the hub's rigid motion */
 PETSC_INTERN PetscErrorCode RollerAxleModeVec(Vec, Vec *);
