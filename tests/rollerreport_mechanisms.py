@@ -191,4 +191,18 @@ rows = open(os.path.join(dp, "propensity.csv")).read().splitlines()
 c.check(pr["cases"] == 8 and len(rows) == 9 and pr["fraction"] == pr["squeaking"] / 8 and pr["confidence_95"][0] <= pr["fraction"] <= pr["confidence_95"][1]
         and set(pr) >= {"cases", "fraction", "by_mechanism", "ranges", "sampling", "ranking"} and pr["sampling"]["seed"] == 3,
         f"8 cases: {pr['squeaking']} squeak ({pr['by_class']}), interval {[round(x, 3) for x in pr['confidence_95']]}")
+
+# the CEA's unstable mode against the scene's own run (mechanisms.run_growth): a line at f growing at g is confirmed,
+# the same line steady (beside a louder steady line elsewhere) is not
+dg = tempfile.mkdtemp(prefix="run_growth_")
+tt = np.arange(0, 0.5, 5e-6)
+F0, G0 = 1158.6, 64.7
+for grow, want in ((G0, True), (0.0, False)):
+    with open(os.path.join(dg, "stickslip.csv"), "w") as f:
+        f.write("t,contact_force,friction_force,hub_rate\n")
+        y = 1e-6 * np.exp(grow * tt) * np.sin(2 * math.pi * F0 * tt) + 0.01 * np.sin(2 * math.pi * 873 * tt)
+        f.write("0,0,0,0\n" + "".join(f"{a:.9g},{100 + b:.12g},{b:.12g},0\n" for a, b in zip(tt[1:], y[1:])))
+    rg = mechanisms.run_growth(dg, F0, G0)
+    c.check(rg is not None and rg["confirmed"] is want and (abs(rg["growth_rate"] / G0 - 1) < 0.05 if want else abs(rg["growth_rate"]) < 0.05 * G0),
+            f"run_growth: a line growing at {grow} /s measured at {rg['growth_rate'] if rg else math.nan:+.3f} /s, confirmed {rg['confirmed'] if rg else None}")
 c.close()

@@ -61,19 +61,64 @@ def flutter(ctx):
     elif "friction_onset" in ctx:
         ev.append("map: no squeal at any swept point (sweep.csv)")
     snd = ctx.get("sound") or {}
+    squeals = bool(v["squeals"])
+    run = run_growth(ctx["folder"], v["frequency"], v["growth_rate"]) if axle and squeals and ctx.get("folder") else None
+    if run:  # the scene's own run (stickslip.csv) was seeded by its start: a growing mode grows in it
+        ev.append(f"the scene's own run (stickslip.csv, {run['column']} within 3 % of {v['pitch_hz']:.1f} Hz, windows of "
+                  f"{run['window']:.3g} from t = {run['t0']:.4g} to {run['t1']:.4g}): its amplitude grows at "
+                  f"{run['growth_rate'] / s:+.4g} /s against the CEA's {v['growth_rate'] / s:+.4g} /s: "
+                  + ("confirmed" if run["confirmed"] else "NOT confirmed: the CEA's instability does not grow in the run "
+                     "(a linearization artefact or one the contact's nonlinearity holds: docs/squeal.md 7.10)"))
+        squeals = run["confirmed"]
     if axle and not snd:  # no seeded transient on the axle: the mode's level is not computed
-        return {"kind": "flutter", "status": "run", "squeals": bool(v["squeals"]), "frequency_hz": v["pitch_hz"],
+        return {"kind": "flutter", "status": "run", "squeals": squeals, "frequency_hz": v["pitch_hz"],
                 "growth_rate_per_s": v["growth_rate"] / s, "limit_cycle_amplitude": None, "spl_db": None,
                 "loss_factor_margin": v["loss_factor_margin"],
                 "spl_note": "not computed: on the axle the report runs no seeded transient (docs/squeal.md 10)",
                 "drive_mode": dm, "evidence": ev}
-    return {"kind": "flutter", "status": "run", "squeals": bool(v["squeals"]), "frequency_hz": v["pitch_hz"],
+    return {"kind": "flutter", "status": "run", "squeals": squeals, "frequency_hz": v["pitch_hz"],
             "growth_rate_per_s": v["growth_rate"] / s, "limit_cycle_amplitude": None,
             "loss_factor_margin": v["loss_factor_margin"], "spl_db": snd.get("spl_mode_db"), "spl_note": ("the level of the mode's line (within 20 % of its pitch) in the "
             "seeded transient's sound, its line at {:.1f} Hz".format(snd.get("mode_line_hz", 0)) if snd.get("mode_line_resolved", True)
             else "an upper bound: the sound within 20 % of the pitch has no line at it (its loudest at "
             f"{snd.get('mode_line_hz', 0):.1f} Hz): the mode hardly moves the surface normally (a torsional mode moves it "
             "tangentially)") + "; " + (snd.get("level_note") or ""), "evidence": ev}
+
+
+def run_growth(folder, f, g, columns=("contact_force", "friction_force", "hub_rate")):
+    """The growth of the CEA's unstable mode (frequency f, growth rate g > 0, per unit time) in the scene's own run
+    (stickslip.csv, seeded by its start): the amplitude within 3 % of f in windows of 20 periods (Hann), fitted as
+    log-linear over the run after its first tenth, on the column where it is largest. Confirmed when it grows at more
+    than half of g; None without the run or with fewer than four windows."""
+    path = os.path.join(folder, "stickslip.csv")
+    if not os.path.exists(path) or not f or not g or g <= 0:
+        return None
+    d = _monitor(folder, "stickslip.csv", ["t"] + list(columns))
+    t = d["t"]
+    win = 20.0 / f
+    starts = np.arange(t[0] + 0.1 * (t[-1] - t[0]), t[-1] - win, win)
+    if len(starts) < 4:
+        return None
+    best = None
+    for c in columns:
+        if c not in d:
+            continue
+        amps = []
+        for a in starts:
+            w = (t >= a) & (t < a + win)
+            y = d[c][w] - np.mean(d[c][w])
+            F = np.abs(np.fft.rfft(y * np.hanning(len(y))))
+            fr = np.fft.rfftfreq(len(y), t[w][1] - t[w][0])
+            band = np.abs(fr / f - 1) < 0.03
+            amps.append(float(F[band].max()) if band.any() else 0.0)
+        amps = np.array(amps)
+        if np.all(amps > 0) and (best is None or amps.max() > best[1].max()):
+            best = (c, amps)
+    if best is None:
+        return None
+    rate = float(np.polyfit(starts + 0.5 * win, np.log(best[1]), 1)[0])
+    return {"column": best[0], "growth_rate": rate, "confirmed": bool(rate > 0.5 * g), "window": win,
+            "t0": float(starts[0]), "t1": float(starts[-1] + win)}
 
 
 def limit_cycle(t, y, tail=1.0 / 3):
