@@ -17,7 +17,7 @@ jobs/printer_roller.yaml (the feed on the real axle, the Maxwell EPDM, the stepp
   3.1); on printer_pick.yaml "not run" with roller's reason (-sheet_mass);
 - report.html loads squeal.wav with its duration and every image in headless Chromium.
 long: per scene a CEA of 115k unknowns (printer_roller only, about 4 CPU minutes) and one finite-element run of 0.51 s
-(90,600 steps, 16-25 CPU minutes)."""
+(90,600 steps, 16-25 CPU minutes); the two scenes at a time."""
 import csv
 import json
 import math
@@ -26,6 +26,7 @@ import shutil
 import subprocess
 import sys
 import wave
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
@@ -91,11 +92,17 @@ def branch_modulus(out):
     return maxwell_modulus(2j * math.pi * RIPPLE, tau, g).real
 
 
+def report(name):
+    return subprocess.run([sys.executable, "-m", "rollerreport.run", os.path.join(SOURCE, "jobs", f"{name}.yaml"), os.path.abspath(name), "--roller", os.path.abspath(EXE)],
+                          capture_output=True, text=True)
+
+
 browser = shutil.which("chromium") or shutil.which("chromium-browser")
+with ThreadPoolExecutor(2) as pool:  # the two scenes at a time
+    runs = dict(zip(("printer_roller", "printer_pick"), pool.map(report, ("printer_roller", "printer_pick"))))
 for name in ("printer_roller", "printer_pick"):
     out = os.path.abspath(name)
-    scene = os.path.join(SOURCE, "jobs", f"{name}.yaml")
-    r = subprocess.run([sys.executable, "-m", "rollerreport.run", scene, out, "--roller", os.path.abspath(EXE)], capture_output=True, text=True)
+    r = runs[name]
     ok = r.returncode == 0 and os.path.exists(os.path.join(out, "report.json"))
     c.check(ok, f"{name}: rollerreport.run exits 0 ({r.stderr.strip()[-300:]})")
     if not ok:
