@@ -168,10 +168,10 @@ static PetscErrorCode Bordered(Mat A, const Border *b, Mat *B)
   PetscFunctionReturn(0);
 }
 
-/* bd: with the Maxwell branches (NULL otherwise), their K_d bordered the same way (C_D, D_D of model/axle.c: the
-   branch energy of the time step, 1/2 g_i (xi - z_i, q - zeta_i) . K_d,aug (xi - z_i, q - zeta_i)), for branches.c to augment the bordered operators with: each branch's field then carries
-   its hub part zeta_i = (Y, phi) as the step's */
-PetscErrorCode RollerAxleModeOperators(Roller ctx, Mat *M, Mat *C, Mat *K, RollerBranchBorder *bd)
+/* Kd: with the Maxwell branches (NULL otherwise), their K_d bordered the same way (C_D, D_D of model/axle.c: the branch
+   energy of the time step, 1/2 g_i (xi - z_i, q - zeta_i) . K_d,aug (xi - z_i, q - zeta_i)), for branches.c to augment
+   the bordered operators with: each branch's field then carries its hub part zeta_i = (Y, phi) as the step's */
+PetscErrorCode RollerAxleModeOperators(Roller ctx, Mat *M, Mat *C, Mat *K, Mat *Kd)
 {
   const RollerHubCoupling *hc  = &ctx->axle.hub->c;
   const PetscReal          rho = ctx->material.density, w = ctx->rotation.omega, tau = ctx->material.viscosity, eta = ctx->disc.damping;
@@ -255,7 +255,7 @@ PetscErrorCode RollerAxleModeOperators(Roller ctx, Mat *M, Mat *C, Mat *K, Rolle
   PetscCall(Bordered(*K, &bk, &B));
   PetscCall(MatDestroy(K));
   *K = B;
-  if (bd) {
+  if (Kd) {
     Border    bb;
     PetscReal DDh[4];
     Vec       cd[2];
@@ -265,9 +265,8 @@ PetscErrorCode RollerAxleModeOperators(Roller ctx, Mat *M, Mat *C, Mat *K, Rolle
     Sub(hc->DD, DDh);
     PetscCall(BorderCreate(r[0], &bb));
     PetscCall(BorderAdd(&bb, 1.0, cd, 1.0, DDh));
-    PetscCall(Bordered(ctx->ops.Kd, &bb, &bd->Kd));
+    PetscCall(Bordered(ctx->ops.Kd, &bb, Kd));
     PetscCall(BorderDestroy(&bb));
-    bd->W = *M; /* the bordered mass (a reference the caller's M holds) */
   }
   PetscCall(BorderDestroy(&bm));
   PetscCall(BorderDestroy(&bc));

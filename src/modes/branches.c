@@ -53,17 +53,17 @@ static PetscErrorCode Combine(PetscReal a, Mat B, PetscReal b, Mat T, Mat *A)
   PetscFunctionReturn(0);
 }
 
-/* The augmented (M, C, K) from the frame's; in the lab the branches transported by B_L or frozen. bd: the branches'
-   stiffness K_d and the flow rules' weight W of a bordered body (-axle: the hub's rows, axle_modes.c; W its bordered
-   mass, since the bordered K_d annihilates the rigid fields; frozen in the lab), or NULL (the body's K_d; W = M in the
-   lab, K_d co-rotating). */
-static PetscErrorCode Augment(Roller ctx, PetscBool transport, const RollerBranchBorder *bd, Mat *M, Mat *C, Mat *K)
+/* The augmented (M, C, K) from the frame's; in the lab the branches transported by B_L or frozen. Kdb: the branches'
+   stiffness K_d of a bordered body (-axle: the hub's rows, axle_modes.c), whose flow rules are weighted by its bordered
+   mass *M (the bordered K_d annihilates the rigid fields; frozen in the lab); NULL: the body's K_d, W = M in the lab,
+   K_d co-rotating. */
+static PetscErrorCode Augment(Roller ctx, PetscBool transport, Mat Kdb, Mat *M, Mat *C, Mat *K)
 {
   const RollerMaterial *mat = &ctx->material;
   const PetscInt        n = mat->nbranch, nb = n + 1;
   const PetscReal       w   = ctx->rotation.omega;
   const PetscBool       lab = ctx->eig.frame == ROLLER_FRAME_LAB ? PETSC_TRUE : PETSC_FALSE;
-  const MatStructure    str = bd ? DIFFERENT_NONZERO_PATTERN : SUBSET_NONZERO_PATTERN;
+  const MatStructure    str = Kdb ? DIFFERENT_NONZERO_PATTERN : SUBSET_NONZERO_PATTERN;
   Mat                   Kd, W, B = NULL, *bm, *bc, *bk, Ma, Ca, Ka;
   IS                    is[ROLLER_MAX_BRANCHES + 1];
 
@@ -71,13 +71,12 @@ static PetscErrorCode Augment(Roller ctx, PetscBool transport, const RollerBranc
   if (mat->rubber != ROLLER_RUBBER_MAXWELL || !n) PetscFunctionReturn(0);
   PetscCall(PetscCalloc3(nb * nb, &bm, nb * nb, &bc, nb * nb, &bk));
   PetscCall(BlockISs(*M, nb, is));
-  Kd = bd ? bd->Kd : ctx->ops.Kd;
-  W  = bd ? bd->W : (lab ? ctx->ops.M : ctx->ops.Kd);
+  Kd = Kdb ? Kdb : ctx->ops.Kd;
+  W  = Kdb ? *M : (lab ? ctx->ops.M : ctx->ops.Kd);
   if (lab && w != 0 && transport) {
     PetscReal defect;
 
-    PetscCheck(!bd, ctx->comm, PETSC_ERR_SUP, "the branches' transport B_L has no hub rows (options.c refuses -axle with -modes_branch_transport)");
-
+    PetscCheck(!Kdb, ctx->comm, PETSC_ERR_SUP, "the branches' transport B_L has no hub rows (options.c refuses -axle with -modes_branch_transport)");
     PetscCall(RollerAssembleRotationalMass(ctx, &B));
     PetscCall(RollerSkewPart(B, &defect));
   }
@@ -118,11 +117,11 @@ static PetscErrorCode Augment(Roller ctx, PetscBool transport, const RollerBranc
   PetscFunctionReturn(0);
 }
 
-/* bd: NULL for the body (clamped at the shaft); the bordered K_d and M with -axle */
-PetscErrorCode RollerBranchOperators(Roller ctx, const RollerBranchBorder *bd, Mat *M, Mat *C, Mat *K)
+/* Kdb: NULL for the body (clamped at the shaft); the bordered K_d with -axle (M, C, K bordered too) */
+PetscErrorCode RollerBranchOperators(Roller ctx, Mat Kdb, Mat *M, Mat *C, Mat *K)
 {
   PetscFunctionBeginUser;
-  PetscCall(Augment(ctx, ctx->eig.branch_transport, bd, M, C, K));
+  PetscCall(Augment(ctx, ctx->eig.branch_transport, Kdb, M, C, K));
   PetscFunctionReturn(0);
 }
 

@@ -123,16 +123,13 @@ static PetscErrorCode WriteCsv(Roller ctx, const PetscReal *hub)
    by its mass (the bordered K_d is singular on the rigid fields) */
 static PetscErrorCode AxleOperators(Roller ctx, Mat *M, Mat *C, Mat *K)
 {
-  const PetscBool    branches = ctx->material.rubber == ROLLER_RUBBER_MAXWELL && ctx->material.nbranch ? PETSC_TRUE : PETSC_FALSE;
-  RollerBranchBorder bd       = {NULL, NULL};
+  const PetscBool branches = ctx->material.rubber == ROLLER_RUBBER_MAXWELL && ctx->material.nbranch ? PETSC_TRUE : PETSC_FALSE;
+  Mat             Kd       = NULL;
 
   PetscFunctionBeginUser;
-  PetscCall(RollerAxleModeOperators(ctx, M, C, K, branches ? &bd : NULL));
-  if (!branches) PetscFunctionReturn(0);
-  PetscCall(PetscObjectReference((PetscObject)bd.W));
-  PetscCall(RollerBranchOperators(ctx, &bd, M, C, K));
-  PetscCall(MatDestroy(&bd.W));
-  PetscCall(MatDestroy(&bd.Kd));
+  PetscCall(RollerAxleModeOperators(ctx, M, C, K, branches ? &Kd : NULL));
+  if (Kd) PetscCall(RollerBranchOperators(ctx, Kd, M, C, K));
+  PetscCall(MatDestroy(&Kd));
   PetscFunctionReturn(0);
 }
 

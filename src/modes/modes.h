@@ -32,13 +32,8 @@ PETSC_INTERN PetscErrorCode RollerModeOperators(Roller, Mat *, Mat *, Mat *);
 /* branches.c: the Maxwell branches' augmented state (xi, z_1, ..., z_n) (docs/squeal.md section 1.2): the frame's
    (M, C, K) replaced by the augmented ones (unchanged without -rubber maxwell); the xi part of an augmented vector (the
    leading local entries), an augmented vector of xi and zero branches */
-/* The branches' operators of a bordered body (-axle, axle_modes.c): K_d and the flow rules' weight W (its mass), each
-   with the hub's rows */
-typedef struct {
-  Mat Kd, W;
-} RollerBranchBorder;
-PETSC_INTERN PetscErrorCode RollerBranchOperators(Roller, const RollerBranchBorder *, Mat *, Mat *, Mat *); /* NULL: the clamped body */
-PETSC_INTERN PetscErrorCode RollerBranchSteadyStiffness(Roller, Mat, PetscBool, Mat *);                     /* the lab K of the steady state (the branches transported) */
+PETSC_INTERN PetscErrorCode RollerBranchOperators(Roller, Mat, Mat *, Mat *, Mat *);    /* the bordered K_d of -axle, NULL: the clamped body */
+PETSC_INTERN PetscErrorCode RollerBranchSteadyStiffness(Roller, Mat, PetscBool, Mat *); /* the lab K of the steady state (the branches transported) */
 PETSC_INTERN PetscErrorCode RollerBranchRestrict(Vec, Vec);
 PETSC_INTERN PetscErrorCode RollerBranchExtend(Vec, Vec);
 PETSC_INTERN PetscBool      RollerBranchRelaxationBand(Roller, PetscReal[2]);                 /* the decay rates [r_lo, r_hi] of the relaxation spectrum */
@@ -84,10 +79,10 @@ PETSC_INTERN PetscErrorCode RollerSteadyCoulomb(MPI_Comm, PetscInt, const PetscR
    reduced vector's first part back to the full space */
 PETSC_INTERN PetscErrorCode RollerSquealOperators(Roller, const RollerSteady *, Mat, Mat, Mat, Mat *, Mat *, Mat *, IS *, PetscInt *);
 
-/* axle_modes.c: -modes with -axle (docs/squeal.md section 3.1): the hub's lab-frame (Y, phi) appended to M, C, K on the
-   last rank (the body's indices unchanged); the steady state at the hub's height that gives -nip_force (and q = Y, phi
+/* axle_modes.c, axle_steady.c: -modes with -axle (docs/squeal.md section 3.1): the hub's lab-frame (Y, phi) appended to
+   M, C, K on the last rank (the body's indices unchanged); the steady state at the hub's height that gives -nip_force (and q = Y, phi
    of it, the body's state with the hub's rigid motion); an augmented vector's parts and one with the body's layout */
-PETSC_INTERN PetscErrorCode RollerAxleModeOperators(Roller, Mat *, Mat *, Mat *, RollerBranchBorder *); /* and the branches' bordered K_d, M, or NULL */
+PETSC_INTERN PetscErrorCode RollerAxleModeOperators(Roller, Mat *, Mat *, Mat *, Mat *); /* and the branches' bordered K_d, or NULL */
 PETSC_INTERN PetscErrorCode RollerAxleSteadySolve(Roller, Mat, RollerSteady *, PetscReal[2]);
 PETSC_INTERN PetscErrorCode RollerAxleRigidFields(Roller, Vec[2]); /* e2, J x on the free nodes */
 PETSC_INTERN PetscErrorCode RollerAxleModeSplit(Vec, Vec, PetscReal[2]);
