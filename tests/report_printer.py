@@ -30,7 +30,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
-from rollertest import EXE, SOURCE, Checker, chromium_probe, maxwell_branches, maxwell_modulus
+from rollertest import EXE, SOURCE, Checker, chromium_probe, fit_maxwell_decay, maxwell_branches, maxwell_modulus
 
 sys.path.insert(0, os.path.join(SOURCE, "scripts"))
 from rollerref import forced as ref_forced  # noqa: E402
@@ -56,21 +56,6 @@ def band_rms(t, y, lo, hi, windows):
 def decay(windows, rms):
     mids = np.array([0.5 * (a + b) for a, b in windows])
     return float(np.polyfit(mids, np.log(rms), 1)[0])
-
-
-def fit_bounce(t, y):
-    """A damped sine plus a constant fitted to y(t): (growth rate, angular frequency)."""
-    from scipy.optimize import least_squares
-
-    def basis(p):
-        return np.array([np.exp(p[0] * t) * np.cos(p[1] * t), np.exp(p[0] * t) * np.sin(p[1] * t), np.ones_like(t)]).T
-
-    def residual(p):
-        B = basis(p)
-        return B @ np.linalg.lstsq(B, y, rcond=None)[0] - y
-
-    fit = least_squares(residual, [-60.0, 2 * math.pi * 209.0], x_scale=[10.0, 50.0])
-    return fit.x[0], fit.x[1]
 
 
 def wav(path):
@@ -168,7 +153,8 @@ for name in ("printer_roller", "printer_pick"):
         worst = max(float(m["re"]) for m in modes)
         b = max(modes, key=lambda m: float(m["axle_y"]))
         w = (tm >= 0.012) & (tm <= 0.03)
-        s_fe, w_fe = fit_bounce(tm[w] - tm[w][0], mon["contact_force"][w])
+        cf = mon["contact_force"][w]
+        s_fe, w_fe, _ = fit_maxwell_decay(tm[w] - tm[w][0], cf - cf.mean(), [0.0])  # a damped sine and a constant
         c.check(fl["status"] == "run" and (not fl["squeals"] or worst > 0), f"{name}: flutter {fl['status']}, squeals {fl['squeals']}; the largest Re of {len(modes)} eigenvalues {worst:+.4g}")
         c.check(abs(float(b["im"]) / w_fe - 1) < 0.015 and abs(float(b["re"]) / s_fe - 1) < 0.10,
                 f"{name}: the CEA's bounce {float(b['re']):.2f} + {float(b['im']) / (2 * math.pi):.2f} Hz i against the run's contact_force "
