@@ -510,8 +510,9 @@ def write(folder, parts=PARTS):
         out["missing"].append("transient.h5")
     # the mechanisms and the verdict (SPEC section 10)
     forced_r = mechanisms.forced_response(folder, scene)
+    stuck = steady_stick_nodes(folder)  # the CEA's steady state rolling with a stick zone: the 1-DOF's sliding is not it
     ctx = dict(folder=folder, scene=scene, verdict=v, fit=out.get("fit"), sound=snd if not (heard_cycle or heard_run) else None,
-               divergent=out.get("divergent", []), seconds_per_unit=s_unit, stick_slip_cycle=cyc, steady_stuck=steady_stick_nodes(folder),
+               divergent=out.get("divergent", []), seconds_per_unit=s_unit, stick_slip_cycle=cyc, steady_stuck=stuck,
                stick_slip_sound=snd if heard_cycle else None, onedof=scene.get("onedof"), forced_response=forced_r,
                forced_sound=forced_level(folder, scene, s_unit, forced_r["frequency"]) if forced_r else None)
     if "friction_onset" in out:
@@ -525,7 +526,6 @@ def write(folder, parts=PARTS):
     out["wav_seconds"] = snd["wav_seconds"] if snd else 0.0
     out["wav_source"] = snd["wav_source"] if snd else None
     out["propensity"] = mechanisms.propensity(folder)
-    stuck = steady_stick_nodes(folder)
     if out["propensity"].get("status") == "run" and stuck:
         out["propensity"]["validity"] = (
             f"the 1-DOF models the roller sliding on the sheet; this scene's steady state rolls with {stuck} contact "
@@ -544,7 +544,7 @@ def write(folder, parts=PARTS):
                   f"{f(m['frequency_hz'], '.1f')} | {f(m['growth_rate_per_s'], '.4g')} | {f(m['spl_db'], '.1f')} |")
     md += [""] + body
     if cyc is not None:
-        md += stick_slip_lines(cyc, s_unit, scene, steady_stick_nodes(folder))
+        md += stick_slip_lines(cyc, s_unit, scene, stuck)
     if snd:
         lis, src = snd["listener"], snd["wav_source"]
         pitch = v["pitch_hz"] if v is not None and not heard_cycle else snd["mode_line_hz"]
