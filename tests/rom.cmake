@@ -8,3 +8,6 @@ roller_test(rom_contact rom_contact.py LABELS quick TIMEOUT 900)
 # The issue's agreement over 30 ms of the printer: the reduced model's mean contact and friction forces within 1 % and
 # 2 % of the full model's, the friction force's largest line within 1 % and 2 dB (about 10 min of CPU)
 roller_test(rom_printer rom_printer.py LABELS long TIMEOUT 5400)
+# -rom_output / -rom_input: the basis and the residual flexibility reused bit for bit, on 2 ranks to round-off, and
+# refused by name for another rubber, mode count or mesh (about 30 s)
+roller_test(rom_io rom_io.py LABELS quick mpi TIMEOUT 600)

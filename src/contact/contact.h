@@ -34,7 +34,16 @@ PETSC_INTERN PetscBool      RollerContactHasFriction(RollerContact);
 /* -rom: the displacement becomes V q (V dense, N x nq, the full model's layout; q a Vec of the reduced layout): the
    Gamma_C rows of V taken before the operators are replaced (contact_reduced.c) */
 PETSC_INTERN PetscErrorCode RollerContactSetBasis(Roller, RollerContact, Mat, Vec);
-PETSC_INTERN PetscErrorCode RollerContactCheckReduced(Roller, RollerContact); /* -contact_solver condensed, no -contact_check */
+/* -rom_residual: MacNeal's static residual flexibility of the Gamma_C dofs, with K's factorization (a KSP on the
+   full layout) and V^T K V's diagonal; after RollerContactSetBasis */
+PETSC_INTERN PetscErrorCode RollerContactSetResidualFlexibility(Roller, RollerContact, KSP, const PetscReal[]);
+PETSC_INTERN PetscErrorCode RollerContactResidualEnergy(RollerContact, Vec, Vec, PetscReal *);        /* E^k += its static energy (cur, prev) */
+PETSC_INTERN PetscErrorCode RollerContactResidualDissipation(RollerContact, Vec, Vec, PetscReal *);   /* D^k += its dissipation (cur, prev2) */
+PETSC_INTERN PetscErrorCode RollerContactResidualView(Roller, RollerContact, PetscViewer, PetscBool); /* R to a -rom_output file, or from one (load) */
+PETSC_INTERN PetscInt       RollerContactNodeCount(RollerContact);                                    /* Gamma_C nodes (0 without contact) */
+PETSC_INTERN PetscErrorCode RollerContactResidualFunctionals(RollerContact, Vec, Vec);                /* keeps w_R, w_alpha's Gamma_C rows (full layout) */
+PETSC_INTERN void           RollerContactResidualDots(RollerContact, Vec, PetscReal *, PetscReal *);  /* += w_R . r, w_alpha . r of a level */
+PETSC_INTERN PetscErrorCode RollerContactCheckReduced(Roller, RollerContact);                         /* -contact_solver condensed, no -contact_check */
 /* -sheet_mass (contact_sheet.c): the sheet moves by its own forces; its part of E^k, its speed, its state for the
    checkpoint (4 reals: X^k, X^{k-1}, X^{k-2} and its case; NULL for the kinematic sheet) */
 PETSC_INTERN PetscBool  RollerContactSheetMoves(RollerContact);

@@ -161,7 +161,12 @@ static PetscErrorCode CondensedColumns(Roller ctx, RollerContact c, const Roller
 
       PetscCall(PetscMalloc1((size_t)n * mb, &out));
       PetscCall(RollerContactReducedColumns(c, X, mb, out));
-      for (PetscInt jj = 0; jj < mb; ++jj) PetscCall(PetscArraycpy(cs->S + (size_t)(2 * need[(j0 + jj) / 2] + (j0 + jj) % 2) * n, out + (size_t)jj * n, n));
+      for (PetscInt jj = 0; jj < mb; ++jj) {
+        const PetscInt col = 2 * need[(j0 + jj) / 2] + (j0 + jj) % 2;
+
+        PetscCall(PetscArraycpy(cs->S + (size_t)col * n, out + (size_t)jj * n, n));
+        RollerContactReducedAddFlexibility(c, col, cs->S + (size_t)col * n); /* -rom_residual: S + R */
+      }
       PetscCall(PetscFree(out));
     }
     for (PetscInt jj = 0; !c->nodes.phi && jj < mb; ++jj) {

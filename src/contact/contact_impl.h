@@ -93,6 +93,15 @@ typedef struct {
   PetscBool         friction_newton; /* -contact_friction_newton: Coulomb by the semismooth Newton method first */
 } RollerContactOptions;
 
+/* -rom_residual (MacNeal, contact_residual.c): the static residual flexibility R = E^T (K^-1 - V K_r^-1 V^T) E of the
+   Gamma_C dofs (2 nc x 2 nc column-major, every rank; NULL without it). A solve's displacement is Phi q + R f_C, f_C
+   its nodal force: the residual r = R f_C of a level is composed on its Vec q (RollerContactReducedResidual). wc: the
+   Gamma_C rows of the functionals w_R, w_alpha (2 x 2 nc), for r's part of R and alpha. */
+typedef struct {
+  PetscReal *R;
+  PetscReal *wc;
+} RollerContactResidual;
+
 /* Gamma_C nodes (contact_nodes.c), fixed at creation, the same on every rank, sorted by angle: node i has its
    x dof at global index gidx[i] (y at gidx[i] + 1) and position xc[2i], xc[2i+1]; the redundant vectors hold
    2 nc entries in this order */
@@ -110,12 +119,13 @@ typedef struct {
   /* -rom (contact_reduced.c): the displacement is V q; the Gamma_C rows of V, phi (2 nc x nq, row-major, on every
      rank), gather u_C = phi q and spread f_q = phi^T f_C; within a step only the rows of the window's nodes (those
      the obstacle can reach) are computed, the others' displacement reads 0 */
-  PetscInt   nq;
-  PetscReal *phi;
-  PetscInt   nwin, *win; /* the window's nodes; windowed false: all of them */
-  PetscBool  windowed;
-  VecScatter qscatter; /* reduced Vec -> qall on every rank */
-  Vec        qall;
+  PetscInt              nq;
+  PetscReal            *phi;
+  PetscInt              nwin, *win; /* the window's nodes; windowed false: all of them */
+  PetscBool             windowed;
+  VecScatter            qscatter; /* reduced Vec -> qall on every rank */
+  Vec                   qall;
+  RollerContactResidual residual; /* -rom_residual (contact_residual.c) */
 } RollerContactNodes;
 
 /* The step (contact_candidates.c): time, rotation, obstacle height, contact basis (t^k, n^k), candidate set,
@@ -218,6 +228,10 @@ PETSC_INTERN PetscErrorCode RollerContactReducedForce(RollerContact, const Petsc
 PETSC_INTERN void           RollerContactReducedWindow(Roller, RollerContact);
 PETSC_INTERN PetscErrorCode RollerContactReducedColumns(RollerContact, Mat, PetscInt, PetscReal[]);
 PETSC_INTERN PetscErrorCode RollerContactReducedDestroy(RollerContact);
+PETSC_INTERN PetscErrorCode RollerContactReducedResidual(RollerContact, const RollerContactResult *, Vec); /* r = R f_C on xi */
+PETSC_INTERN void           RollerContactReducedAddFlexibility(RollerContact, PetscInt, PetscReal[]);      /* S's column j += R's */
+PETSC_INTERN PetscErrorCode RollerContactReducedAddResidual(RollerContact, Vec, Vec);                      /* a gather's red += r of q */
+PETSC_INTERN PetscErrorCode RollerContactResidualDestroy(RollerContact);
 PETSC_INTERN PetscReal      RollerContactGapTolerance(Roller);
 
 /* contact_candidates.c */

@@ -56,6 +56,7 @@ PetscErrorCode RollerContactReducedDestroy(RollerContact c)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscFree2(c->nodes.phi, c->nodes.win));
+  PetscCall(RollerContactResidualDestroy(c));
   PetscCall(VecScatterDestroy(&c->nodes.qscatter));
   PetscCall(VecDestroy(&c->nodes.qall));
   PetscFunctionReturn(0);
@@ -101,6 +102,7 @@ PetscErrorCode RollerContactReducedGather(RollerContact c, Vec q, Vec red)
   }
   PetscCall(VecRestoreArray(red, &u));
   PetscCall(VecRestoreArrayRead(c->nodes.qall, &qa));
+  PetscCall(RollerContactReducedAddResidual(c, q, red)); /* -rom_residual: + R f_C of the level */
   PetscFunctionReturn(0);
 }
 

@@ -82,6 +82,7 @@ PetscErrorCode RollerContactSolveWith(Roller ctx, RollerContact c, RollerContact
     PetscReal gap_min;
 
     PetscCall((*s->ops->solve)(s, ctx, c, b, xi, res));
+    PetscCall(RollerContactReducedResidual(c, res, xi)); /* -rom_residual: the level's R f_C */
     its += res->its;
     PetscCall(RollerContactGather(c, xi, c->nodes.red));
     PetscCall(RollerContactGaps(c, c->nodes.red, c->step.gap, &gap_min));

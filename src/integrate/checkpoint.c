@@ -249,7 +249,7 @@ PetscErrorCode RollerCheckpointRead(Roller ctx, const char *path)
   PetscFunctionBeginUser;
   PetscCall(CheckpointOpen(ctx, path, &viewer));
   PetscCall(RollerCheckpointIdentityCheck(ctx, viewer, path));
-  PetscCall(RollerCheckpointOrderCreate(ctx, viewer, path, nodes_name, ctx->ops.coordinates, &npoints, &from));
+  PetscCall(RollerCheckpointOrderCreate(ctx, viewer, "-restart", path, nodes_name, ctx->ops.coordinates, &npoints, &from));
   History(ctx, v);
   for (PetscInt i = 0; i < 3; ++i) PetscCall(RollerCheckpointOrderLoad(viewer, history_names[i], npoints, from, v[i]));
   PetscCall(PetscFree(from));
@@ -292,7 +292,7 @@ PetscErrorCode RollerCheckpointReadItems(Roller ctx, const char *path)
     }
     if (!matched || strcmp(matched, item->where_name)) {
       PetscCall(PetscFree(from));
-      PetscCall(RollerCheckpointOrderCreate(ctx, viewer, path, item->where_name, item->where, &npoints, &from));
+      PetscCall(RollerCheckpointOrderCreate(ctx, viewer, "-restart", path, item->where_name, item->where, &npoints, &from));
       matched = item->where_name;
     }
     PetscCall(RollerCheckpointOrderLoad(viewer, item->name, npoints, from, *item->v));

@@ -64,8 +64,9 @@ static PetscErrorCode MatchPoints(PetscInt n, const PetscScalar ck[], const Pets
 }
 
 /* from[i]: the checkpoint's index of this rank's point i of where (2 entries per point), matched with the dataset
-   where_name of the checkpoint; refused in one line if a point has no partner. *npoints: this rank's points. */
-PetscErrorCode RollerCheckpointOrderCreate(Roller ctx, PetscViewer viewer, const char path[], const char where_name[], Vec where, PetscInt *npoints, PetscInt **from)
+   where_name of the checkpoint (or of a -rom_input file: option names the file's option); refused in one line if a
+   point has no partner. *npoints: this rank's points. */
+PetscErrorCode RollerCheckpointOrderCreate(Roller ctx, PetscViewer viewer, const char option[], const char path[], const char where_name[], Vec where, PetscInt *npoints, PetscInt **from)
 {
   Vec                ck, ck0, here0, map;
   VecScatter         to0;
@@ -110,7 +111,7 @@ PetscErrorCode RollerCheckpointOrderCreate(Roller ctx, PetscViewer viewer, const
   }
   PetscCallMPI(MPI_Bcast(bad, 2, MPIU_INT, 0, ctx->comm));
   PetscCallMPI(MPI_Bcast(at, 2, MPIU_REAL, 0, ctx->comm));
-  PetscCheck(bad[0] < 0, ctx->comm, PETSC_ERR_ARG_INCOMP, "-restart %s: refused, another mesh: this run's node at (%.17g, %.17g) has %" PetscInt_FMT " nodes of the checkpoint at its position (%s), not one", path, (double)at[0], (double)at[1], bad[1], where_name);
+  PetscCheck(bad[0] < 0, ctx->comm, PETSC_ERR_ARG_INCOMP, "%s %s: refused, another mesh: this run's node at (%.17g, %.17g) has %" PetscInt_FMT " nodes of the file at its position (%s), not one", option, path, (double)at[0], (double)at[1], bad[1], where_name);
   PetscCall(VecDuplicate(where, &map));
   PetscCall(VecScatterBegin(to0, here0, map, INSERT_VALUES, SCATTER_REVERSE));
   PetscCall(VecScatterEnd(to0, here0, map, INSERT_VALUES, SCATTER_REVERSE));

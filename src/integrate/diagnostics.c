@@ -107,8 +107,13 @@ PetscErrorCode RollerStepInfoGet(Roller ctx)
   st->info_step = st->step;
   PetscCall(VecDot(ctx->ops.w_R, st->cur, &r));
   PetscCall(VecDot(ctx->ops.w_alpha, st->cur, &a));
-  info->R     = PetscRealPart(r) / ctx->mesh.boundary_length;
-  info->alpha = PetscRealPart(a) / ctx->mesh.boundary_length;
+  {
+    PetscReal wr = PetscRealPart(r), wa = PetscRealPart(a);
+
+    RollerContactResidualDots(ctx->contact, st->cur, &wr, &wa); /* -rom_residual: the Gamma_C residual's part */
+    info->R     = wr / ctx->mesh.boundary_length;
+    info->alpha = wa / ctx->mesh.boundary_length;
+  }
   PetscCall(RollerSchemeEnergy(ctx, &info->energy));
   info->friction.torque = 0.0;
   if (ctx->contact) PetscCall(RollerContactInfo(ctx, ctx->contact, st->cur, st->Mcur, st->Kcur, st->time, info));

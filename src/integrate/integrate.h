@@ -62,7 +62,7 @@ PETSC_INTERN PetscErrorCode RollerCheckpointDiscretization(Roller, const char *)
 PETSC_INTERN PetscErrorCode RollerCheckpointIdentityWrite(Roller, PetscViewer);
 PETSC_INTERN PetscErrorCode RollerCheckpointIdentityCheck(Roller, PetscViewer, const char[]);
 /* checkpoint_order.c: this run's points matched to the checkpoint's by position; a dataset read through the match */
-PETSC_INTERN PetscErrorCode RollerCheckpointOrderCreate(Roller, PetscViewer, const char[], const char[], Vec, PetscInt *, PetscInt **);
+PETSC_INTERN PetscErrorCode RollerCheckpointOrderCreate(Roller, PetscViewer, const char[], const char[], const char[], Vec, PetscInt *, PetscInt **); /* option, path, where_name, where */
 PETSC_INTERN PetscErrorCode RollerCheckpointOrderLoad(PetscViewer, const char[], PetscInt, const PetscInt[], Vec);
 PETSC_INTERN PetscErrorCode RollerSignalsInstall(void);
 PETSC_INTERN PetscErrorCode RollerSignalCaught(Roller, PetscInt *);

@@ -30,6 +30,7 @@ PetscErrorCode RollerNewmarkEnergy(RollerScheme s, Roller ctx, PetscReal *energy
   if (nm->mx) PetscCall(RollerMaxwellEnergyAdd(nm->mx, ctx, energy));
   if (ctx->axle.on) PetscCall(RollerHubEnergy(ctx, nm->beta, energy));                               /* adds q's terms */
   if (RollerContactSheetMoves(ctx->contact)) *energy += RollerContactSheetEnergy(ctx, ctx->contact); /* -sheet_mass: its kinetic energy */
+  PetscCall(RollerContactResidualEnergy(ctx->contact, ctx->state.cur, ctx->state.prev, energy));     /* -rom_residual: R's static energy */
   PetscFunctionReturn(0);
 }
 
@@ -60,6 +61,7 @@ PetscErrorCode RollerNewmarkBalance(RollerScheme s, Roller ctx, RollerStepInfo *
   }
   if (nm->mx) info->viscous_dissipation += RollerMaxwellDissipation(nm->mx, ctx);
   if (ctx->contact) PetscCall(RollerContactEnergyAdd(ctx, ctx->contact, ctx->state.prev2, ctx->state.time - 2.0 * dt, 0.5, info));
+  if (ctx->contact) PetscCall(RollerContactResidualDissipation(ctx->contact, ctx->state.cur, ctx->state.prev2, &info->contact_dissipation)); /* -rom_residual */
   if (ctx->axle.on) PetscCall(RollerHubBalance(ctx, nm->beta, info));
   PetscFunctionReturn(0);
 }

@@ -6,7 +6,8 @@
 
 PetscErrorCode RollerRomSetFromOptions(Roller ctx)
 {
-  PetscBool on     = PETSC_FALSE;
+  PetscBool on = PETSC_FALSE, residual = PETSC_TRUE;
+  char      input[PETSC_MAX_PATH_LEN] = "", output[PETSC_MAX_PATH_LEN] = "";
   PetscInt  modes  = 0;
   PetscReal cutoff = 0.0;
 
@@ -15,6 +16,9 @@ PetscErrorCode RollerRomSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsBool("-rom", "Step the reduced model: the modes of the roller clamped at the shaft below the cutoff and the static load responses", NULL, on, &on, NULL));
   PetscCall(PetscOptionsInt("-rom_modes", "Modes kept (0: those below -rom_cutoff)", NULL, modes, &modes, NULL));
   PetscCall(PetscOptionsReal("-rom_cutoff", "Cutoff frequency of the kept modes, cycles per unit time (0: the default, the highest frequency the time step resolves to -ts_phase_error, -ts_view)", NULL, cutoff, &cutoff, NULL));
+  PetscCall(PetscOptionsBool("-rom_residual", "With contact: MacNeal's static residual flexibility of the modes above the cutoff at Gamma_C (false: the modes alone, whose patch is too stiff)", NULL, residual, &residual, NULL));
+  PetscCall(PetscOptionsString("-rom_output", "Save the reduced basis (and the residual flexibility) to this HDF5 file, for -rom_input of runs on the same mesh and rubber", NULL, output, output, sizeof(output), NULL));
+  PetscCall(PetscOptionsString("-rom_input", "Read the reduced basis from this -rom_output file instead of computing it (refused if made for another mesh, rubber, cutoff or contact)", NULL, input, input, sizeof(input), NULL));
   PetscOptionsEnd();
   RollerCheckOption(ctx->comm, "-rom_modes", (PetscReal)modes, modes >= 0, ">= 0 (0: from -rom_cutoff)");
   RollerCheckOption(ctx->comm, "-rom_cutoff", cutoff, cutoff >= 0, ">= 0 (0: the default)");
@@ -26,6 +30,9 @@ PetscErrorCode RollerRomSetFromOptions(Roller ctx)
   PetscCall(PetscNew(&ctx->rom));
   ctx->rom->modes_req = modes;
   ctx->rom->cutoff    = cutoff;
+  ctx->rom->residual  = residual;
+  PetscCall(PetscStrncpy(ctx->rom->input, input, sizeof(input)));
+  PetscCall(PetscStrncpy(ctx->rom->output, output, sizeof(output)));
   PetscFunctionReturn(0);
 }
 
@@ -56,20 +63,20 @@ static PetscErrorCode View(Roller ctx, RollerRom rom)
 
   PetscFunctionBeginUser;
   PetscCall(MatGetSize(rom->V, &N, NULL));
-  PetscCall(PetscPrintf(ctx->comm, "roller: -rom: %" PetscInt_FMT " modes of the roller clamped at the shaft (below %g cycles per unit time%s) + 2 static load responses = %" PetscInt_FMT " coordinates for %" PetscInt_FMT " unknowns; highest kept w %g (w dt %.3g); basis round-off %.1e; set-up %.2f s (modes) + %.2f s (reduced operators)\n",
+  PetscCall(PetscPrintf(ctx->comm, "roller: -rom: %" PetscInt_FMT " modes of the roller clamped at the shaft (below %g cycles per unit time%s) + 2 static load responses = %" PetscInt_FMT " coordinates for %" PetscInt_FMT " unknowns; highest kept w %g (w dt %.3g); basis round-off %.1e; set-up %.2f s (modes%s%s) + %.2f s (reduced operators) + %.2f s (%s)\n",
                         rom->nmodes, (double)(rom->w_cut / (2 * PETSC_PI)),
                         rom->modes_req    ? ", -rom_modes"
                         : rom->cutoff > 0 ? ", -rom_cutoff"
                                           : ": the default, where the step's relative frequency error reaches -ts_phase_error",
                         rom->nq, N, rom->nmodes ? (double)PetscSqrtReal(rom->lambda[rom->nmodes - 1] / ctx->material.density) : 0.0, rom->nmodes ? (double)(PetscSqrtReal(rom->lambda[rom->nmodes - 1] / ctx->material.density) * ctx->ts.dt) : 0.0,
-                        (double)rom->offdiag, rom->t_modes, rom->t_reduce));
+                        (double)rom->offdiag, rom->t_modes, rom->input[0] ? " read from -rom_input " : "", rom->input, rom->t_reduce, rom->t_residual, ctx->contact && rom->residual ? "with contact: MacNeal's static residual flexibility of the modes above the cutoff at the Gamma_C dofs, -rom_residual" : "no residual flexibility"));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode RollerRomSetUp(Roller ctx)
 {
   RollerRom      rom = ctx->rom;
-  PetscLogDouble t0, t1, t2;
+  PetscLogDouble t0, t1, t2, t3;
 
   PetscFunctionBeginUser;
   PetscCheck(!ctx->ops.G, ctx->comm, PETSC_ERR_ARG_INCOMP, "-rom: the centred -coriolis_velocity puts the Coriolis matrix in the step matrix; the reduced model takes it explicitly (backward or extrapolated)");
@@ -77,14 +84,34 @@ PetscErrorCode RollerRomSetUp(Roller ctx)
   if (rom->cutoff > 0) rom->w_cut = 2 * PETSC_PI * rom->cutoff;
   else PetscCall(DefaultCutoff(ctx, &rom->w_cut));
   if (ctx->contact) PetscCall(RollerContactCheckReduced(ctx, ctx->contact));
+  if (ctx->contact && rom->residual) {
+    PetscBool composed;
+
+    PetscCall(PetscStrcmp(RollerSchemeName(ctx), "composed", &composed));
+    PetscCheck(!composed, ctx->comm, PETSC_ERR_SUP, "-rom_residual (the default with contact) takes a three-level scheme (-ts_scheme dmf or trapezoidal), not -ts_scheme composed: its stages' balance has no term for the residual flexibility (-rom_residual false: the modes alone)");
+  }
   PetscCall(PetscTime(&t0));
-  PetscCall(RollerRomBasis(ctx, rom));
+  if (rom->input[0]) PetscCall(RollerRomLoad(ctx, rom, rom->input)); /* the basis of an earlier run */
+  else PetscCall(RollerRomBasis(ctx, rom));
   PetscCall(PetscTime(&t1));
+  if (ctx->contact && rom->residual) PetscCall(RollerContactResidualFunctionals(ctx->contact, ctx->ops.w_R, ctx->ops.w_alpha)); /* before V^T w replaces them */
   PetscCall(RollerRomReduce(ctx, rom));
   if (ctx->contact) PetscCall(RollerContactSetBasis(ctx, ctx->contact, rom->V, ctx->state.cur)); /* u_C = Phi q */
   PetscCall(PetscTime(&t2));
-  rom->t_modes  = t1 - t0;
-  rom->t_reduce = t2 - t1;
+  if (ctx->contact && rom->residual && rom->input[0]) PetscCall(RollerRomLoadResidual(ctx, rom, rom->input));
+  else if (ctx->contact && rom->residual) { /* + R f_C, R from K's factorization (the eigensolver's shift 0) */ ST st;
+    KSP                                                                                                            ksp;
+
+    PetscCall(EPSGetST(rom->eps, &st));
+    PetscCall(STGetKSP(st, &ksp));
+    PetscCall(RollerContactSetResidualFlexibility(ctx, ctx->contact, ksp, rom->lambda));
+  }
+  PetscCall(EPSDestroy(&rom->eps));
+  if (rom->output[0]) PetscCall(RollerRomSave(ctx, rom, rom->output));
+  PetscCall(PetscTime(&t3));
+  rom->t_modes    = t1 - t0;
+  rom->t_reduce   = t2 - t1;
+  rom->t_residual = t3 - t2;
   if (ctx->ts.view) PetscCall(View(ctx, rom));
   PetscFunctionReturn(0);
 }

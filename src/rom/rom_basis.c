@@ -244,7 +244,7 @@ PetscErrorCode RollerRomBasis(Roller ctx, RollerRom rom)
   }
   PetscCall(StaticResponses(ctx, rom, eps, w));
   PetscCall(VecDestroy(&w));
-  PetscCall(EPSDestroy(&eps));
+  rom->eps = eps; /* K's factorization for the residual flexibility (rom.c destroys it) */
   PetscCall(Check(ctx, rom));
   PetscFunctionReturn(0);
 }

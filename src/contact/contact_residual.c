@@ -1,0 +1,287 @@
+/* -rom_residual (docs/model.md "The reduced model", docs/performance.md "Reduced-order transient"): MacNeal's static
+   residual flexibility at Gamma_C. The kept modes (wavelengths of millimetres at the cutoff) cannot take the shape of
+   a contact patch a few elements wide; the modes above the cutoff answer a contact force quasi-statically on the
+   time scale of the kept ones, with the flexibility the basis misses,
+
+     R = E^T (K^{-1} - V K_r^{-1} V^T) E    (symmetric, positive semi-definite; V^T K V = K_r diagonal),
+
+   so the Gamma_C displacement of a level is u_C = Phi q + R f_C, f_C the nodal force of the solve that made it. The
+   condensed operator becomes S + R (the same LCP and Coulomb solves, now on a patch of the full model's width), and
+   every gather of a level adds its residual r = R f_C, which travels with the level's Vec (composed on it). The
+   residual is memoryless: without contact the reduced model and its energy identity are unchanged; in contact the
+   balance of the modal energy misses the residual's static energy 1/2 f_C . R f_C (the CSV's energy is the modal
+   one). */
+#include "contact_impl.h"
+
+#define RESIDUAL_KEY "RollerRomResidual"
+
+/* R's columns: K^{-1} of the unit vectors of the Gamma_C dofs in blocks (KSPMatSolve on K's factorization), their
+   Gamma_C rows gathered on every rank (the full layout's scatter), minus Phi K_r^{-1} Phi^T; then symmetrized. */
+PetscErrorCode RollerContactSetResidualFlexibility(Roller ctx, RollerContact c, KSP kinv, const PetscReal lambda[])
+{
+  const PetscInt n = 2 * c->nodes.nc, nq = c->nodes.nq, nb = 64;
+  PetscInt       nlocal, rstart, rend;
+  PetscReal     *R;
+
+  PetscFunctionBeginUser;
+  PetscCheck(c->nodes.phi, ctx->comm, PETSC_ERR_ORDER, "The residual flexibility needs the basis' Gamma_C rows first");
+  {
+    Mat K;
+
+    PetscCall(KSPGetOperators(kinv, &K, NULL));
+    PetscCall(MatGetLocalSize(K, &nlocal, NULL));
+    PetscCall(MatGetOwnershipRange(K, &rstart, &rend));
+  }
+  PetscCall(PetscCalloc1((size_t)n * n, &R));
+  for (PetscInt j0 = 0; j0 < n; j0 += nb) {
+    const PetscInt mb = PetscMin(nb, n - j0);
+    Mat            B, X;
+
+    PetscCall(MatCreateDense(ctx->comm, nlocal, PETSC_DECIDE, PETSC_DETERMINE, mb, NULL, &B));
+    PetscCall(MatZeroEntries(B));
+    for (PetscInt jj = 0; jj < mb; ++jj) {
+      const PetscInt j = j0 + jj, row = c->nodes.gidx[j / 2] + j % 2;
+
+      if (row >= rstart && row < rend) PetscCall(MatSetValue(B, row, jj, 1.0, INSERT_VALUES));
+    }
+    PetscCall(MatAssemblyBegin(B, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(B, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatDuplicate(B, MAT_DO_NOT_COPY_VALUES, &X));
+    PetscCall(KSPMatSolve(kinv, B, X));
+    for (PetscInt jj = 0; jj < mb; ++jj) {
+      Vec                v;
+      const PetscScalar *r;
+
+      PetscCall(MatDenseGetColumnVecRead(X, jj, &v));
+      PetscCall(VecScatterBegin(c->nodes.scatter, v, c->nodes.red, INSERT_VALUES, SCATTER_FORWARD));
+      PetscCall(VecScatterEnd(c->nodes.scatter, v, c->nodes.red, INSERT_VALUES, SCATTER_FORWARD));
+      PetscCall(MatDenseRestoreColumnVecRead(X, jj, &v));
+      PetscCall(VecGetArrayRead(c->nodes.red, &r));
+      for (PetscInt i = 0; i < n; ++i) R[i + (size_t)(j0 + jj) * n] = PetscRealPart(r[i]);
+      PetscCall(VecRestoreArrayRead(c->nodes.red, &r));
+    }
+    PetscCall(MatDestroy(&B));
+    PetscCall(MatDestroy(&X));
+  }
+  { /* R -= Phi K_r^{-1} Phi^T: phi row-major (n x nq) is the column-major nq x n P; R -= P^T (K_r^{-1} P) */
+    Mat                P, Q, O;
+    PetscScalar       *q;
+    const PetscScalar *o;
+
+    PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, nq, n, c->nodes.phi, &P));
+    PetscCall(MatDuplicate(P, MAT_COPY_VALUES, &Q));
+    PetscCall(MatDenseGetArray(Q, &q));
+    for (PetscInt j = 0; j < n; ++j)
+      for (PetscInt k = 0; k < nq; ++k) q[k + (size_t)j * nq] /= lambda[k];
+    PetscCall(MatDenseRestoreArray(Q, &q));
+    PetscCall(MatTransposeMatMult(P, Q, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &O));
+    PetscCall(MatDenseGetArrayRead(O, &o));
+    for (size_t k = 0; k < (size_t)n * n; ++k) R[k] -= PetscRealPart(o[k]);
+    PetscCall(MatDenseRestoreArrayRead(O, &o));
+    PetscCall(MatDestroy(&O));
+    PetscCall(MatDestroy(&Q));
+    PetscCall(MatDestroy(&P));
+  }
+  for (PetscInt j = 0; j < n; ++j)
+    for (PetscInt i = 0; i < j; ++i) R[i + (size_t)j * n] = R[j + (size_t)i * n] = 0.5 * (R[i + (size_t)j * n] + R[j + (size_t)i * n]);
+  c->nodes.residual.R = R;
+  PetscFunctionReturn(0);
+}
+
+/* Column j of the condensed S (2 nc entries) plus R's. */
+void RollerContactReducedAddFlexibility(RollerContact c, PetscInt j, PetscReal col[])
+{
+  const PetscInt   n = 2 * c->nodes.nc;
+  const PetscReal *r = c->nodes.residual.R + (size_t)j * n;
+
+  if (!c->nodes.residual.R) return;
+  for (PetscInt i = 0; i < n; ++i) col[i] += r[i];
+}
+
+/* The residual r = R f_C of the solve's multipliers, composed on its solution xi (the Vec keeps it as it moves
+   through the levels; a Vec without one has none). */
+PetscErrorCode RollerContactReducedResidual(RollerContact c, const RollerContactResult *res, Vec xi)
+{
+  const PetscInt n = 2 * c->nodes.nc;
+  PetscContainer cont;
+  PetscReal     *r;
+
+  PetscFunctionBeginUser;
+  if (!c->nodes.residual.R) PetscFunctionReturn(0);
+  PetscCall(PetscObjectQuery((PetscObject)xi, RESIDUAL_KEY, (PetscObject *)&cont));
+  if (cont) PetscCall(PetscContainerGetPointer(cont, (void **)&r));
+  else {
+    PetscCall(PetscMalloc1(2 * n, &r)); /* r, then f_C */
+    PetscCall(PetscContainerCreate(PETSC_COMM_SELF, &cont));
+    PetscCall(PetscContainerSetPointer(cont, r));
+    PetscCall(PetscContainerSetUserDestroy(cont, PetscContainerUserDestroyDefault));
+    PetscCall(PetscObjectCompose((PetscObject)xi, RESIDUAL_KEY, (PetscObject)cont));
+    PetscCall(PetscContainerDestroy(&cont));
+  }
+  PetscCall(PetscArrayzero(r, 2 * n));
+  for (PetscInt i = 0; i < c->nodes.nc; ++i) {
+    const PetscReal lt = res->lambda_t ? res->lambda_t[i] : 0.0;
+    PetscReal      *f  = r + n + 2 * i;
+
+    f[0] = res->lambda[i] * c->step.normal[0] + lt * c->step.tangent[0];
+    f[1] = res->lambda[i] * c->step.normal[1] + lt * c->step.tangent[1];
+    for (PetscInt d = 0; d < 2; ++d) {
+      const PetscReal *col = c->nodes.residual.R + (size_t)(2 * i + d) * n;
+
+      if (f[d] == 0.0) continue;
+      for (PetscInt k = 0; k < n; ++k) r[k] += col[k] * f[d];
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+/* red += the residual composed on q (if any), at the nodes a gather computes (the window's, or all). */
+PetscErrorCode RollerContactReducedAddResidual(RollerContact c, Vec q, Vec red)
+{
+  PetscContainer   cont;
+  const PetscReal *r;
+  PetscScalar     *u;
+
+  PetscFunctionBeginUser;
+  if (!c->nodes.residual.R) PetscFunctionReturn(0);
+  PetscCall(PetscObjectQuery((PetscObject)q, RESIDUAL_KEY, (PetscObject *)&cont));
+  if (!cont) PetscFunctionReturn(0);
+  PetscCall(PetscContainerGetPointer(cont, (void **)&r));
+  PetscCall(VecGetArray(red, &u));
+  for (PetscInt k = 0; k < c->nodes.nwin; ++k) {
+    const PetscInt i = c->nodes.windowed ? c->nodes.win[k] : k;
+
+    u[2 * i] += r[2 * i];
+    u[2 * i + 1] += r[2 * i + 1];
+  }
+  PetscCall(VecRestoreArray(red, &u));
+  PetscFunctionReturn(0);
+}
+
+/* The residual's energy in a three-level scheme's balance (section 2: the force f^k of step k works on
+   D = u^k - u^{k-2}). With r = R f, E_r^k = 1/4 (f^k . r^k + f^{k-1} . r^{k-1}) and
+   D_r^k = 1/4 (f^k - f^{k-2}) . (r^k - r^{k-2}) >= 0 give E_r^k - E_r^{k-1} = 1/2 f^k . (r^k - r^{k-2}) - D_r^k
+   exactly: the memoryless residual is the static energy E_r (added to E) and the dissipation D_r (the contact's). */
+static PetscErrorCode ResidualOf(Vec v, const PetscReal **r)
+{
+  PetscContainer cont = NULL;
+
+  PetscFunctionBeginUser;
+  *r = NULL;
+  PetscCall(PetscObjectQuery((PetscObject)v, RESIDUAL_KEY, (PetscObject *)&cont));
+  if (cont) PetscCall(PetscContainerGetPointer(cont, (void **)r));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerContactResidualEnergy(RollerContact c, Vec cur, Vec prev, PetscReal *energy)
+{
+  const PetscReal *a, *b;
+  PetscInt         n;
+
+  PetscFunctionBeginUser;
+  if (!c || !c->nodes.residual.R) PetscFunctionReturn(0);
+  n = 2 * c->nodes.nc;
+  PetscCall(ResidualOf(cur, &a));
+  PetscCall(ResidualOf(prev, &b));
+  for (PetscInt i = 0; i < n; ++i) *energy += 0.25 * ((a ? a[n + i] * a[i] : 0.0) + (b ? b[n + i] * b[i] : 0.0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerContactResidualDissipation(RollerContact c, Vec cur, Vec prev2, PetscReal *dissipation)
+{
+  const PetscReal *a, *b;
+  PetscInt         n;
+
+  PetscFunctionBeginUser;
+  if (!c || !c->nodes.residual.R) PetscFunctionReturn(0);
+  n = 2 * c->nodes.nc;
+  PetscCall(ResidualOf(cur, &a));
+  PetscCall(ResidualOf(prev2, &b));
+  for (PetscInt i = 0; i < n; ++i) *dissipation += 0.25 * ((a ? a[n + i] : 0.0) - (b ? b[n + i] : 0.0)) * ((a ? a[i] : 0.0) - (b ? b[i] : 0.0));
+  PetscFunctionReturn(0);
+}
+
+/* The functionals behind R and alpha are integrals over Gamma_C: their Gamma_C rows (before the reduction replaces
+   them by V^T w) give the residual's part of the two columns. */
+PetscErrorCode RollerContactResidualFunctionals(RollerContact c, Vec wR, Vec walpha)
+{
+  const PetscInt n    = 2 * c->nodes.nc;
+  Vec            w[2] = {wR, walpha};
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(2 * n, &c->nodes.residual.wc));
+  for (PetscInt k = 0; k < 2; ++k) {
+    const PetscScalar *a;
+
+    PetscCall(VecScatterBegin(c->nodes.scatter, w[k], c->nodes.red, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterEnd(c->nodes.scatter, w[k], c->nodes.red, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecGetArrayRead(c->nodes.red, &a));
+    for (PetscInt i = 0; i < n; ++i) c->nodes.residual.wc[k * n + i] = PetscRealPart(a[i]);
+    PetscCall(VecRestoreArrayRead(c->nodes.red, &a));
+  }
+  PetscFunctionReturn(0);
+}
+
+/* *wr += w_R . r, *wa += w_alpha . r of the residual composed on the level q (nothing without one). */
+void RollerContactResidualDots(RollerContact c, Vec q, PetscReal *wr, PetscReal *wa)
+{
+  const PetscInt   n = c ? 2 * c->nodes.nc : 0;
+  const PetscReal *r = NULL;
+
+  if (!c || !c->nodes.residual.R || !c->nodes.residual.wc) return;
+  if (ResidualOf(q, &r) || !r) return;
+  for (PetscInt i = 0; i < n; ++i) {
+    *wr += c->nodes.residual.wc[i] * r[i];
+    *wa += c->nodes.residual.wc[n + i] * r[i];
+  }
+}
+
+/* R in a -rom_output file (a flat dataset of (2 nc)^2 reals, column-major, written by rank 0), or read back from one
+   (after RollerContactSetBasis; the file's Gamma_C nodes are this run's: the caller has matched the meshes). */
+PetscErrorCode RollerContactResidualView(Roller ctx, RollerContact c, PetscViewer viewer, PetscBool load)
+{
+  const PetscInt n = 2 * c->nodes.nc;
+  PetscMPIInt    rank;
+  Vec            v;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(ctx->comm, &rank));
+  PetscCall(VecCreateMPI(ctx->comm, rank == 0 ? n * n : 0, n * n, &v));
+  PetscCall(PetscObjectSetName((PetscObject)v, "residual_flexibility"));
+  if (load) {
+    const PetscScalar *a;
+
+    PetscCall(VecLoad(v, viewer));
+    PetscCall(PetscMalloc1((size_t)n * n, &c->nodes.residual.R));
+    if (rank == 0) {
+      PetscCall(VecGetArrayRead(v, &a));
+      for (size_t k = 0; k < (size_t)n * n; ++k) c->nodes.residual.R[k] = PetscRealPart(a[k]);
+      PetscCall(VecRestoreArrayRead(v, &a));
+    }
+    PetscCallMPI(MPI_Bcast(c->nodes.residual.R, (PetscMPIInt)(n * n), MPIU_REAL, 0, ctx->comm));
+  } else {
+    PetscScalar *a;
+
+    PetscCheck(c->nodes.residual.R, ctx->comm, PETSC_ERR_ORDER, "No residual flexibility to write");
+    PetscCall(VecGetArray(v, &a));
+    if (rank == 0)
+      for (size_t k = 0; k < (size_t)n * n; ++k) a[k] = c->nodes.residual.R[k];
+    PetscCall(VecRestoreArray(v, &a));
+    PetscCall(VecView(v, viewer));
+  }
+  PetscCall(VecDestroy(&v));
+  PetscFunctionReturn(0);
+}
+
+PetscInt RollerContactNodeCount(RollerContact c)
+{
+  return c ? c->nodes.nc : 0;
+}
+
+PetscErrorCode RollerContactResidualDestroy(RollerContact c)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(c->nodes.residual.R));
+  PetscCall(PetscFree(c->nodes.residual.wc));
+  PetscFunctionReturn(0);
+}
