@@ -11,3 +11,6 @@ roller_test(rom_printer rom_printer.py LABELS long TIMEOUT 5400)
 # -rom_output / -rom_input: the basis and the residual flexibility reused bit for bit, on 2 ranks to round-off, and
 # refused by name for another rubber, mode count or mesh (about 30 s)
 roller_test(rom_io rom_io.py LABELS quick mpi TIMEOUT 600)
+# A seeded squeal transient on the reduced model: the order-1 whirl's growth within 5 % of the full transient's and the
+# CEA's (about 4 min of CPU)
+roller_test(rom_seeded rom_seeded.py LABELS long TIMEOUT 1800)

@@ -95,11 +95,16 @@ typedef struct {
 
 /* -rom_residual (MacNeal, contact_residual.c): the static residual flexibility R = E^T (K^-1 - V K_r^-1 V^T) E of the
    Gamma_C dofs (2 nc x 2 nc column-major, every rank; NULL without it). A solve's displacement is Phi q + R f_C, f_C
-   its nodal force: the residual r = R f_C of a level is composed on its Vec q (RollerContactReducedResidual). wc: the
+   its nodal force: the residual r = R f_C of a level is kept by its Vec's id (RollerContactReducedResidual). wc: the
    Gamma_C rows of the functionals w_R, w_alpha (2 x 2 nc), for r's part of R and alpha. */
+#define ROLLER_RESIDUAL_SLOTS 16
 typedef struct {
-  PetscReal *R;
-  PetscReal *wc;
+  PetscReal    *R;
+  PetscReal    *wc;
+  PetscReal    *u0;    /* 3 x 2 nc during the set-up: the initial levels' Gamma_C displacements (NULL from rest) */
+  PetscInt      nslot; /* the vectors that carry a residual (r, f_C: 4 nc reals each), by object id */
+  PetscObjectId id[ROLLER_RESIDUAL_SLOTS];
+  PetscReal    *slot[ROLLER_RESIDUAL_SLOTS];
 } RollerContactResidual;
 
 /* Gamma_C nodes (contact_nodes.c), fixed at creation, the same on every rank, sorted by angle: node i has its

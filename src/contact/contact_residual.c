@@ -7,13 +7,25 @@
 
    so the Gamma_C displacement of a level is u_C = Phi q + R f_C, f_C the nodal force of the solve that made it. The
    condensed operator becomes S + R (the same LCP and Coulomb solves, now on a patch of the full model's width), and
-   every gather of a level adds its residual r = R f_C, which travels with the level's Vec (composed on it). The
+   every gather of a level adds its residual r = R f_C, which travels with the level's Vec (kept by the Vec's id). The
    residual is memoryless: without contact the reduced model and its energy identity are unchanged; in contact the
    balance of the modal energy misses the residual's static energy 1/2 f_C . R f_C (the CSV's energy is the modal
    one). */
 #include "contact_impl.h"
 
-#define RESIDUAL_KEY "RollerRomResidual"
+/* out (2 nc reals) = the Gamma_C rows of a vector of the full layout (the nodes' scatter, whatever -rom has set). */
+static PetscErrorCode GatherFull(RollerContact c, Vec v, PetscReal out[])
+{
+  const PetscScalar *a;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecScatterBegin(c->nodes.scatter, v, c->nodes.red, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(c->nodes.scatter, v, c->nodes.red, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGetArrayRead(c->nodes.red, &a));
+  for (PetscInt i = 0; i < 2 * c->nodes.nc; ++i) out[i] = PetscRealPart(a[i]);
+  PetscCall(VecRestoreArrayRead(c->nodes.red, &a));
+  PetscFunctionReturn(0);
+}
 
 /* R's columns: K^{-1} of the unit vectors of the Gamma_C dofs in blocks (KSPMatSolve on K's factorization), their
    Gamma_C rows gathered on every rank (the full layout's scatter), minus Phi K_r^{-1} Phi^T; then symmetrized. */
@@ -49,16 +61,11 @@ PetscErrorCode RollerContactSetResidualFlexibility(Roller ctx, RollerContact c, 
     PetscCall(MatDuplicate(B, MAT_DO_NOT_COPY_VALUES, &X));
     PetscCall(KSPMatSolve(kinv, B, X));
     for (PetscInt jj = 0; jj < mb; ++jj) {
-      Vec                v;
-      const PetscScalar *r;
+      Vec v;
 
       PetscCall(MatDenseGetColumnVecRead(X, jj, &v));
-      PetscCall(VecScatterBegin(c->nodes.scatter, v, c->nodes.red, INSERT_VALUES, SCATTER_FORWARD));
-      PetscCall(VecScatterEnd(c->nodes.scatter, v, c->nodes.red, INSERT_VALUES, SCATTER_FORWARD));
+      PetscCall(GatherFull(c, v, R + (size_t)(j0 + jj) * n));
       PetscCall(MatDenseRestoreColumnVecRead(X, jj, &v));
-      PetscCall(VecGetArrayRead(c->nodes.red, &r));
-      for (PetscInt i = 0; i < n; ++i) R[i + (size_t)(j0 + jj) * n] = PetscRealPart(r[i]);
-      PetscCall(VecRestoreArrayRead(c->nodes.red, &r));
     }
     PetscCall(MatDestroy(&B));
     PetscCall(MatDestroy(&X));
@@ -98,27 +105,49 @@ void RollerContactReducedAddFlexibility(RollerContact c, PetscInt j, PetscReal c
   for (PetscInt i = 0; i < n; ++i) col[i] += r[i];
 }
 
-/* The residual r = R f_C of the solve's multipliers, composed on its solution xi (the Vec keeps it as it moves
+/* The residual's 2 n reals (r, then f_C) of a level's Vec, found by the Vec's object id (unique in the run, never
+   reused; a Vec composed object would be shared by the VecDuplicate copies of it, e.g. a solver's work vectors made
+   from a level). Kept: the levels and the stages' vectors, a fixed few. */
+static PetscErrorCode ResidualOf(RollerContact c, Vec v, PetscReal **r)
+{
+  PetscObjectId id;
+
+  PetscFunctionBeginUser;
+  *r = NULL;
+  PetscCall(PetscObjectGetId((PetscObject)v, &id));
+  for (PetscInt k = 0; k < c->nodes.residual.nslot; ++k)
+    if (c->nodes.residual.id[k] == id) *r = c->nodes.residual.slot[k];
+  PetscFunctionReturn(0);
+}
+
+/* ... made if v has none, and zeroed */
+static PetscErrorCode Composed(RollerContact c, Vec v, PetscReal **r)
+{
+  RollerContactResidual *rs = &c->nodes.residual;
+  const PetscInt         n  = 2 * c->nodes.nc;
+
+  PetscFunctionBeginUser;
+  PetscCall(ResidualOf(c, v, r));
+  if (!*r) {
+    PetscCheck(rs->nslot < ROLLER_RESIDUAL_SLOTS, c->comm, PETSC_ERR_PLIB, "-rom_residual: more than %d vectors carry a residual", ROLLER_RESIDUAL_SLOTS);
+    PetscCall(PetscObjectGetId((PetscObject)v, &rs->id[rs->nslot]));
+    PetscCall(PetscMalloc1(2 * n, &rs->slot[rs->nslot]));
+    *r = rs->slot[rs->nslot++];
+  }
+  PetscCall(PetscArrayzero(*r, 2 * n));
+  PetscFunctionReturn(0);
+}
+
+/* The residual r = R f_C of the solve's multipliers, kept for its solution xi (the Vec keeps it as it moves
    through the levels; a Vec without one has none). */
 PetscErrorCode RollerContactReducedResidual(RollerContact c, const RollerContactResult *res, Vec xi)
 {
   const PetscInt n = 2 * c->nodes.nc;
-  PetscContainer cont;
   PetscReal     *r;
 
   PetscFunctionBeginUser;
   if (!c->nodes.residual.R) PetscFunctionReturn(0);
-  PetscCall(PetscObjectQuery((PetscObject)xi, RESIDUAL_KEY, (PetscObject *)&cont));
-  if (cont) PetscCall(PetscContainerGetPointer(cont, (void **)&r));
-  else {
-    PetscCall(PetscMalloc1(2 * n, &r)); /* r, then f_C */
-    PetscCall(PetscContainerCreate(PETSC_COMM_SELF, &cont));
-    PetscCall(PetscContainerSetPointer(cont, r));
-    PetscCall(PetscContainerSetUserDestroy(cont, PetscContainerUserDestroyDefault));
-    PetscCall(PetscObjectCompose((PetscObject)xi, RESIDUAL_KEY, (PetscObject)cont));
-    PetscCall(PetscContainerDestroy(&cont));
-  }
-  PetscCall(PetscArrayzero(r, 2 * n));
+  PetscCall(Composed(c, xi, &r));
   for (PetscInt i = 0; i < c->nodes.nc; ++i) {
     const PetscReal lt = res->lambda_t ? res->lambda_t[i] : 0.0;
     PetscReal      *f  = r + n + 2 * i;
@@ -135,18 +164,16 @@ PetscErrorCode RollerContactReducedResidual(RollerContact c, const RollerContact
   PetscFunctionReturn(0);
 }
 
-/* red += the residual composed on q (if any), at the nodes a gather computes (the window's, or all). */
+/* red += the residual of q (if any), at the nodes a gather computes (the window's, or all). */
 PetscErrorCode RollerContactReducedAddResidual(RollerContact c, Vec q, Vec red)
 {
-  PetscContainer   cont;
-  const PetscReal *r;
-  PetscScalar     *u;
+  PetscReal   *r;
+  PetscScalar *u;
 
   PetscFunctionBeginUser;
   if (!c->nodes.residual.R) PetscFunctionReturn(0);
-  PetscCall(PetscObjectQuery((PetscObject)q, RESIDUAL_KEY, (PetscObject *)&cont));
-  if (!cont) PetscFunctionReturn(0);
-  PetscCall(PetscContainerGetPointer(cont, (void **)&r));
+  PetscCall(ResidualOf(c, q, &r));
+  if (!r) PetscFunctionReturn(0);
   PetscCall(VecGetArray(red, &u));
   for (PetscInt k = 0; k < c->nodes.nwin; ++k) {
     const PetscInt i = c->nodes.windowed ? c->nodes.win[k] : k;
@@ -162,42 +189,51 @@ PetscErrorCode RollerContactReducedAddResidual(RollerContact c, Vec q, Vec red)
    D = u^k - u^{k-2}). With r = R f, E_r^k = 1/4 (f^k . r^k + f^{k-1} . r^{k-1}) and
    D_r^k = 1/4 (f^k - f^{k-2}) . (r^k - r^{k-2}) >= 0 give E_r^k - E_r^{k-1} = 1/2 f^k . (r^k - r^{k-2}) - D_r^k
    exactly: the memoryless residual is the static energy E_r (added to E) and the dissipation D_r (the contact's). */
-static PetscErrorCode ResidualOf(Vec v, const PetscReal **r)
-{
-  PetscContainer cont = NULL;
-
-  PetscFunctionBeginUser;
-  *r = NULL;
-  PetscCall(PetscObjectQuery((PetscObject)v, RESIDUAL_KEY, (PetscObject *)&cont));
-  if (cont) PetscCall(PetscContainerGetPointer(cont, (void **)r));
-  PetscFunctionReturn(0);
-}
-
 PetscErrorCode RollerContactResidualEnergy(RollerContact c, Vec cur, Vec prev, PetscReal *energy)
 {
-  const PetscReal *a, *b;
-  PetscInt         n;
+  PetscReal *a, *b;
+  PetscInt   n;
 
   PetscFunctionBeginUser;
   if (!c || !c->nodes.residual.R) PetscFunctionReturn(0);
   n = 2 * c->nodes.nc;
-  PetscCall(ResidualOf(cur, &a));
-  PetscCall(ResidualOf(prev, &b));
+  PetscCall(ResidualOf(c, cur, &a));
+  PetscCall(ResidualOf(c, prev, &b));
   for (PetscInt i = 0; i < n; ++i) *energy += 0.25 * ((a ? a[n + i] * a[i] : 0.0) + (b ? b[n + i] * b[i] : 0.0));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode RollerContactResidualDissipation(RollerContact c, Vec cur, Vec prev2, PetscReal *dissipation)
 {
-  const PetscReal *a, *b;
-  PetscInt         n;
+  PetscReal *a, *b;
+  PetscInt   n;
 
   PetscFunctionBeginUser;
   if (!c || !c->nodes.residual.R) PetscFunctionReturn(0);
   n = 2 * c->nodes.nc;
-  PetscCall(ResidualOf(cur, &a));
-  PetscCall(ResidualOf(prev2, &b));
+  PetscCall(ResidualOf(c, cur, &a));
+  PetscCall(ResidualOf(c, prev2, &b));
   for (PetscInt i = 0; i < n; ++i) *dissipation += 0.25 * ((a ? a[n + i] : 0.0) - (b ? b[n + i] : 0.0)) * ((a ? a[i] : 0.0) - (b ? b[i] : 0.0));
+  PetscFunctionReturn(0);
+}
+
+/* x (the full model's layout) += E r, the residual of the level q at the Gamma_C dofs (the fields output of -rom). */
+PetscErrorCode RollerContactResidualAddFull(RollerContact c, Vec q, Vec x)
+{
+  PetscReal   *r;
+  PetscScalar *u;
+  PetscMPIInt  rank;
+
+  PetscFunctionBeginUser;
+  if (!c || !c->nodes.residual.R) PetscFunctionReturn(0);
+  PetscCall(ResidualOf(c, q, &r));
+  if (!r) PetscFunctionReturn(0);
+  PetscCallMPI(MPI_Comm_rank(c->comm, &rank));
+  PetscCall(VecGetArrayWrite(c->nodes.red, &u));
+  for (PetscInt i = 0; i < 2 * c->nodes.nc; ++i) u[i] = rank == 0 ? r[i] : 0.0; /* every rank holds all of r: one adds it */
+  PetscCall(VecRestoreArrayWrite(c->nodes.red, &u));
+  PetscCall(VecScatterBegin(c->nodes.scatter, c->nodes.red, x, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecScatterEnd(c->nodes.scatter, c->nodes.red, x, ADD_VALUES, SCATTER_REVERSE));
   PetscFunctionReturn(0);
 }
 
@@ -210,26 +246,18 @@ PetscErrorCode RollerContactResidualFunctionals(RollerContact c, Vec wR, Vec wal
 
   PetscFunctionBeginUser;
   PetscCall(PetscMalloc1(2 * n, &c->nodes.residual.wc));
-  for (PetscInt k = 0; k < 2; ++k) {
-    const PetscScalar *a;
-
-    PetscCall(VecScatterBegin(c->nodes.scatter, w[k], c->nodes.red, INSERT_VALUES, SCATTER_FORWARD));
-    PetscCall(VecScatterEnd(c->nodes.scatter, w[k], c->nodes.red, INSERT_VALUES, SCATTER_FORWARD));
-    PetscCall(VecGetArrayRead(c->nodes.red, &a));
-    for (PetscInt i = 0; i < n; ++i) c->nodes.residual.wc[k * n + i] = PetscRealPart(a[i]);
-    PetscCall(VecRestoreArrayRead(c->nodes.red, &a));
-  }
+  for (PetscInt k = 0; k < 2; ++k) PetscCall(GatherFull(c, w[k], c->nodes.residual.wc + k * n));
   PetscFunctionReturn(0);
 }
 
-/* *wr += w_R . r, *wa += w_alpha . r of the residual composed on the level q (nothing without one). */
+/* *wr += w_R . r, *wa += w_alpha . r of the residual of the level q (nothing without one). */
 void RollerContactResidualDots(RollerContact c, Vec q, PetscReal *wr, PetscReal *wa)
 {
-  const PetscInt   n = c ? 2 * c->nodes.nc : 0;
-  const PetscReal *r = NULL;
+  const PetscInt n = c ? 2 * c->nodes.nc : 0;
+  PetscReal     *r = NULL;
 
   if (!c || !c->nodes.residual.R || !c->nodes.residual.wc) return;
-  if (ResidualOf(q, &r) || !r) return;
+  if (ResidualOf(c, q, &r) || !r) return;
   for (PetscInt i = 0; i < n; ++i) {
     *wr += c->nodes.residual.wc[i] * r[i];
     *wa += c->nodes.residual.wc[n + i] * r[i];
@@ -278,10 +306,86 @@ PetscInt RollerContactNodeCount(RollerContact c)
   return c ? c->nodes.nc : 0;
 }
 
+/* The initial levels (a start from a state held by contact forces: a steady state, a checkpoint-free seeded
+   transient): their Gamma_C displacements u_C, gathered before the reduction replaces them ... */
+PetscErrorCode RollerContactResidualLevelsBegin(RollerContact c, const Vec lev[3])
+{
+  const PetscInt n   = 2 * c->nodes.nc;
+  PetscReal      big = 0.0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(3 * n, &c->nodes.residual.u0));
+  for (PetscInt l = 0; l < 3; ++l) PetscCall(GatherFull(c, lev[l], c->nodes.residual.u0 + l * n));
+  for (PetscInt i = 0; i < 3 * n; ++i) big = PetscMax(big, PetscAbsReal(c->nodes.residual.u0[i]));
+  if (big == 0.0) PetscCall(PetscFree(c->nodes.residual.u0)); /* from rest: nothing to carry */
+  PetscFunctionReturn(0);
+}
+
+/* ... and after R is known, each reduced level q (the K-orthogonal projection) carries the remainder
+   r = u_C - Phi q with the force f_C = R^{-1} r (a Cholesky factorization of R): for a state held by contact forces,
+   r = R f_C exactly and f_C is that force (0 away from the contact, to the basis' truncation). */
+PetscErrorCode RollerContactResidualLevelsEnd(RollerContact c, const Vec lev[3])
+{
+  const PetscInt n = 2 * c->nodes.nc, nq = c->nodes.nq;
+  Mat            F;
+  Vec            b, x;
+
+  PetscFunctionBeginUser;
+  if (!c->nodes.residual.u0 || !c->nodes.residual.R) {
+    PetscCall(PetscFree(c->nodes.residual.u0));
+    PetscFunctionReturn(0);
+  }
+  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, n, n, NULL, &F));
+  {
+    PetscScalar *f;
+
+    PetscCall(MatDenseGetArrayWrite(F, &f));
+    for (size_t k = 0; k < (size_t)n * n; ++k) f[k] = c->nodes.residual.R[k];
+    PetscCall(MatDenseRestoreArrayWrite(F, &f));
+  }
+  PetscCall(MatCholeskyFactor(F, NULL, NULL));
+  PetscCall(MatCreateVecs(F, &x, &b));
+  for (PetscInt l = 0; l < 3; ++l) {
+    const PetscScalar *qa, *xa;
+    PetscScalar       *ba;
+    PetscReal         *r;
+
+    PetscCall(VecScatterBegin(c->nodes.qscatter, lev[l], c->nodes.qall, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterEnd(c->nodes.qscatter, lev[l], c->nodes.qall, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecGetArrayRead(c->nodes.qall, &qa));
+    PetscCall(Composed(c, lev[l], &r));
+    for (PetscInt i = 0; i < n; ++i) {
+      const PetscReal *p = c->nodes.phi + (size_t)i * nq;
+      PetscReal        u = 0.0;
+
+      for (PetscInt j = 0; j < nq; ++j) u += p[j] * PetscRealPart(qa[j]);
+      r[i] = c->nodes.residual.u0[l * n + i] - u;
+    }
+    PetscCall(VecRestoreArrayRead(c->nodes.qall, &qa));
+    PetscCall(VecGetArrayWrite(b, &ba));
+    for (PetscInt i = 0; i < n; ++i) ba[i] = r[i];
+    PetscCall(VecRestoreArrayWrite(b, &ba));
+    PetscCall(MatSolve(F, b, x));
+    PetscCall(VecGetArrayRead(x, &xa));
+    for (PetscInt i = 0; i < n; ++i) r[n + i] = PetscRealPart(xa[i]);
+    PetscCall(VecRestoreArrayRead(x, &xa));
+  }
+  PetscCall(VecDestroy(&x));
+  PetscCall(VecDestroy(&b));
+  PetscCall(MatDestroy(&F));
+  PetscCall(PetscFree(c->nodes.residual.u0));
+  for (PetscInt k = 0; k < c->nodes.residual.nslot; ++k) PetscCall(PetscFree(c->nodes.residual.slot[k]));
+  c->nodes.residual.nslot = 0;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode RollerContactResidualDestroy(RollerContact c)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscFree(c->nodes.residual.R));
   PetscCall(PetscFree(c->nodes.residual.wc));
+  PetscCall(PetscFree(c->nodes.residual.u0));
+  for (PetscInt k = 0; k < c->nodes.residual.nslot; ++k) PetscCall(PetscFree(c->nodes.residual.slot[k]));
+  c->nodes.residual.nslot = 0;
   PetscFunctionReturn(0);
 }

@@ -215,7 +215,11 @@ PetscErrorCode RollerFieldsCreate(Roller ctx, const char path[], PetscInt every,
   PetscCall(DMCreateGlobalVector(out->sdm, &out->count));
   PetscCall(DMCreateGlobalVector(out->vdm, &out->position));
   PetscCall(DMProjectFunction(out->vdm, 0.0, position, NULL, INSERT_VALUES, out->position));
-  PetscCall(RollerProjectAtVertices(ctx, ctx->state.cur, f_one, ADD_VALUES, out->count));
+  if (ctx->ops.V) { /* -rom: the fields of the full model's layout */
+    PetscCall(DMCreateGlobalVector(ctx->mesh.dm, &out->xfull));
+    PetscCall(VecDuplicate(out->xfull, &out->vfull));
+  }
+  PetscCall(RollerProjectAtVertices(ctx, out->xfull ? out->xfull : ctx->state.cur, f_one, ADD_VALUES, out->count));
   PetscFunctionReturn(0);
 }
 
@@ -251,14 +255,22 @@ static PetscErrorCode LabDisplacement(RollerOutput out, PetscReal theta, Vec xi,
 static PetscErrorCode WriteFields(Roller ctx, RollerOutput out)
 {
   PetscReal theta;
+  Vec       xi = ctx->state.cur, v = ctx->state.velocity;
 
   PetscFunctionBeginUser;
   RollerTheta(ctx, ctx->state.time, &theta, NULL, NULL);
-  PetscCall(RollerProjectAtVertices(ctx, ctx->state.cur, RollerPadVector, INSERT_VALUES, out->field[FIELD_DISPLACEMENT].vec));
+  if (out->xfull) { /* -rom: xi = V q + the residual at Gamma_C (exact there: the patch), v = V q' */
+    PetscCall(MatMult(ctx->ops.V, ctx->state.cur, out->xfull));
+    PetscCall(RollerContactResidualAddFull(ctx->contact, ctx->state.cur, out->xfull));
+    PetscCall(MatMult(ctx->ops.V, ctx->state.velocity, out->vfull));
+    xi = out->xfull;
+    v  = out->vfull;
+  }
+  PetscCall(RollerProjectAtVertices(ctx, xi, RollerPadVector, INSERT_VALUES, out->field[FIELD_DISPLACEMENT].vec));
   PetscCall(LabDisplacement(out, theta, out->field[FIELD_DISPLACEMENT].vec, out->field[FIELD_LAB].vec));
-  PetscCall(RollerProjectAtVertices(ctx, ctx->state.velocity, RollerPadVector, INSERT_VALUES, out->field[FIELD_VELOCITY].vec));
+  PetscCall(RollerProjectAtVertices(ctx, v, RollerPadVector, INSERT_VALUES, out->field[FIELD_VELOCITY].vec));
   /* |sigma| (docs/model.md section 4); DMProjectField hands the kernel the constants of the input DS, ctx->mesh.dm's */
-  PetscCall(RollerProjectAtVertices(ctx, ctx->state.cur, f_stress_norm, ADD_VALUES, out->field[FIELD_STRESS].vec));
+  PetscCall(RollerProjectAtVertices(ctx, xi, f_stress_norm, ADD_VALUES, out->field[FIELD_STRESS].vec));
   PetscCall(VecPointwiseDivide(out->field[FIELD_STRESS].vec, out->field[FIELD_STRESS].vec, out->count));
   /* multiplier / tributary length at the Gamma_C vertices (docs/contact.md) */
   if (out->nfields > FIELD_CONTACT_PRESSURE)
@@ -316,6 +328,8 @@ PetscErrorCode RollerFieldsDestroy(RollerOutput *output)
   for (PetscInt f = 0; f < out->nfields; ++f) PetscCall(VecDestroy(&out->field[f].vec));
   PetscCall(VecDestroy(&out->count));
   PetscCall(VecDestroy(&out->position));
+  PetscCall(VecDestroy(&out->xfull));
+  PetscCall(VecDestroy(&out->vfull));
   PetscCall(DMDestroy(&out->vdm));
   PetscCall(DMDestroy(&out->sdm));
   PetscCall(DMDestroy(&out->pdm));

@@ -56,8 +56,9 @@ struct _n_RollerOutput {
   /* Output spaces on the same mesh: vdm P1 with 3 components; sdm, pdm (contact pressure), tdm and cdm (the
      friction traction and the stick/slip state) P1 scalar */
   DM           vdm, sdm, pdm, tdm, cdm;
-  Vec          position; /* (x, y, 0) at every vertex (vdm) */
-  Vec          count;    /* the number of cells around every vertex (sdm) */
+  Vec          position;     /* (x, y, 0) at every vertex (vdm) */
+  Vec          count;        /* the number of cells around every vertex (sdm) */
+  Vec          xfull, vfull; /* -rom: the displacement V q (+ the Gamma_C residual) and velocity V v on the mesh */
   OutputField  field[MAX_FIELDS];
   PetscInt     nfields;
   RollerSeries series; /* R, alpha, energy, ... of every step, to /diagnostics at the end */

@@ -94,7 +94,12 @@ PetscErrorCode RollerRomSetUp(Roller ctx)
   if (rom->input[0]) PetscCall(RollerRomLoad(ctx, rom, rom->input)); /* the basis of an earlier run */
   else PetscCall(RollerRomBasis(ctx, rom));
   PetscCall(PetscTime(&t1));
-  if (ctx->contact && rom->residual) PetscCall(RollerContactResidualFunctionals(ctx->contact, ctx->ops.w_R, ctx->ops.w_alpha)); /* before V^T w replaces them */
+  if (ctx->contact && rom->residual) { /* before the reduction replaces them: the functionals' and the levels' Gamma_C rows */
+    const Vec lev[3] = {ctx->state.cur, ctx->state.prev, ctx->state.prev2};
+
+    PetscCall(RollerContactResidualFunctionals(ctx->contact, ctx->ops.w_R, ctx->ops.w_alpha));
+    PetscCall(RollerContactResidualLevelsBegin(ctx->contact, lev));
+  }
   PetscCall(RollerRomReduce(ctx, rom));
   if (ctx->contact) PetscCall(RollerContactSetBasis(ctx, ctx->contact, rom->V, ctx->state.cur)); /* u_C = Phi q */
   PetscCall(PetscTime(&t2));
@@ -105,6 +110,11 @@ PetscErrorCode RollerRomSetUp(Roller ctx)
     PetscCall(EPSGetST(rom->eps, &st));
     PetscCall(STGetKSP(st, &ksp));
     PetscCall(RollerContactSetResidualFlexibility(ctx, ctx->contact, ksp, rom->lambda));
+  }
+  if (ctx->contact && rom->residual) { /* the initial levels' Gamma_C remainder, with its force */
+    const Vec lev[3] = {ctx->state.cur, ctx->state.prev, ctx->state.prev2};
+
+    PetscCall(RollerContactResidualLevelsEnd(ctx->contact, lev));
   }
   PetscCall(EPSDestroy(&rom->eps));
   if (rom->output[0]) PetscCall(RollerRomSave(ctx, rom, rom->output));

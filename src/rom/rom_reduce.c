@@ -1,7 +1,8 @@
 /* The reduced model put in the context (docs/performance.md "Reduced-order transient"): with the M-orthonormal
    basis V (rom_basis.c) the coordinates q of xi = V q have M_r = I, K_r = diag(lambda) (its Kelvin-Voigt term tau K_r
    with it), the rotating frame's R(-pi/2) M on M products G_r = V^T R(-pi/2) M V (dense, skew), the loads V^T L and the
-   functionals V^T w; the levels of the state are projected, q = V^T M xi. The schemes (integrate/scheme_newmark.c),
+   functionals V^T w; the levels of the state are projected, q = V^T M xi (with the residual flexibility
+   q = K_r^{-1} V^T K xi, contact_residual.c). The schemes (integrate/scheme_newmark.c),
    the driver, the diagnostics and the CSV then step and report the reduced model unchanged; its step matrix
    c_M I + c_K K_r is diagonal (model/solver.c). */
 #include "rom/rom.h"
@@ -56,8 +57,15 @@ static PetscErrorCode Rotation(Roller ctx, RollerRom rom, PetscInt n, Mat *R)
   PetscFunctionReturn(0);
 }
 
-/* y (reduced, the layout of the reduced matrices) = V^T x, or V^T M x with mass; entries past nq are 0. */
-static PetscErrorCode Project(Roller ctx, RollerRom rom, Vec x, PetscBool mass, Vec y)
+typedef enum {
+  PROJECT_PLAIN,    /* V^T x: a load or a functional */
+  PROJECT_MASS,     /* V^T M x: the M-orthogonal projection of a state */
+  PROJECT_STIFFNESS /* K_r^{-1} V^T K x: the K-orthogonal one, whose remainder at Gamma_C is R f_C for a state held by
+                       contact forces f_C (-rom_residual: contact_residual.c) */
+} Projection;
+
+/* y (reduced, the layout of the reduced matrices) = the projection of x; entries past nq are 0. */
+static PetscErrorCode Project(Roller ctx, RollerRom rom, Vec x, Projection how, Vec y)
 {
   Vec                p, Mx = NULL, all;
   VecScatter         sc;
@@ -66,18 +74,18 @@ static PetscErrorCode Project(Roller ctx, RollerRom rom, Vec x, PetscBool mass, 
 
   PetscFunctionBeginUser;
   PetscCall(MatCreateVecs(rom->V, &p, NULL));
-  if (mass) {
+  if (how != PROJECT_PLAIN) {
     PetscCall(VecDuplicate(x, &Mx));
-    PetscCall(MatMult(ctx->ops.M, x, Mx));
+    PetscCall(MatMult(how == PROJECT_MASS ? ctx->ops.M : ctx->ops.K, x, Mx));
   }
-  PetscCall(MatMultTranspose(rom->V, mass ? Mx : x, p));
+  PetscCall(MatMultTranspose(rom->V, Mx ? Mx : x, p));
   PetscCall(VecScatterCreateToAll(p, &sc, &all));
   PetscCall(VecScatterBegin(sc, p, all, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecScatterEnd(sc, p, all, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecZeroEntries(y));
   PetscCall(VecGetOwnershipRange(y, &rstart, &rend));
   PetscCall(VecGetArrayRead(all, &a));
-  for (PetscInt i = rstart; i < PetscMin(rend, rom->nq); ++i) PetscCall(VecSetValue(y, i, a[i], INSERT_VALUES));
+  for (PetscInt i = rstart; i < PetscMin(rend, rom->nq); ++i) PetscCall(VecSetValue(y, i, how == PROJECT_STIFFNESS ? a[i] / rom->lambda[i] : a[i], INSERT_VALUES));
   PetscCall(VecRestoreArrayRead(all, &a));
   PetscCall(VecAssemblyBegin(y));
   PetscCall(VecAssemblyEnd(y));
@@ -88,14 +96,14 @@ static PetscErrorCode Project(Roller ctx, RollerRom rom, Vec x, PetscBool mass, 
   PetscFunctionReturn(0);
 }
 
-/* A full-space vector replaced by its reduced image (V^T v, or V^T M v). */
-static PetscErrorCode Replace(Roller ctx, RollerRom rom, Vec tmpl, PetscBool mass, Vec *v)
+/* A full-space vector replaced by its reduced image. */
+static PetscErrorCode Replace(Roller ctx, RollerRom rom, Vec tmpl, Projection how, Vec *v)
 {
   Vec r;
 
   PetscFunctionBeginUser;
   PetscCall(VecDuplicate(tmpl, &r));
-  PetscCall(Project(ctx, rom, *v, mass, r));
+  PetscCall(Project(ctx, rom, *v, how, r));
   PetscCall(VecDestroy(v));
   *v = r;
   PetscFunctionReturn(0);
@@ -120,19 +128,18 @@ PetscErrorCode RollerRomReduce(Roller ctx, RollerRom rom)
   PetscCall(PetscFree2(one, lam));
   PetscCall(Rotation(ctx, rom, n, &R));
   PetscCall(MatCreateVecs(K, &tmpl, NULL));
-  /* the state: the levels projected (M-orthonormal V: q = V^T M xi), the rest recomputed */
-  PetscCall(Replace(ctx, rom, tmpl, PETSC_TRUE, &st->cur));
-  PetscCall(Replace(ctx, rom, tmpl, PETSC_TRUE, &st->prev));
-  PetscCall(Replace(ctx, rom, tmpl, PETSC_TRUE, &st->prev2));
+  /* the state: the levels projected (M-orthonormal V: q = V^T M xi; with the residual flexibility the K-orthogonal
+     projection, whose Gamma_C remainder the residual carries), the rest recomputed */
+  for (Vec *lev = &st->cur; lev; lev = lev == &st->cur ? &st->prev : lev == &st->prev ? &st->prev2 : NULL) PetscCall(Replace(ctx, rom, tmpl, ctx->contact && rom->residual ? PROJECT_STIFFNESS : PROJECT_MASS, lev));
   for (size_t k = 0; k < sizeof(work) / sizeof(work[0]); ++k) {
     PetscCall(VecDestroy(work[k]));
     PetscCall(VecDuplicate(tmpl, work[k]));
   }
   /* the operators */
-  PetscCall(Replace(ctx, rom, tmpl, PETSC_FALSE, &ctx->ops.L_euler));
-  PetscCall(Replace(ctx, rom, tmpl, PETSC_FALSE, &ctx->ops.L_centrifugal));
-  PetscCall(Replace(ctx, rom, tmpl, PETSC_FALSE, &ctx->ops.w_R));
-  PetscCall(Replace(ctx, rom, tmpl, PETSC_FALSE, &ctx->ops.w_alpha));
+  PetscCall(Replace(ctx, rom, tmpl, PROJECT_PLAIN, &ctx->ops.L_euler));
+  PetscCall(Replace(ctx, rom, tmpl, PROJECT_PLAIN, &ctx->ops.L_centrifugal));
+  PetscCall(Replace(ctx, rom, tmpl, PROJECT_PLAIN, &ctx->ops.w_R));
+  PetscCall(Replace(ctx, rom, tmpl, PROJECT_PLAIN, &ctx->ops.w_alpha));
   ctx->ops.M_full = ctx->ops.M;
   PetscCall(MatDestroy(&ctx->ops.K));
   ctx->ops.M   = M;
