@@ -103,6 +103,9 @@ cases = [
     (["-obstacle", "-sweep", "bad_sweep.csv", "-sweep_friction", "0.3,0.8", "-friction_table", "0:1,0.1:0.5"], "-sweep_friction", "-friction_table"),
     (["-rom", "-axle", "-drive_stiffness", "1"], "-axle", "-rom"),
     (["-rom", "-obstacle", "-contact_solver", "vi"], "-contact_solver", "not vi"),
+    (["-rom", "-rom_modes", "10", "-modes", "-rubber", "maxwell", "-rubber_loss_factor", "0.1", "-rubber_band", "0.1,10"], "-modes with -rom and -rubber maxwell", "without -rom"),
+    (["-rom", "-rom_modes", "10", "-obstacle", "-ts_scheme", "composed"], "-ts_scheme composed", "three-level scheme"),
+    (["-rom", "-rom_input", "no_such_basis.h5"], "-rom_input", "no such readable file"),
     (["-modes", "-axle", "-drive_stiffness", "1", "-omega", "1", "-rubber", "maxwell", "-rubber_loss_factor", "0.1", "-rubber_band", "0.1,10"], "-modes_branch_transport", "got true"),
 ]
 for args, name, value in cases:

@@ -73,14 +73,16 @@ static PetscErrorCode StepSolverSetUp(Roller ctx, RollerStepOperator *op)
   PetscBool    direct;
 
   PetscFunctionBeginUser;
-  if (ctx->ops.reduced) { /* -rom: a diagonal A on the reduced coordinates (src/rom), exact by Jacobi */
+  if (ctx->ops.reduced) { /* -rom: a diagonal A on the reduced coordinates (src/rom), exact by Jacobi; with the Maxwell
+                              branches' dense K_d,r a direct factorization of the small dense A */
     PC pc;
 
     PetscCall(KSPCreate(ctx->comm, &op->ksp));
     PetscCall(KSPSetOperators(op->ksp, op->A, op->A));
     PetscCall(KSPSetType(op->ksp, KSPPREONLY));
     PetscCall(KSPGetPC(op->ksp, &pc));
-    PetscCall(PCSetType(pc, PCJACOBI));
+    if (op->c_D != 0) PetscCall(RollerDirectSolverDefaults(op->ksp, op->G ? PCLU : PCCHOLESKY));
+    else PetscCall(PCSetType(pc, PCJACOBI));
     PetscCall(KSPSetUp(op->ksp));
     PetscFunctionReturn(0);
   }

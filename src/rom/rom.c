@@ -25,7 +25,6 @@ PetscErrorCode RollerRomSetFromOptions(Roller ctx)
   if (!on) PetscFunctionReturn(0);
   PetscCheck(!ctx->init.mms, ctx->comm, PETSC_ERR_ARG_INCOMP, "-rom steps the roller's own loads: -mms is the full model's");
   PetscCheck(!ctx->axle.on, ctx->comm, PETSC_ERR_SUP, "-rom with -axle: the hub's unknowns are not in the reduced model (clamped at the shaft)");
-  PetscCheck(ctx->material.rubber != ROLLER_RUBBER_MAXWELL, ctx->comm, PETSC_ERR_SUP, "-rom with -rubber maxwell: the branches' internal variables are not reduced (Kelvin-Voigt -viscosity is)");
   PetscCheck(!ctx->ck.restart[0], ctx->comm, PETSC_ERR_SUP, "-rom with -restart %s: a checkpoint holds the full model's nodal state", ctx->ck.restart);
   PetscCall(PetscNew(&ctx->rom));
   ctx->rom->modes_req = modes;
@@ -83,13 +82,8 @@ PetscErrorCode RollerRomSetUp(Roller ctx)
   PetscCheck(rom->cutoff * ctx->ts.dt <= 0.5, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-rom_cutoff %g must not exceed the step's Nyquist frequency 1/(2 dt) = %g", (double)rom->cutoff, (double)(0.5 / ctx->ts.dt));
   if (rom->cutoff > 0) rom->w_cut = 2 * PETSC_PI * rom->cutoff;
   else PetscCall(DefaultCutoff(ctx, &rom->w_cut));
+  PetscCheck(!ctx->eig.on || ctx->material.rubber != ROLLER_RUBBER_MAXWELL, ctx->comm, PETSC_ERR_SUP, "-modes with -rom and -rubber maxwell: the branches' augmented eigenproblem is the full model's (run -modes without -rom)");
   if (ctx->contact) PetscCall(RollerContactCheckReduced(ctx, ctx->contact));
-  if (ctx->contact && rom->residual) {
-    PetscBool composed;
-
-    PetscCall(PetscStrcmp(RollerSchemeName(ctx), "composed", &composed));
-    PetscCheck(!composed, ctx->comm, PETSC_ERR_SUP, "-rom_residual (the default with contact) takes a three-level scheme (-ts_scheme dmf or trapezoidal), not -ts_scheme composed: its stages' balance has no term for the residual flexibility (-rom_residual false: the modes alone)");
-  }
   PetscCall(PetscTime(&t0));
   if (rom->input[0]) PetscCall(RollerRomLoad(ctx, rom, rom->input)); /* the basis of an earlier run */
   else PetscCall(RollerRomBasis(ctx, rom));

@@ -21,8 +21,9 @@ static PetscErrorCode Diagonal(MPI_Comm comm, PetscInt n, const PetscReal d[], M
   PetscFunctionReturn(0);
 }
 
-/* G_r = V^T R(-pi/2) (M V) in the leading nq x nq block of an n x n AIJ matrix. */
-static PetscErrorCode Rotation(Roller ctx, RollerRom rom, PetscInt n, Mat *R)
+/* V^T A V, or with rotate V^T R(-pi/2) (A V), as a dense-pattern n x n AIJ matrix (n = nq): the rotating frame's
+   G_r (A = M), the Maxwell branches' K_d,r (A = K_d). */
+static PetscErrorCode Gram(Roller ctx, RollerRom rom, Mat A, PetscBool rotate, PetscInt n, Mat *R)
 {
   const PetscInt nq = rom->nq;
   Mat            MV;
@@ -32,10 +33,10 @@ static PetscErrorCode Rotation(Roller ctx, RollerRom rom, PetscInt n, Mat *R)
   PetscInt       rstart, rend, *idx;
 
   PetscFunctionBeginUser;
-  PetscCall(MatMatMult(ctx->ops.M, rom->V, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &MV));
+  PetscCall(MatMatMult(A, rom->V, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &MV));
   PetscCall(RollerRomColumnsGet(MV, &cols));
   PetscCall(VecDuplicate(cols[0], &w));
-  for (PetscInt j = 0; j < nq; ++j) { /* the nodal R(-pi/2): ops.R90 is not set yet */
+  for (PetscInt j = 0; rotate && j < nq; ++j) { /* the nodal R(-pi/2): ops.R90 is not set yet */
     PetscCall(RollerApplyRotate90(ctx, cols[j], w));
     PetscCall(VecCopy(w, cols[j]));
   }
@@ -125,8 +126,22 @@ PetscErrorCode RollerRomReduce(Roller ctx, RollerRom rom)
   }
   PetscCall(Diagonal(ctx->comm, n, one, &M));
   PetscCall(Diagonal(ctx->comm, n, lam, &K));
+  if (ctx->ops.Kd) { /* -rubber maxwell: K_d,r = V^T K_d V (dense); K_r takes its pattern (the step matrix A + c_D K_d) */
+    Mat Kd;
+    Vec d;
+
+    PetscCall(Gram(ctx, rom, ctx->ops.Kd, PETSC_FALSE, n, &Kd));
+    PetscCall(MatCreateVecs(K, &d, NULL));
+    PetscCall(MatGetDiagonal(K, d));
+    PetscCall(MatDestroy(&K));
+    PetscCall(MatDuplicate(Kd, MAT_DO_NOT_COPY_VALUES, &K)); /* zeros in the dense pattern */
+    PetscCall(MatDiagonalSet(K, d, INSERT_VALUES));
+    PetscCall(VecDestroy(&d));
+    PetscCall(MatDestroy(&ctx->ops.Kd));
+    ctx->ops.Kd = Kd;
+  }
   PetscCall(PetscFree2(one, lam));
-  PetscCall(Rotation(ctx, rom, n, &R));
+  PetscCall(Gram(ctx, rom, ctx->ops.M, PETSC_TRUE, n, &R));
   PetscCall(MatCreateVecs(K, &tmpl, NULL));
   /* the state: the levels projected (M-orthonormal V: q = V^T M xi; with the residual flexibility the K-orthogonal
      projection, whose Gamma_C remainder the residual carries), the rest recomputed */
