@@ -101,7 +101,7 @@ cases = [
     (["-obstacle", "-friction_decay", "0.1", "-friction_table", "0:1,0.1:0.5"], "-friction_table", "without -friction_decay"),
     (["-friction_table", "0:1,0.1:0.5"], "-friction_table", "-obstacle"),
     (["-obstacle", "-sweep", "bad_sweep.csv", "-sweep_friction", "0.3,0.8", "-friction_table", "0:1,0.1:0.5"], "-sweep_friction", "-friction_table"),
-    (["-rom", "-axle", "-drive_stiffness", "1"], "-axle", "-rom"),
+    (["-rom", "-rom_modes", "10", "-modes", "-axle", "-drive_stiffness", "1"], "-modes with -rom and -axle", "without -rom"),
     (["-rom", "-obstacle", "-contact_solver", "vi"], "-contact_solver", "not vi"),
     (["-rom", "-rom_modes", "10", "-modes", "-rubber", "maxwell", "-rubber_loss_factor", "0.1", "-rubber_band", "0.1,10"], "-modes with -rom and -rubber maxwell", "without -rom"),
     (["-rom", "-rom_modes", "10", "-obstacle", "-ts_scheme", "composed"], "-ts_scheme composed", "three-level scheme"),

@@ -15,11 +15,12 @@ within 2 %, the contact nodes, R and alpha within 1 %, the energy (modal + the r
 balance (the residual's static energy in E, the dissipation of its memoryless update in the contact's) closes to
 round-off; no penetration, KKT 1e-9. The printer's own mesh over 30 ms is tests/rom_printer.py's (long).
 
-With the Maxwell EPDM (jobs/printer_roller.yaml with -axle false: the clamped hub), the branches reduced by Galerkin
-(K_d,r = V^T K_d V, dense; the step matrix factored): the energy identity with the branches' energy and dissipation to
-round-off; the mean contact and friction forces within 3 % of the full model's (measured -0.95 %, +0.14 %: the
-residual flexibility is the relaxed rubber's, a little softer than the rubber at the patch's kHz; this scene's
-velocity weakening makes the full model itself differ by 1.1 % and 4.4 % at most between 1 and 2 ranks)."""
+The printer itself (jobs/printer_roller.yaml: the Maxwell EPDM, the hub on its pick spring and gear drive), 6 ms: the
+branches reduced by Galerkin (K_d,r = V^T K_d V, dense; the step matrix factored), the hub's three unknowns kept with
+its constraint modes (the rigid fields) in the basis: the balance with the branches, the hub and the residual to
+round-off; against the full model the mean contact force within 1 %, the friction force within 2 %, the hub's
+vertical position within 2 % and its rate within 0.5 % (measured +0.04 %, +0.63 %, +0.56 %, +0.06 %; the full model
+itself moves by 0.3 % in friction between 1 and 2 ranks)."""
 import numpy as np
 
 from rollertest import SOURCE, Checker, read_csv, run
@@ -58,17 +59,17 @@ c.check(defect < 1e-11, f"its energy balance (modal + the residual's static ener
 c.check(r["gap_min"].min() > -1e-12 * R_OUTER, f"no penetration: least gap {r['gap_min'].min():.2e} m")
 c.check(r["kkt_residual"].max() < 1e-9, f"KKT residual {r['kkt_residual'].max():.1e} (< 1e-9) at every step")
 
-# the Maxwell rubber on the clamped hub
-MX = ["-options_file", f"{SOURCE}/jobs/printer_roller.yaml", "-axle", "false", "-mesh_h", "0.0012", "-mesh_h_contact", "3e-4", "-ts_max_time", "0.004", "-quiet"]
-run(MX + ["-rom", "-rom_modes", "150", "-monitor_csv", "rom_contact_mx.csv"])
-run(MX + ["-monitor_csv", "rom_contact_mx_full.csv"])
-r, f = read_csv("rom_contact_mx.csv"), read_csv("rom_contact_mx_full.csv")
+# the printer itself: the Maxwell rubber, the hub on its spring and drive
+MX = ["-options_file", f"{SOURCE}/jobs/printer_roller.yaml", "-mesh_h", "0.0012", "-mesh_h_contact", "3e-4", "-ts_max_time", "0.006", "-quiet"]
+run(MX + ["-rom", "-rom_modes", "150", "-monitor_csv", "rom_contact_axle.csv"])
+run(MX + ["-monitor_csv", "rom_contact_axle_full.csv"])
+r, f = read_csv("rom_contact_axle.csv"), read_csv("rom_contact_axle_full.csv")
 diss = np.cumsum(r["contact_dissipation"] + r["damping_dissipation"] + r["viscous_dissipation"])
 bal = r["energy"] - r["energy"][0] - (r["shaft_work"] + r["sheet_work"] - r["friction_work"] - diss)
 defect = float(np.abs(bal).max() / np.abs(r["energy"]).max())
-c.check(defect < 1e-11, f"Maxwell: the reduced balance with the branches and the residual closes to {defect:.1e} of its largest energy (< 1e-11)")
+c.check(defect < 1e-11, f"axle + Maxwell: the reduced balance with the branches, the hub and the residual closes to {defect:.1e} of its largest energy (< 1e-11)")
 w = f["t"] >= 0.001
-for col in ("contact_force", "friction_force"):
+for col, tol in (("contact_force", 0.01), ("friction_force", 0.02), ("axle_y", 0.02), ("hub_rate", 0.005)):
     a, b = f[col][w].mean(), r[col][w].mean()
-    c.check(abs(b - a) <= 0.03 * abs(a), f"Maxwell: mean {col} over t >= 1 ms: reduced {b:.5g}, full {a:.5g} ({100 * (b - a) / abs(a):+.2f} %, bound 3 %)")
+    c.check(abs(b - a) <= tol * abs(a), f"axle + Maxwell: mean {col} over t >= 1 ms: reduced {b:.6g}, full {a:.6g} ({100 * (b - a) / abs(a):+.2f} %, bound {100 * tol:g} %)")
 c.close()

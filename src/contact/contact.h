@@ -34,8 +34,8 @@ PETSC_INTERN PetscBool      RollerContactHasFriction(RollerContact);
 /* -rom: the displacement becomes V q (V dense, N x nq, the full model's layout; q a Vec of the reduced layout): the
    Gamma_C rows of V taken before the operators are replaced (contact_reduced.c) */
 PETSC_INTERN PetscErrorCode RollerContactSetBasis(Roller, RollerContact, Mat, Vec);
-/* -rom_residual: MacNeal's static residual flexibility of the Gamma_C dofs, with K's factorization (a KSP on the
-   full layout) and V^T K V's diagonal; after RollerContactSetBasis */
+/* -rom_residual: MacNeal's static residual flexibility of the Gamma_C dofs, with a stiffness's factorization (a KSP on
+   the full layout) and its reduced V^T K V (dense nq x nq, column-major, every rank); after RollerContactSetBasis */
 PETSC_INTERN PetscErrorCode RollerContactSetResidualFlexibility(Roller, RollerContact, KSP, const PetscReal[]);
 PETSC_INTERN PetscErrorCode RollerContactResidualEnergy(RollerContact, Vec, Vec, PetscReal *);        /* E^k += its static energy (cur, prev) */
 PETSC_INTERN PetscErrorCode RollerContactResidualDissipation(RollerContact, Vec, Vec, PetscReal *);   /* D^k += its dissipation (cur, prev2) */

@@ -29,7 +29,7 @@ static PetscErrorCode GatherFull(RollerContact c, Vec v, PetscReal out[])
 
 /* R's columns: K^{-1} of the unit vectors of the Gamma_C dofs in blocks (KSPMatSolve on K's factorization), their
    Gamma_C rows gathered on every rank (the full layout's scatter), minus Phi K_r^{-1} Phi^T; then symmetrized. */
-PetscErrorCode RollerContactSetResidualFlexibility(Roller ctx, RollerContact c, KSP kinv, const PetscReal lambda[])
+PetscErrorCode RollerContactSetResidualFlexibility(Roller ctx, RollerContact c, KSP kinv, const PetscReal Kr[])
 {
   const PetscInt n = 2 * c->nodes.nc, nq = c->nodes.nq, nb = 64;
   PetscInt       nlocal, rstart, rend;
@@ -70,17 +70,21 @@ PetscErrorCode RollerContactSetResidualFlexibility(Roller ctx, RollerContact c, 
     PetscCall(MatDestroy(&B));
     PetscCall(MatDestroy(&X));
   }
-  { /* R -= Phi K_r^{-1} Phi^T: phi row-major (n x nq) is the column-major nq x n P; R -= P^T (K_r^{-1} P) */
-    Mat                P, Q, O;
-    PetscScalar       *q;
+  { /* R -= Phi K_r^{-1} Phi^T: phi row-major (n x nq) is the column-major nq x n P; R -= P^T (K_r^{-1} P), K_r = V^T K V of
+       kinv's K (dense nq x nq: diagonal for the relaxed K of the basis' Ritz step) */
+    Mat                P, Q, O, F;
+    PetscScalar       *f;
     const PetscScalar *o;
 
     PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, nq, n, c->nodes.phi, &P));
-    PetscCall(MatDuplicate(P, MAT_COPY_VALUES, &Q));
-    PetscCall(MatDenseGetArray(Q, &q));
-    for (PetscInt j = 0; j < n; ++j)
-      for (PetscInt k = 0; k < nq; ++k) q[k + (size_t)j * nq] /= lambda[k];
-    PetscCall(MatDenseRestoreArray(Q, &q));
+    PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, nq, nq, NULL, &F));
+    PetscCall(MatDenseGetArrayWrite(F, &f));
+    for (size_t k = 0; k < (size_t)nq * nq; ++k) f[k] = Kr[k];
+    PetscCall(MatDenseRestoreArrayWrite(F, &f));
+    PetscCall(MatLUFactor(F, NULL, NULL, NULL));
+    PetscCall(MatDuplicate(P, MAT_DO_NOT_COPY_VALUES, &Q));
+    PetscCall(MatMatSolve(F, P, Q));
+    PetscCall(MatDestroy(&F));
     PetscCall(MatTransposeMatMult(P, Q, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &O));
     PetscCall(MatDenseGetArrayRead(O, &o));
     for (size_t k = 0; k < (size_t)n * n; ++k) R[k] -= PetscRealPart(o[k]);

@@ -120,8 +120,9 @@ void RollerAxleProject(Roller ctx, PetscReal t, const PetscReal D[9], PetscReal 
     }
 }
 
-/* The rigid fields at the free nodes: r_1 = e1, r_2 = e2, r_3 = J x = (-x2, x1), from the nodal positions. */
-static PetscErrorCode RigidFields(Roller ctx, Vec r[3])
+/* The rigid fields at the free nodes: r_1 = e1, r_2 = e2, r_3 = J x = (-x2, x1), from the nodal positions (also the
+   reduced model's constraint modes of the hub, rom/rom_basis.c). */
+PetscErrorCode RollerRigidFields(Roller ctx, Vec r[3])
 {
   const PetscScalar *x;
   PetscScalar       *a[3];
@@ -237,7 +238,7 @@ PetscErrorCode RollerAxleSetUp(Roller ctx)
   PetscCall(PetscNew(&hub));
   ctx->axle.hub = hub;
   c             = &hub->c;
-  PetscCall(RigidFields(ctx, r));
+  PetscCall(RollerRigidFields(ctx, r));
   PetscCall(RollerAssembleLoad(ctx, f0_translation_x, &L[0]));
   PetscCall(RollerAssembleLoad(ctx, f0_translation_y, &L[1]));
   PetscCall(VecDuplicate(ctx->ops.L_euler, &L[2]));

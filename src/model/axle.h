@@ -58,7 +58,8 @@ struct _n_RollerBorder {
 
 /* axle.c */
 PETSC_INTERN PetscErrorCode RollerAxleSetFromOptions(Roller);
-PETSC_INTERN PetscErrorCode RollerAxleSetUp(Roller); /* after the operators M, K */
+PETSC_INTERN PetscErrorCode RollerAxleSetUp(Roller);           /* after the operators M, K */
+PETSC_INTERN PetscErrorCode RollerRigidFields(Roller, Vec[3]); /* e1, e2, J x on the free nodes (new Vecs) */
 PETSC_INTERN PetscErrorCode RollerAxleDestroy(Roller);
 PETSC_INTERN void           RollerAxleFrame(Roller, PetscReal, PetscReal[2]);                       /* n(theta(t)) */
 PETSC_INTERN void           RollerAxleSprings(Roller, PetscReal[9]);                                /* the springs on q */

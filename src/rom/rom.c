@@ -7,6 +7,7 @@
 PetscErrorCode RollerRomSetFromOptions(Roller ctx)
 {
   PetscBool on = PETSC_FALSE, residual = PETSC_TRUE;
+  PetscReal resfreq                   = 0.0;
   char      input[PETSC_MAX_PATH_LEN] = "", output[PETSC_MAX_PATH_LEN] = "";
   PetscInt  modes  = 0;
   PetscReal cutoff = 0.0;
@@ -17,19 +18,21 @@ PetscErrorCode RollerRomSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsInt("-rom_modes", "Modes kept (0: those below -rom_cutoff)", NULL, modes, &modes, NULL));
   PetscCall(PetscOptionsReal("-rom_cutoff", "Cutoff frequency of the kept modes, cycles per unit time (0: the default, the highest frequency the time step resolves to -ts_phase_error, -ts_view)", NULL, cutoff, &cutoff, NULL));
   PetscCall(PetscOptionsBool("-rom_residual", "With contact: MacNeal's static residual flexibility of the modes above the cutoff at Gamma_C (false: the modes alone, whose patch is too stiff)", NULL, residual, &residual, NULL));
+  PetscCall(PetscOptionsReal("-rom_residual_frequency", "With -rubber maxwell: the residual flexibility is the rubber's storage stiffness at this frequency, cycles per unit time (0: the relaxed rubber's)", NULL, resfreq, &resfreq, NULL));
   PetscCall(PetscOptionsString("-rom_output", "Save the reduced basis (and the residual flexibility) to this HDF5 file, for -rom_input of runs on the same mesh and rubber", NULL, output, output, sizeof(output), NULL));
   PetscCall(PetscOptionsString("-rom_input", "Read the reduced basis from this -rom_output file instead of computing it (refused if made for another mesh, rubber, cutoff or contact)", NULL, input, input, sizeof(input), NULL));
   PetscOptionsEnd();
   RollerCheckOption(ctx->comm, "-rom_modes", (PetscReal)modes, modes >= 0, ">= 0 (0: from -rom_cutoff)");
   RollerCheckOption(ctx->comm, "-rom_cutoff", cutoff, cutoff >= 0, ">= 0 (0: the default)");
+  RollerCheckOption(ctx->comm, "-rom_residual_frequency", resfreq, resfreq >= 0, ">= 0 (0: the relaxed rubber)");
   if (!on) PetscFunctionReturn(0);
   PetscCheck(!ctx->init.mms, ctx->comm, PETSC_ERR_ARG_INCOMP, "-rom steps the roller's own loads: -mms is the full model's");
-  PetscCheck(!ctx->axle.on, ctx->comm, PETSC_ERR_SUP, "-rom with -axle: the hub's unknowns are not in the reduced model (clamped at the shaft)");
   PetscCheck(!ctx->ck.restart[0], ctx->comm, PETSC_ERR_SUP, "-rom with -restart %s: a checkpoint holds the full model's nodal state", ctx->ck.restart);
   PetscCall(PetscNew(&ctx->rom));
-  ctx->rom->modes_req = modes;
-  ctx->rom->cutoff    = cutoff;
-  ctx->rom->residual  = residual;
+  ctx->rom->modes_req          = modes;
+  ctx->rom->cutoff             = cutoff;
+  ctx->rom->residual           = residual;
+  ctx->rom->residual_frequency = resfreq;
   PetscCall(PetscStrncpy(ctx->rom->input, input, sizeof(input)));
   PetscCall(PetscStrncpy(ctx->rom->output, output, sizeof(output)));
   PetscFunctionReturn(0);
@@ -62,13 +65,60 @@ static PetscErrorCode View(Roller ctx, RollerRom rom)
 
   PetscFunctionBeginUser;
   PetscCall(MatGetSize(rom->V, &N, NULL));
-  PetscCall(PetscPrintf(ctx->comm, "roller: -rom: %" PetscInt_FMT " modes of the roller clamped at the shaft (below %g cycles per unit time%s) + 2 static load responses = %" PetscInt_FMT " coordinates for %" PetscInt_FMT " unknowns; highest kept w %g (w dt %.3g); basis round-off %.1e; set-up %.2f s (modes%s%s) + %.2f s (reduced operators) + %.2f s (%s)\n",
+  PetscCall(PetscPrintf(ctx->comm, "roller: -rom: %" PetscInt_FMT " modes of the roller clamped at the shaft (below %g cycles per unit time%s) + 2 static load responses%s = %" PetscInt_FMT " coordinates for %" PetscInt_FMT " unknowns; highest kept w %g (w dt %.3g); basis round-off %.1e; set-up %.2f s (modes%s%s) + %.2f s (reduced operators) + %.2f s (%s)\n",
                         rom->nmodes, (double)(rom->w_cut / (2 * PETSC_PI)),
                         rom->modes_req    ? ", -rom_modes"
                         : rom->cutoff > 0 ? ", -rom_cutoff"
                                           : ": the default, where the step's relative frequency error reaches -ts_phase_error",
-                        rom->nq, N, rom->nmodes ? (double)PetscSqrtReal(rom->lambda[rom->nmodes - 1] / ctx->material.density) : 0.0, rom->nmodes ? (double)(PetscSqrtReal(rom->lambda[rom->nmodes - 1] / ctx->material.density) * ctx->ts.dt) : 0.0,
-                        (double)rom->offdiag, rom->t_modes, rom->input[0] ? " read from -rom_input " : "", rom->input, rom->t_reduce, rom->t_residual, ctx->contact && rom->residual ? "with contact: MacNeal's static residual flexibility of the modes above the cutoff at the Gamma_C dofs, -rom_residual" : "no residual flexibility"));
+                        ctx->axle.on ? " + 3 constraint modes of the hub (-axle: its unknowns kept)" : "", rom->nq, N, rom->nmodes ? (double)PetscSqrtReal(rom->lambda[rom->nmodes - 1] / ctx->material.density) : 0.0,
+                        rom->nmodes ? (double)(PetscSqrtReal(rom->lambda[rom->nmodes - 1] / ctx->material.density) * ctx->ts.dt) : 0.0, (double)rom->offdiag, rom->t_modes, rom->input[0] ? " read from -rom_input " : "", rom->input, rom->t_reduce, rom->t_residual,
+                        ctx->contact && rom->residual ? "with contact: MacNeal's static residual flexibility of the modes above the cutoff at the Gamma_C dofs, -rom_residual" : "no residual flexibility"));
+  PetscFunctionReturn(0);
+}
+
+/* MacNeal's residual flexibility at Gamma_C from K's factorization (the eigensolver's, shift 0) and V^T K V; with the
+   Maxwell rubber and -rom_residual_frequency F, of the storage stiffness at F, K + c K_d with
+   c = sum_i g_i (w tau_i)^2 / (1 + (w tau_i)^2), w = 2 pi F (its own Cholesky factorization). */
+static PetscErrorCode Residual(Roller ctx, RollerRom rom, Mat Kd)
+{
+  const PetscInt nq = rom->nq;
+  PetscReal     *Kr, c = 0.0;
+  ST             st;
+  KSP            ksp;
+
+  PetscFunctionBeginUser;
+  PetscCall(EPSGetST(rom->eps, &st));
+  PetscCall(STGetKSP(st, &ksp));
+  PetscCall(PetscCalloc1((size_t)nq * nq, &Kr));
+  for (PetscInt i = 0; i < nq; ++i) Kr[i + (size_t)i * nq] = rom->lambda[i];
+  for (PetscInt i = 0; Kd && i < ctx->material.nbranch; ++i) {
+    const PetscReal wt = 2 * PETSC_PI * rom->residual_frequency * ctx->material.tau[i];
+
+    c += ctx->material.g[i] * wt * wt / (1.0 + wt * wt);
+  }
+  if (c > 0) {
+    Mat        K, Keff, KdV;
+    KSP        kk;
+    PetscReal *g;
+
+    PetscCall(EPSGetOperators(rom->eps, &K, NULL));
+    PetscCall(MatDuplicate(K, MAT_COPY_VALUES, &Keff));
+    PetscCall(MatAXPY(Keff, c, Kd, SAME_NONZERO_PATTERN)); /* K_d has K's pattern */
+    PetscCall(KSPCreate(ctx->comm, &kk));
+    PetscCall(KSPSetOperators(kk, Keff, Keff));
+    PetscCall(RollerDirectSolverDefaults(kk, PCCHOLESKY));
+    PetscCall(KSPSetUp(kk));
+    PetscCall(MatMatMult(Kd, rom->V, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &KdV));
+    PetscCall(PetscMalloc1((size_t)nq * nq, &g));
+    PetscCall(RollerRomGram(rom->V, KdV, g));
+    for (size_t k = 0; k < (size_t)nq * nq; ++k) Kr[k] += c * g[k];
+    PetscCall(RollerContactSetResidualFlexibility(ctx, ctx->contact, kk, Kr));
+    PetscCall(PetscFree(g));
+    PetscCall(MatDestroy(&KdV));
+    PetscCall(KSPDestroy(&kk));
+    PetscCall(MatDestroy(&Keff));
+  } else PetscCall(RollerContactSetResidualFlexibility(ctx, ctx->contact, ksp, Kr));
+  PetscCall(PetscFree(Kr));
   PetscFunctionReturn(0);
 }
 
@@ -76,6 +126,7 @@ PetscErrorCode RollerRomSetUp(Roller ctx)
 {
   RollerRom      rom = ctx->rom;
   PetscLogDouble t0, t1, t2, t3;
+  Mat            Kd = NULL;
 
   PetscFunctionBeginUser;
   PetscCheck(!ctx->ops.G, ctx->comm, PETSC_ERR_ARG_INCOMP, "-rom: the centred -coriolis_velocity puts the Coriolis matrix in the step matrix; the reduced model takes it explicitly (backward or extrapolated)");
@@ -83,6 +134,7 @@ PetscErrorCode RollerRomSetUp(Roller ctx)
   if (rom->cutoff > 0) rom->w_cut = 2 * PETSC_PI * rom->cutoff;
   else PetscCall(DefaultCutoff(ctx, &rom->w_cut));
   PetscCheck(!ctx->eig.on || ctx->material.rubber != ROLLER_RUBBER_MAXWELL, ctx->comm, PETSC_ERR_SUP, "-modes with -rom and -rubber maxwell: the branches' augmented eigenproblem is the full model's (run -modes without -rom)");
+  PetscCheck(!ctx->eig.on || !ctx->axle.on, ctx->comm, PETSC_ERR_SUP, "-modes with -rom and -axle: the hub's bordered eigenproblem is the full model's (run -modes without -rom)");
   if (ctx->contact) PetscCall(RollerContactCheckReduced(ctx, ctx->contact));
   PetscCall(PetscTime(&t0));
   if (rom->input[0]) PetscCall(RollerRomLoad(ctx, rom, rom->input)); /* the basis of an earlier run */
@@ -94,17 +146,16 @@ PetscErrorCode RollerRomSetUp(Roller ctx)
     PetscCall(RollerContactResidualFunctionals(ctx->contact, ctx->ops.w_R, ctx->ops.w_alpha));
     PetscCall(RollerContactResidualLevelsBegin(ctx->contact, lev));
   }
+  if (ctx->ops.Kd) { /* the full K_d, for the residual's storage stiffness (the reduction replaces ops.Kd) */
+    Kd = ctx->ops.Kd;
+    PetscCall(PetscObjectReference((PetscObject)Kd));
+  }
   PetscCall(RollerRomReduce(ctx, rom));
   if (ctx->contact) PetscCall(RollerContactSetBasis(ctx, ctx->contact, rom->V, ctx->state.cur)); /* u_C = Phi q */
   PetscCall(PetscTime(&t2));
   if (ctx->contact && rom->residual && rom->input[0]) PetscCall(RollerRomLoadResidual(ctx, rom, rom->input));
-  else if (ctx->contact && rom->residual) { /* + R f_C, R from K's factorization (the eigensolver's shift 0) */ ST st;
-    KSP                                                                                                            ksp;
-
-    PetscCall(EPSGetST(rom->eps, &st));
-    PetscCall(STGetKSP(st, &ksp));
-    PetscCall(RollerContactSetResidualFlexibility(ctx, ctx->contact, ksp, rom->lambda));
-  }
+  else if (ctx->contact && rom->residual) PetscCall(Residual(ctx, rom, Kd));
+  PetscCall(MatDestroy(&Kd));
   if (ctx->contact && rom->residual) { /* the initial levels' Gamma_C remainder, with its force */
     const Vec lev[3] = {ctx->state.cur, ctx->state.prev, ctx->state.prev2};
 

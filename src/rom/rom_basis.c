@@ -1,10 +1,12 @@
 /* The reduced basis (docs/performance.md "Reduced-order transient"): the modes of the roller clamped at the shaft,
    K phi = w^2 M phi (free dofs: Gamma_D removed), below the cutoff w_cut (or the -rom_modes lowest), by SLEPc's
    Krylov-Schur with shift-and-invert about 0 (one Cholesky factorization of K, the ranks the run is given); then the
-   static responses to the rigid-body loads, K s = L_centrifugal and K s = L_euler, M-orthogonalized against the modes
-   (which makes them K-orthogonal to the modes too: phi^T K s = phi^T L = w^2 phi^T M s) and against each other, and
-   rotated to diagonalize their own 2 x 2 block of K. V = [phi, s] is M-orthonormal and V^T K V diagonal. */
+   static responses to the rigid-body loads, K s = L_centrifugal and K s = L_euler, and with -axle the hub's three
+   constraint modes (the rigid fields), M-orthogonalized against the modes (which makes them K-orthogonal to the modes
+   too: phi^T K s = w^2 phi^T M s) and against each other, and rotated to diagonalize their own block of K.
+   V = [phi, s] is M-orthonormal and V^T K V diagonal. */
 #include "rom/rom.h"
+#include "model/axle.h"
 
 /* The modes: nev from -rom_modes, or from the cutoff by the two-dimensional Weyl law N(w) ~ w^2 fitted to a first
    solve, repeated until the last converged eigenvalue passes w_cut^2. */
@@ -140,52 +142,101 @@ PetscErrorCode RollerRomGram(Mat A, Mat B, PetscReal C[])
   PetscFunctionReturn(0);
 }
 
-/* The static responses in columns nm, nm + 1 of V (the factorization of K is the eigensolver's, shift 0), made
-   M-orthonormal against everything before them, and rotated so that their 2 x 2 block of K is diagonal. */
+/* The eigenvectors of a small symmetric k x k matrix A (column-major, overwritten) into Q by cyclic Jacobi rotations
+   (k <= 5 here: no LAPACK call needed). */
+static void SymmetricEigen(PetscInt k, PetscReal A[], PetscReal Q[])
+{
+  for (PetscInt i = 0; i < k * k; ++i) Q[i] = (i % (k + 1) == 0) ? 1.0 : 0.0;
+  for (PetscInt sweep = 0; sweep < 50; ++sweep) {
+    PetscReal off = 0.0, diag = 0.0;
+
+    for (PetscInt p = 0; p < k; ++p)
+      for (PetscInt q = 0; q < k; ++q) {
+        if (p == q) diag += A[p + p * k] * A[p + p * k];
+        else off += A[p + q * k] * A[p + q * k];
+      }
+    if (off <= 1e-32 * diag) break;
+    for (PetscInt p = 0; p < k; ++p)
+      for (PetscInt q = p + 1; q < k; ++q) {
+        const PetscReal apq = A[p + q * k], th = 0.5 * PetscAtan2Real(2.0 * apq, A[q + q * k] - A[p + p * k]), c = PetscCosReal(th), sn = PetscSinReal(th);
+
+        if (apq == 0.0) continue;
+        for (PetscInt r = 0; r < k; ++r) { /* A <- A J (columns p, q) */
+          const PetscReal arp = A[r + p * k], arq = A[r + q * k];
+
+          A[r + p * k] = c * arp - sn * arq;
+          A[r + q * k] = sn * arp + c * arq;
+        }
+        for (PetscInt r = 0; r < k; ++r) { /* A <- J^T A (rows p, q) */
+          const PetscReal apr = A[p + r * k], aqr = A[q + r * k];
+
+          A[p + r * k] = c * apr - sn * aqr;
+          A[q + r * k] = sn * apr + c * aqr;
+        }
+        for (PetscInt r = 0; r < k; ++r) { /* Q <- Q J */
+          const PetscReal qrp = Q[r + p * k], qrq = Q[r + q * k];
+
+          Q[r + p * k] = c * qrp - sn * qrq;
+          Q[r + q * k] = sn * qrp + c * qrq;
+        }
+      }
+  }
+}
+
+/* The static vectors in columns nm .. nq-1 of V: the responses to the rigid-body loads K^{-1} L_centrifugal,
+   K^{-1} L_euler (the factorization of K is the eigensolver's, shift 0) and, with -axle, the hub's constraint modes
+   (the body's static response to a unit hub motion, K_aug [r_f; e_j] = 0: the rigid fields r_f themselves); made
+   M-orthonormal against everything before them (which makes them K-orthogonal to the exact modes too:
+   phi^T K s = w^2 phi^T M s), then rotated by the eigenvectors of their own k x k block of K (a Ritz step). */
 static PetscErrorCode StaticResponses(Roller ctx, RollerRom rom, EPS eps, Vec w)
 {
-  const PetscInt nm   = rom->nmodes;
-  Vec            L[2] = {ctx->ops.L_centrifugal, ctx->ops.L_euler}, s[2], Ks[2], col;
+  const PetscInt nm = rom->nmodes, k = rom->nq - nm;
+  Vec            L[2] = {ctx->ops.L_centrifugal, ctx->ops.L_euler}, s[5], Ks, col;
   ST             st;
   KSP            ksp;
-  PetscScalar    k11, k12, k22;
-  PetscReal      phi, c, sn;
+  PetscScalar    d;
+  PetscReal     *A, *Q;
 
   PetscFunctionBeginUser;
   PetscCall(EPSGetST(eps, &st));
   PetscCall(STGetKSP(st, &ksp));
-  for (PetscInt j = 0; j < 2; ++j) {
-    PetscCall(VecDuplicate(w, &s[j]));
-    PetscCall(VecDuplicate(w, &Ks[j]));
-    PetscCall(KSPSolve(ksp, L[j], s[j]));
-    PetscCall(MOrthogonalize(ctx, rom->V, nm, s[j], w));
-    if (j == 1) { /* against s[0] */
-      PetscScalar d;
-
-      PetscCall(MatMult(ctx->ops.M, s[0], w));
-      PetscCall(VecDot(s[1], w, &d));
-      PetscCall(VecAXPY(s[1], -d, s[0]));
+  if (k > 2) PetscCall(RollerRigidFields(ctx, s + 2)); /* -axle */
+  for (PetscInt j = 0; j < k; ++j) {
+    if (j < 2) {
+      PetscCall(VecDuplicate(w, &s[j]));
+      PetscCall(KSPSolve(ksp, L[j], s[j]));
+    }
+    for (PetscInt pass = 0; pass < 2; ++pass) {
+      PetscCall(MOrthogonalize(ctx, rom->V, nm, s[j], w));
+      for (PetscInt i = 0; i < j; ++i) { /* against the earlier static vectors */
+        PetscCall(MatMult(ctx->ops.M, s[i], w));
+        PetscCall(VecDot(s[j], w, &d));
+        PetscCall(VecAXPY(s[j], -d, s[i]));
+      }
     }
     PetscCall(MNormalize(ctx->ops.M, s[j], w));
   }
-  PetscCall(MatMult(ctx->ops.K, s[0], Ks[0]));
-  PetscCall(MatMult(ctx->ops.K, s[1], Ks[1]));
-  PetscCall(VecDot(s[0], Ks[0], &k11));
-  PetscCall(VecDot(s[0], Ks[1], &k12));
-  PetscCall(VecDot(s[1], Ks[1], &k22));
-  phi = 0.5 * PetscAtan2Real(2.0 * PetscRealPart(k12), PetscRealPart(k11 - k22)); /* the Jacobi rotation of the 2 x 2 block */
-  c   = PetscCosReal(phi);
-  sn  = PetscSinReal(phi);
-  PetscCall(VecCopy(s[0], w));
-  PetscCall(VecAXPBY(s[0], sn, c, s[1])); /* c s0 + sn s1 */
-  PetscCall(VecAXPBY(s[1], -sn, c, w));   /* c s1 - sn s0 */
-  for (PetscInt j = 0; j < 2; ++j) {
-    PetscCall(MatDenseGetColumnVecWrite(rom->V, nm + j, &col));
-    PetscCall(VecCopy(s[j], col));
-    PetscCall(MatDenseRestoreColumnVecWrite(rom->V, nm + j, &col));
-    PetscCall(VecDestroy(&s[j]));
-    PetscCall(VecDestroy(&Ks[j]));
+  PetscCall(PetscMalloc2(k * k, &A, k * k, &Q));
+  PetscCall(VecDuplicate(w, &Ks));
+  for (PetscInt j = 0; j < k; ++j) { /* the k x k block S^T K S */
+    PetscCall(MatMult(ctx->ops.K, s[j], Ks));
+    for (PetscInt i = 0; i < k; ++i) {
+      PetscCall(VecDot(s[i], Ks, &d));
+      A[i + j * k] = PetscRealPart(d);
+    }
   }
+  for (PetscInt j = 0; j < k; ++j)
+    for (PetscInt i = 0; i < j; ++i) A[i + j * k] = A[j + i * k] = 0.5 * (A[i + j * k] + A[j + i * k]);
+  SymmetricEigen(k, A, Q);
+  for (PetscInt j = 0; j < k; ++j) { /* column nm + j = sum_i s_i Q_ij */
+    PetscCall(MatDenseGetColumnVecWrite(rom->V, nm + j, &col));
+    PetscCall(VecZeroEntries(col));
+    for (PetscInt i = 0; i < k; ++i) PetscCall(VecAXPY(col, Q[i + j * k], s[i]));
+    PetscCall(MatDenseRestoreColumnVecWrite(rom->V, nm + j, &col));
+  }
+  for (PetscInt j = 0; j < k; ++j) PetscCall(VecDestroy(&s[j]));
+  PetscCall(VecDestroy(&Ks));
+  PetscCall(PetscFree2(A, Q));
   PetscFunctionReturn(0);
 }
 
@@ -228,7 +279,7 @@ PetscErrorCode RollerRomBasis(Roller ctx, RollerRom rom)
   PetscFunctionBeginUser;
   PetscCall(ModesSolve(ctx, rom, &eps, &nkeep));
   rom->nmodes = nkeep;
-  rom->nq     = nkeep + 2;
+  rom->nq     = nkeep + 2 + (ctx->axle.on ? 3 : 0); /* + the load responses, + the hub's constraint modes */
   PetscCall(VecGetLocalSize(ctx->state.cur, &nloc));
   PetscCall(VecGetSize(ctx->state.cur, &N));
   PetscCall(MatCreateDense(ctx->comm, nloc, PETSC_DECIDE, N, rom->nq, NULL, &rom->V));

@@ -6,6 +6,7 @@
    the driver, the diagnostics and the CSV then step and report the reduced model unchanged; its step matrix
    c_M I + c_K K_r is diagonal (model/solver.c). */
 #include "rom/rom.h"
+#include "model/axle.h"
 
 /* A diagonal n x n AIJ matrix with the values d[] (every rank holds all of d). */
 static PetscErrorCode Diagonal(MPI_Comm comm, PetscInt n, const PetscReal d[], Mat *A)
@@ -155,6 +156,19 @@ PetscErrorCode RollerRomReduce(Roller ctx, RollerRom rom)
   PetscCall(Replace(ctx, rom, tmpl, PROJECT_PLAIN, &ctx->ops.L_centrifugal));
   PetscCall(Replace(ctx, rom, tmpl, PROJECT_PLAIN, &ctx->ops.w_R));
   PetscCall(Replace(ctx, rom, tmpl, PROJECT_PLAIN, &ctx->ops.w_alpha));
+  if (ctx->axle.on) { /* the hub's couplings: forces V^T c; the rigid fields r_f (in span V: the constraint modes) by
+                         their coordinates V^T M r_f, so that r_f . K_d z = RF_r . K_d,r zeta */
+    RollerHubCoupling *hc = &ctx->axle.hub->c;
+
+    for (PetscInt j = 0; j < 3; ++j) {
+      PetscCall(Replace(ctx, rom, tmpl, PROJECT_PLAIN, &hc->CM[j]));
+      PetscCall(Replace(ctx, rom, tmpl, PROJECT_PLAIN, &hc->CK[j]));
+      PetscCall(Replace(ctx, rom, tmpl, PROJECT_PLAIN, &hc->RCM[j]));
+      if (hc->CD[j]) PetscCall(Replace(ctx, rom, tmpl, PROJECT_PLAIN, &hc->CD[j]));
+      if (hc->RF[j]) PetscCall(Replace(ctx, rom, tmpl, PROJECT_MASS, &hc->RF[j]));
+    }
+    PetscCall(Replace(ctx, rom, tmpl, PROJECT_PLAIN, &hc->cx));
+  }
   ctx->ops.M_full = ctx->ops.M;
   PetscCall(MatDestroy(&ctx->ops.K));
   ctx->ops.M   = M;
