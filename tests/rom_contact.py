@@ -20,7 +20,8 @@ branches reduced by Galerkin (K_d,r = V^T K_d V, dense; the step matrix factored
 its constraint modes (the rigid fields) in the basis: the balance with the branches, the hub and the residual to
 round-off; against the full model the mean contact force within 1 %, the friction force within 2 %, the hub's
 vertical position within 2 % and its rate within 0.5 % (measured +0.04 %, +0.63 %, +0.56 %, +0.06 %; the full model
-itself moves by 0.3 % in friction between 1 and 2 ranks)."""
+itself moves by 0.3 % in friction between 1 and 2 ranks); the surface's lab-frame orders 0, 1, 2 (-monitor_surface_csv,
+the sound's source) within 3 %."""
 import numpy as np
 
 from rollertest import SOURCE, Checker, read_csv, run
@@ -61,8 +62,8 @@ c.check(r["kkt_residual"].max() < 1e-9, f"KKT residual {r['kkt_residual'].max():
 
 # the printer itself: the Maxwell rubber, the hub on its spring and drive
 MX = ["-options_file", f"{SOURCE}/jobs/printer_roller.yaml", "-mesh_h", "0.0012", "-mesh_h_contact", "3e-4", "-ts_max_time", "0.006", "-quiet"]
-run(MX + ["-rom", "-rom_modes", "150", "-monitor_csv", "rom_contact_axle.csv"])
-run(MX + ["-monitor_csv", "rom_contact_axle_full.csv"])
+run(MX + ["-rom", "-rom_modes", "150", "-monitor_csv", "rom_contact_axle.csv", "-monitor_surface_csv", "rom_contact_axle_surface.csv"])
+run(MX + ["-monitor_csv", "rom_contact_axle_full.csv", "-monitor_surface_csv", "rom_contact_axle_full_surface.csv"])
 r, f = read_csv("rom_contact_axle.csv"), read_csv("rom_contact_axle_full.csv")
 diss = np.cumsum(r["contact_dissipation"] + r["damping_dissipation"] + r["viscous_dissipation"])
 bal = r["energy"] - r["energy"][0] - (r["shaft_work"] + r["sheet_work"] - r["friction_work"] - diss)
@@ -72,4 +73,11 @@ w = f["t"] >= 0.001
 for col, tol in (("contact_force", 0.01), ("friction_force", 0.02), ("axle_y", 0.02), ("hub_rate", 0.005)):
     a, b = f[col][w].mean(), r[col][w].mean()
     c.check(abs(b - a) <= tol * abs(a), f"axle + Maxwell: mean {col} over t >= 1 ms: reduced {b:.6g}, full {a:.6g} ({100 * (b - a) / abs(a):+.2f} %, bound {100 * tol:g} %)")
+# the surface's lab-frame orders (the sound's source, -monitor_surface_csv): the reduced run adds the functionals on the
+# Gamma_C residual
+r, f = read_csv("rom_contact_axle_surface.csv"), read_csv("rom_contact_axle_full_surface.csv")
+w = f["t"] >= 0.001
+for col in ("ur0", "ur1s", "ur2c"):
+    a, b = f[col][w].mean(), r[col][w].mean()
+    c.check(abs(b - a) <= 0.03 * abs(a), f"axle + Maxwell: the surface's {col} over t >= 1 ms: reduced {b:.5g}, full {a:.5g} m ({100 * (b - a) / abs(a):+.2f} %, bound 3 %)")
 c.close()

@@ -44,9 +44,11 @@ PETSC_INTERN PetscInt       RollerContactNodeCount(RollerContact);              
 PETSC_INTERN PetscErrorCode RollerContactResidualLevelsBegin(RollerContact, const Vec[3]);            /* the full levels' u_C, before the reduction */
 PETSC_INTERN PetscErrorCode RollerContactResidualLevelsEnd(RollerContact, const Vec[3]);              /* the reduced levels' r = u_C - Phi q, f = R^-1 r */
 PETSC_INTERN PetscErrorCode RollerContactResidualFunctionals(RollerContact, Vec, Vec);
-PETSC_INTERN PetscErrorCode RollerContactResidualAddFull(RollerContact, Vec, Vec); /* x (full layout) += E r of the level q */ /* keeps w_R, w_alpha's Gamma_C rows (full layout) */
-PETSC_INTERN void           RollerContactResidualDots(RollerContact, Vec, PetscReal *, PetscReal *);                           /* += w_R . r, w_alpha . r of a level */
-PETSC_INTERN PetscErrorCode RollerContactCheckReduced(Roller, RollerContact);                                                  /* -contact_solver condensed, no -contact_check */
+PETSC_INTERN PetscErrorCode RollerContactResidualAddFull(RollerContact, Vec, Vec);                                                         /* x (full layout) += E r of the level q */
+PETSC_INTERN PetscErrorCode RollerContactResidualRows(RollerContact, Vec, PetscReal **);                                                   /* a functional's Gamma_C rows */
+PETSC_INTERN PetscErrorCode RollerContactResidualDot(RollerContact, Vec, const PetscReal[], PetscReal *); /* += rows . r of the level q */ /* keeps w_R, w_alpha's Gamma_C rows (full layout) */
+PETSC_INTERN void           RollerContactResidualDots(RollerContact, Vec, PetscReal *, PetscReal *);                                       /* += w_R . r, w_alpha . r of a level */
+PETSC_INTERN PetscErrorCode RollerContactCheckReduced(Roller, RollerContact);                                                              /* -contact_solver condensed, no -contact_check */
 /* -sheet_mass (contact_sheet.c): the sheet moves by its own forces; its part of E^k, its speed, its state for the
    checkpoint (4 reals: X^k, X^{k-1}, X^{k-2} and its case; NULL for the kinematic sheet) */
 PETSC_INTERN PetscBool  RollerContactSheetMoves(RollerContact);

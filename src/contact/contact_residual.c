@@ -383,6 +383,29 @@ PetscErrorCode RollerContactResidualLevelsEnd(RollerContact c, const Vec lev[3])
   PetscFunctionReturn(0);
 }
 
+/* A boundary functional's Gamma_C rows (2 nc reals, malloc'ed; NULL without the residual) and, per level, its dot with
+   the level's residual: the -monitor_surface_csv orders of a reduced run (integrate/observers_surface.c). */
+PetscErrorCode RollerContactResidualRows(RollerContact c, Vec w, PetscReal **rows)
+{
+  PetscFunctionBeginUser;
+  *rows = NULL;
+  if (!c || !c->nodes.residual.R) PetscFunctionReturn(0);
+  PetscCall(PetscMalloc1(2 * c->nodes.nc, rows));
+  PetscCall(GatherFull(c, w, *rows));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RollerContactResidualDot(RollerContact c, Vec q, const PetscReal rows[], PetscReal *dot)
+{
+  PetscReal *r;
+
+  PetscFunctionBeginUser;
+  if (!c || !c->nodes.residual.R || !rows) PetscFunctionReturn(0);
+  PetscCall(ResidualOf(c, q, &r));
+  for (PetscInt i = 0; r && i < 2 * c->nodes.nc; ++i) *dot += rows[i] * r[i];
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode RollerContactResidualDestroy(RollerContact c)
 {
   PetscFunctionBeginUser;

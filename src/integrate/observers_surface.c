@@ -8,11 +8,12 @@
 #include "integrate/integrate.h"
 
 typedef struct {
-  PetscInt  orders;
-  Vec      *w; /* 2 orders functionals: cos, sin of orders 1..N */
-  FILE     *fp;
-  char      path[PETSC_MAX_PATH_LEN], part[PETSC_MAX_PATH_LEN];
-  PetscBool open;
+  PetscInt   orders;
+  Vec       *w;    /* 2 orders functionals: cos, sin of orders 1..N (-rom: their reduced V^T w) */
+  PetscReal *rows; /* -rom with the residual flexibility: their Gamma_C rows (2 orders x 2 nc), for the levels' residual */
+  FILE      *fp;
+  char       path[PETSC_MAX_PATH_LEN], part[PETSC_MAX_PATH_LEN];
+  PetscBool  open;
 } SurfaceMonitor;
 
 static PetscErrorCode MonitorSurface(Roller ctx, RollerMonitorEvent event, void *mctx)
@@ -33,6 +34,19 @@ static PetscErrorCode MonitorSurface(Roller ctx, RollerMonitorEvent event, void 
   PetscCall(PetscMalloc1(2 * m->orders, &dots));
   PetscCall(VecMDot(ctx->state.cur, 2 * m->orders, m->w, dots));
   PetscCall(VecDot(ctx->ops.w_R, ctx->state.cur, &r));
+  if (m->rows) { /* -rom: + the functionals on the residual at Gamma_C */
+    PetscReal      wr = PetscRealPart(r), wa = 0.0;
+    const PetscInt nr = RollerContactNodeCount(ctx->contact) * 2;
+
+    RollerContactResidualDots(ctx->contact, ctx->state.cur, &wr, &wa);
+    r = wr;
+    for (PetscInt k = 0; k < 2 * m->orders; ++k) {
+      PetscReal d = PetscRealPart(dots[k]);
+
+      PetscCall(RollerContactResidualDot(ctx->contact, ctx->state.cur, m->rows + (size_t)k * nr, &d));
+      dots[k] = d;
+    }
+  }
   RollerTheta(ctx, ctx->state.time, &theta, NULL, NULL);
   if (m->fp) {
     PetscCall(PetscFPrintf(PETSC_COMM_SELF, m->fp, "%" PetscInt_FMT ",%.17g,%.17g,%.17g", ctx->state.step, (double)ctx->state.time, (double)theta, (double)(PetscRealPart(r) / ctx->mesh.boundary_length)));
@@ -55,6 +69,7 @@ static PetscErrorCode MonitorSurfaceDestroy(void **mctx)
   PetscFunctionBeginUser;
   if (m->fp) PetscCall(PetscFClose(PETSC_COMM_SELF, m->fp)); /* a run that did not end: F.part stays */
   if (m->w) PetscCall(VecDestroyVecs(2 * m->orders, &m->w));
+  PetscCall(PetscFree(m->rows));
   PetscCall(PetscFree(m));
   *mctx = NULL;
   PetscFunctionReturn(0);
@@ -76,6 +91,34 @@ PetscErrorCode RollerSurfaceMonitorSetUp(Roller ctx)
   m->orders = orders;
   PetscCall(PetscMalloc1(2 * orders, &m->w));
   PetscCall(RollerComputeOrderFunctionals(ctx, orders, m->w));
+  if (ctx->ops.V) { /* -rom: the functionals' reduced images V^T w (and their Gamma_C rows for the residual) */
+    const PetscInt nr = 2 * RollerContactNodeCount(ctx->contact);
+    Vec           *wr;
+    PetscInt       nl, ns;
+
+    PetscCall(VecDuplicateVecs(ctx->state.cur, 2 * orders, &wr));
+    for (PetscInt k = 0; k < 2 * orders; ++k) {
+      Vec p;
+
+      PetscCall(MatCreateVecs(ctx->ops.V, &p, NULL));
+      PetscCall(MatMultTranspose(ctx->ops.V, m->w[k], p));
+      PetscCall(VecGetLocalSize(p, &nl));
+      PetscCall(VecGetLocalSize(wr[k], &ns));
+      PetscCheck(nl == ns, PETSC_COMM_SELF, PETSC_ERR_PLIB, "-monitor_surface_csv with -rom: the basis' column layout (%" PetscInt_FMT ") is not the reduced state's (%" PetscInt_FMT ")", nl, ns);
+      PetscCall(VecCopy(p, wr[k]));
+      PetscCall(VecDestroy(&p));
+      if (nr) {
+        PetscReal *rows;
+
+        if (!m->rows) PetscCall(PetscCalloc1((size_t)2 * orders * nr, &m->rows));
+        PetscCall(RollerContactResidualRows(ctx->contact, m->w[k], &rows));
+        if (rows) PetscCall(PetscArraycpy(m->rows + (size_t)k * nr, rows, nr));
+        PetscCall(PetscFree(rows));
+      }
+    }
+    PetscCall(VecDestroyVecs(2 * orders, &m->w));
+    m->w = wr;
+  }
   PetscCall(PetscStrncpy(m->path, path, sizeof(m->path)));
   PetscCall(RollerPartFileOpen(ctx->comm, path, "-monitor_surface_csv", m->part, sizeof(m->part), &m->fp));
   if (m->fp) {
