@@ -32,4 +32,9 @@ for extra, names in ((["-young", "2.2e6"], ["-young"]), (["-rom_modes", "100"], 
     code, out, err_text = run(args + extra + ["-rom_input", "basis.h5", "-monitor_csv", "refused.csv"], check=False)
     line = next((ln for ln in (out + err_text).splitlines() if "-rom_input basis.h5: refused" in ln), "")
     c.check(code != 0 and all(nm in line for nm in names) and not os.path.exists("refused.csv"), f"{' '.join(extra)}: refused ({code}), naming {', '.join(names)}: {line.split('refused, ')[-1][:160]}")
+# a reduced run's checkpoint holds coordinates: a full-model restart from it is refused by name
+run(SCENE + ["-checkpoint_every", "50", "-checkpoint", "reduced_ck.h5"])
+code, out, err_text = run([x for x in SCENE if x not in ("-rom", "-rom_modes", "150")] + ["-restart", "reduced_ck.h5", "-monitor_csv", "restart.csv"], check=False)
+line = next((ln for ln in (out + err_text).splitlines() if "refused" in ln), "")
+c.check(code != 0 and "reduced (-rom) 1 (checkpoint) vs 0 (this run)" in line and not os.path.exists("restart.csv"), f"a full restart from a reduced run's checkpoint: refused ({code}): {line.split('refused, ')[-1][:120]}")
 c.close()

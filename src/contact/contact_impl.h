@@ -11,6 +11,8 @@
    contact_candidates.c  the step's basis and bounds, the candidate set, the penetrating nodes it gains
    contact_nodes.c       the Gamma_C nodes (gathered redundantly on every rank, in angle order), gaps, force
    contact_reduced.c     -rom: the basis' Gamma_C rows Phi, the window's gathers Phi q, the force Phi^T f, S's columns
+   contact_residual.c    -rom_residual: MacNeal's residual flexibility R, S + R, each level's residual R f_C, its energy
+   contact_residual_levels.c  the residual in the fields, functionals and -rom_output file; the initial levels' remainder
    Friction (only with -friction > 0; docs/friction.md), a part of the condensed solver; the law mu(v) and Coulomb's
    law on dense data by the semismooth Newton method are the friction layer's (friction/law.c, friction/coulomb.c),
    which calls nothing here. Contact calls the friction files (create, solve, info, state); they call back none of
@@ -237,6 +239,9 @@ PETSC_INTERN PetscErrorCode RollerContactReducedResidual(RollerContact, const Ro
 PETSC_INTERN void           RollerContactReducedAddFlexibility(RollerContact, PetscInt, PetscReal[]);      /* S's column j += R's */
 PETSC_INTERN PetscErrorCode RollerContactReducedAddResidual(RollerContact, Vec, Vec);                      /* a gather's red += r of q */
 PETSC_INTERN PetscErrorCode RollerContactResidualDestroy(RollerContact);
+PETSC_INTERN PetscErrorCode RollerContactResidualGatherFull(RollerContact, Vec, PetscReal[]); /* Gamma_C rows of a full-layout Vec */
+PETSC_INTERN PetscErrorCode RollerContactResidualOf(RollerContact, Vec, PetscReal **);        /* a level's (r, f_C), or NULL */
+PETSC_INTERN PetscErrorCode RollerContactResidualComposed(RollerContact, Vec, PetscReal **);  /* ... made if none, zeroed */
 PETSC_INTERN PetscReal      RollerContactGapTolerance(Roller);
 
 /* contact_candidates.c */

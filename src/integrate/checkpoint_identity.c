@@ -1,7 +1,7 @@
 /* What a checkpoint was written for, and the refusal of a restart of anything else: the mesh (its vertices, cells,
    free dofs, -mesh_h, -mesh_h_contact, -mesh_contact_layer, -mesh_curved and a checksum of the free nodes' positions,
    sum |x_n|^2, which does not depend on the partition but to round-off), -degree, -ts_dt, -ts_scheme, and whether the
-   model is reduced (-rom, to come: 0 now). A restart that differs in any of them is refused in one line that
+   model is reduced (-rom: its state is the basis' coordinates; a reduced run itself does not restart, rom/rom.c). A restart that differs in any of them is refused in one line that
    names each difference with both values: a state continued on another discretization would be a silent wrong
    run. The number of ranks is not part of it (integrate/checkpoint_order.c). */
 #include "integrate/integrate.h"
@@ -40,7 +40,7 @@ static PetscErrorCode IdentityOfRun(Roller ctx, Identity *id)
   PetscCall(VecGetSize(ctx->ops.coordinates, &id->i[2]));
   id->i[3] = ctx->mesh.curved;
   id->i[4] = ctx->disc.degree;
-  id->i[5] = 0; /* the reduced-order model (-rom) is to come: a full-model checkpoint */
+  id->i[5] = (PetscInt)ctx->ops.reduced; /* a reduced run's checkpoint holds coordinates, not the nodal state */
   id->r[0] = ctx->mesh.r_inner;
   id->r[1] = ctx->mesh.r_outer;
   id->r[2] = ctx->mesh.h;
