@@ -100,6 +100,16 @@ typedef struct {
    its nodal force: the residual r = R f_C of a level is kept by its Vec's id (RollerContactReducedResidual). wc: the
    Gamma_C rows of the functionals w_R, w_alpha (2 x 2 nc), for r's part of R and alpha. */
 #define ROLLER_RESIDUAL_SLOTS 16
+#define ROLLER_GATHER_CACHE   6
+/* -rom: the last gathers Phi q within the current window (a step gathers its few levels about ten times), by the Vec's
+   id and state: a level read again is copied, not recomputed (contact_reduced.c) */
+typedef struct {
+  PetscInt         wstamp;                  /* the window's count: RollerContactReducedWindow */
+  PetscObjectId    id[ROLLER_GATHER_CACHE]; /* 0: empty */
+  PetscObjectState state[ROLLER_GATHER_CACHE];
+  PetscInt         stamp[ROLLER_GATHER_CACHE], next;
+  PetscReal       *val[ROLLER_GATHER_CACHE]; /* 2 nc: the window's entries */
+} RollerContactGatherCache;
 typedef struct {
   PetscReal    *R;
   PetscReal    *wc;
@@ -126,13 +136,14 @@ typedef struct {
   /* -rom (contact_reduced.c): the displacement is V q; the Gamma_C rows of V, phi (2 nc x nq, row-major, on every
      rank), gather u_C = phi q and spread f_q = phi^T f_C; within a step only the rows of the window's nodes (those
      the obstacle can reach) are computed, the others' displacement reads 0 */
-  PetscInt              nq;
-  PetscReal            *phi;
-  PetscInt              nwin, *win; /* the window's nodes; windowed false: all of them */
-  PetscBool             windowed;
-  VecScatter            qscatter; /* reduced Vec -> qall on every rank */
-  Vec                   qall;
-  RollerContactResidual residual; /* -rom_residual (contact_residual.c) */
+  PetscInt                 nq;
+  PetscReal               *phi;
+  PetscInt                 nwin, *win; /* the window's nodes; windowed false: all of them */
+  PetscBool                windowed;
+  VecScatter               qscatter; /* reduced Vec -> qall on every rank */
+  Vec                      qall;
+  RollerContactGatherCache gather;   /* the last gathers Phi q (-rom) */
+  RollerContactResidual    residual; /* -rom_residual (contact_residual.c) */
 } RollerContactNodes;
 
 /* The step (contact_candidates.c): time, rotation, obstacle height, contact basis (t^k, n^k), candidate set,

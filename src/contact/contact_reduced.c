@@ -7,6 +7,10 @@
    2 nc nq. */
 #include "contact_impl.h"
 
+/* PETSc 3.18 exports PetscObjectStateGet (documented with PetscObjectState in petscsystypes.h; a Vec's state grows
+   with every write) but its installed headers do not declare it. */
+PETSC_EXTERN PetscErrorCode PetscObjectStateGet(PetscObject, PetscObjectState *);
+
 /* -rom's contact is the condensed solver's (before the basis is made: a refusal costs no eigensolve). */
 PetscErrorCode RollerContactCheckReduced(Roller ctx, RollerContact c)
 {
@@ -57,6 +61,7 @@ PetscErrorCode RollerContactReducedDestroy(RollerContact c)
   PetscFunctionBeginUser;
   PetscCall(PetscFree2(c->nodes.phi, c->nodes.win));
   PetscCall(RollerContactResidualDestroy(c));
+  for (PetscInt k = 0; k < ROLLER_GATHER_CACHE; ++k) PetscCall(PetscFree(c->nodes.gather.val[k]));
   PetscCall(VecScatterDestroy(&c->nodes.qscatter));
   PetscCall(VecDestroy(&c->nodes.qall));
   PetscFunctionReturn(0);
@@ -73,16 +78,41 @@ void RollerContactReducedWindow(Roller ctx, RollerContact c)
   for (PetscInt i = 0; i < c->nodes.nc; ++i)
     if (-c->step.lower[i] <= reach) c->nodes.win[c->nodes.nwin++] = i;
   c->nodes.windowed = PETSC_TRUE;
+  c->nodes.gather.wstamp++; /* the cached gathers were of another window */
 }
 
-/* red = Phi q at the window's nodes (all nodes outside a step), 0 at the others. */
+/* red = Phi q at the window's nodes (all nodes outside a step), 0 at the others; a gather of the same Vec, unchanged,
+   within the same window is the cached one's copy. */
 PetscErrorCode RollerContactReducedGather(RollerContact c, Vec q, Vec red)
 {
-  const PetscInt     nq = c->nodes.nq;
-  const PetscScalar *qa;
-  PetscScalar       *u;
+  const PetscInt            nq = c->nodes.nq;
+  RollerContactGatherCache *gc = &c->nodes.gather;
+  const PetscScalar        *qa;
+  PetscScalar              *u;
+  PetscObjectId             id;
+  PetscObjectState          state;
+  PetscInt                  slot;
 
   PetscFunctionBeginUser;
+  PetscCall(PetscObjectGetId((PetscObject)q, &id));
+  PetscCall(PetscObjectStateGet((PetscObject)q, &state));
+  for (slot = 0; slot < ROLLER_GATHER_CACHE; ++slot)
+    if (gc->id[slot] == id && gc->state[slot] == state && gc->stamp[slot] == gc->wstamp && gc->val[slot]) break;
+  if (slot < ROLLER_GATHER_CACHE) { /* a hit */
+    const PetscReal *g = gc->val[slot];
+
+    PetscCall(VecGetArray(red, &u));
+    if (c->nodes.windowed) PetscCall(PetscArrayzero(u, 2 * c->nodes.nc));
+    for (PetscInt k = 0; k < c->nodes.nwin; ++k) {
+      const PetscInt i = c->nodes.windowed ? c->nodes.win[k] : k;
+
+      u[2 * i]     = g[2 * i];
+      u[2 * i + 1] = g[2 * i + 1];
+    }
+    PetscCall(VecRestoreArray(red, &u));
+    PetscCall(RollerContactReducedAddResidual(c, q, red));
+    PetscFunctionReturn(0);
+  }
   PetscCall(VecScatterBegin(c->nodes.qscatter, q, c->nodes.qall, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecScatterEnd(c->nodes.qscatter, q, c->nodes.qall, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGetArrayRead(c->nodes.qall, &qa));
@@ -100,6 +130,18 @@ PetscErrorCode RollerContactReducedGather(RollerContact c, Vec q, Vec red)
     u[2 * i]     = s0;
     u[2 * i + 1] = s1;
   }
+  slot     = gc->next; /* kept for the next reads of this level in this window (round robin) */
+  gc->next = (gc->next + 1) % ROLLER_GATHER_CACHE;
+  if (!gc->val[slot]) PetscCall(PetscMalloc1(2 * c->nodes.nc, &gc->val[slot]));
+  for (PetscInt k = 0; k < c->nodes.nwin; ++k) {
+    const PetscInt i = c->nodes.windowed ? c->nodes.win[k] : k;
+
+    gc->val[slot][2 * i]     = PetscRealPart(u[2 * i]);
+    gc->val[slot][2 * i + 1] = PetscRealPart(u[2 * i + 1]);
+  }
+  gc->id[slot]    = id;
+  gc->state[slot] = state;
+  gc->stamp[slot] = gc->wstamp;
   PetscCall(VecRestoreArray(red, &u));
   PetscCall(VecRestoreArrayRead(c->nodes.qall, &qa));
   PetscCall(RollerContactReducedAddResidual(c, q, red)); /* -rom_residual: + R f_C of the level */
