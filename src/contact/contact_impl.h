@@ -13,6 +13,7 @@
    contact_reduced.c     -rom: the basis' Gamma_C rows Phi, the window's gathers Phi q, the force Phi^T f, S's columns
    contact_residual.c    -rom_residual: MacNeal's residual flexibility R, S + R, each level's residual R f_C, its energy
    contact_residual_levels.c  the residual in the fields, functionals and -rom_output file; the initial levels' remainder
+                         (their types and functions: contact_reduced.h)
    Friction (only with -friction > 0; docs/friction.md), a part of the condensed solver; the law mu(v) and Coulomb's
    law on dense data by the semismooth Newton method are the friction layer's (friction/law.c, friction/coulomb.c),
    which calls nothing here. Contact calls the friction files (create, solve, info, state); they call back none of
@@ -95,29 +96,7 @@ typedef struct {
   PetscBool         friction_newton; /* -contact_friction_newton: Coulomb by the semismooth Newton method first */
 } RollerContactOptions;
 
-/* -rom_residual (MacNeal, contact_residual.c): the static residual flexibility R = E^T (K^-1 - V K_r^-1 V^T) E of the
-   Gamma_C dofs (2 nc x 2 nc column-major, every rank; NULL without it). A solve's displacement is Phi q + R f_C, f_C
-   its nodal force: the residual r = R f_C of a level is kept by its Vec's id (RollerContactReducedResidual). wc: the
-   Gamma_C rows of the functionals w_R, w_alpha (2 x 2 nc), for r's part of R and alpha. */
-#define ROLLER_RESIDUAL_SLOTS 16
-#define ROLLER_GATHER_CACHE   6
-/* -rom: the last gathers Phi q within the current window (a step gathers its few levels about ten times), by the Vec's
-   id and state: a level read again is copied, not recomputed (contact_reduced.c) */
-typedef struct {
-  PetscInt         wstamp;                  /* the window's count: RollerContactReducedWindow */
-  PetscObjectId    id[ROLLER_GATHER_CACHE]; /* 0: empty */
-  PetscObjectState state[ROLLER_GATHER_CACHE];
-  PetscInt         stamp[ROLLER_GATHER_CACHE], next;
-  PetscReal       *val[ROLLER_GATHER_CACHE]; /* 2 nc: the window's entries */
-} RollerContactGatherCache;
-typedef struct {
-  PetscReal    *R;
-  PetscReal    *wc;
-  PetscReal    *u0;    /* 3 x 2 nc during the set-up: the initial levels' Gamma_C displacements (NULL from rest) */
-  PetscInt      nslot; /* the vectors that carry a residual (r, f_C: 4 nc reals each), by object id */
-  PetscObjectId id[ROLLER_RESIDUAL_SLOTS];
-  PetscReal    *slot[ROLLER_RESIDUAL_SLOTS];
-} RollerContactResidual;
+#include "contact_reduced.h"
 
 /* Gamma_C nodes (contact_nodes.c), fixed at creation, the same on every rank, sorted by angle: node i has its
    x dof at global index gidx[i] (y at gidx[i] + 1) and position xc[2i], xc[2i+1]; the redundant vectors hold
@@ -140,8 +119,6 @@ typedef struct {
   PetscReal               *phi;
   PetscInt                 nwin, *win; /* the window's nodes; windowed false: all of them */
   PetscBool                windowed;
-  VecScatter               qscatter; /* reduced Vec -> qall on every rank */
-  Vec                      qall;
   RollerContactGatherCache gather;   /* the last gathers Phi q (-rom) */
   RollerContactResidual    residual; /* -rom_residual (contact_residual.c) */
 } RollerContactNodes;
@@ -241,19 +218,7 @@ PETSC_INTERN PetscErrorCode RollerContactGapsAt(Roller, RollerContact, Vec, Pets
 PETSC_INTERN PetscErrorCode RollerContactForce(RollerContact, const PetscReal[], const PetscReal[], Vec);
 
 /* contact_reduced.c (-rom) */
-PETSC_INTERN PetscErrorCode RollerContactReducedGather(RollerContact, Vec, Vec);
-PETSC_INTERN PetscErrorCode RollerContactReducedForce(RollerContact, const PetscReal[], const PetscReal[], Vec);
-PETSC_INTERN void           RollerContactReducedWindow(Roller, RollerContact);
-PETSC_INTERN PetscErrorCode RollerContactReducedColumns(RollerContact, Mat, PetscInt, PetscReal[]);
-PETSC_INTERN PetscErrorCode RollerContactReducedDestroy(RollerContact);
-PETSC_INTERN PetscErrorCode RollerContactReducedResidual(RollerContact, const RollerContactResult *, Vec); /* r = R f_C on xi */
-PETSC_INTERN void           RollerContactReducedAddFlexibility(RollerContact, PetscInt, PetscReal[]);      /* S's column j += R's */
-PETSC_INTERN PetscErrorCode RollerContactReducedAddResidual(RollerContact, Vec, Vec);                      /* a gather's red += r of q */
-PETSC_INTERN PetscErrorCode RollerContactResidualDestroy(RollerContact);
-PETSC_INTERN PetscErrorCode RollerContactResidualGatherFull(RollerContact, Vec, PetscReal[]); /* Gamma_C rows of a full-layout Vec */
-PETSC_INTERN PetscErrorCode RollerContactResidualOf(RollerContact, Vec, PetscReal **);        /* a level's (r, f_C), or NULL */
-PETSC_INTERN PetscErrorCode RollerContactResidualComposed(RollerContact, Vec, PetscReal **);  /* ... made if none, zeroed */
-PETSC_INTERN PetscReal      RollerContactGapTolerance(Roller);
+PETSC_INTERN PetscReal RollerContactGapTolerance(Roller);
 
 /* contact_candidates.c */
 PETSC_INTERN PetscErrorCode RollerContactSetTime(Roller, RollerContact, PetscReal);

@@ -44,7 +44,7 @@ PetscErrorCode RollerContactSetBasis(Roller ctx, RollerContact c, Mat V, Vec q)
     for (PetscInt i = 0; i < n; ++i) phi[(size_t)i * nq + j] = PetscRealPart(r[i]);
     PetscCall(VecRestoreArrayRead(c->nodes.red, &r));
   }
-  PetscCall(VecScatterCreateToAll(q, &c->nodes.qscatter, &c->nodes.qall));
+  PetscCall(VecScatterCreateToAll(q, &c->nodes.gather.qscatter, &c->nodes.gather.qall));
   for (Vec *v = &c->acc.b; v; v = v == &c->acc.b ? &c->acc.force : v == &c->acc.force ? &c->acc.work : NULL) { /* the step's vectors in the reduced layout */
     PetscCall(VecDestroy(v));
     PetscCall(VecDuplicate(q, v));
@@ -62,8 +62,8 @@ PetscErrorCode RollerContactReducedDestroy(RollerContact c)
   PetscCall(PetscFree2(c->nodes.phi, c->nodes.win));
   PetscCall(RollerContactResidualDestroy(c));
   for (PetscInt k = 0; k < ROLLER_GATHER_CACHE; ++k) PetscCall(PetscFree(c->nodes.gather.val[k]));
-  PetscCall(VecScatterDestroy(&c->nodes.qscatter));
-  PetscCall(VecDestroy(&c->nodes.qall));
+  PetscCall(VecScatterDestroy(&c->nodes.gather.qscatter));
+  PetscCall(VecDestroy(&c->nodes.gather.qall));
   PetscFunctionReturn(0);
 }
 
@@ -113,9 +113,9 @@ PetscErrorCode RollerContactReducedGather(RollerContact c, Vec q, Vec red)
     PetscCall(RollerContactReducedAddResidual(c, q, red));
     PetscFunctionReturn(0);
   }
-  PetscCall(VecScatterBegin(c->nodes.qscatter, q, c->nodes.qall, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(c->nodes.qscatter, q, c->nodes.qall, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGetArrayRead(c->nodes.qall, &qa));
+  PetscCall(VecScatterBegin(c->nodes.gather.qscatter, q, c->nodes.gather.qall, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(c->nodes.gather.qscatter, q, c->nodes.gather.qall, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGetArrayRead(c->nodes.gather.qall, &qa));
   PetscCall(VecGetArray(red, &u));
   if (c->nodes.windowed) PetscCall(PetscArrayzero(u, 2 * c->nodes.nc));
   for (PetscInt k = 0; k < c->nodes.nwin; ++k) {
@@ -143,7 +143,7 @@ PetscErrorCode RollerContactReducedGather(RollerContact c, Vec q, Vec red)
   gc->state[slot] = state;
   gc->stamp[slot] = gc->wstamp;
   PetscCall(VecRestoreArray(red, &u));
-  PetscCall(VecRestoreArrayRead(c->nodes.qall, &qa));
+  PetscCall(VecRestoreArrayRead(c->nodes.gather.qall, &qa));
   PetscCall(RollerContactReducedAddResidual(c, q, red)); /* -rom_residual: + R f_C of the level */
   PetscFunctionReturn(0);
 }
@@ -185,12 +185,12 @@ PetscErrorCode RollerContactReducedColumns(RollerContact c, Mat X, PetscInt mb, 
     const PetscScalar *a;
 
     PetscCall(MatDenseGetColumnVecRead(X, jj, &v));
-    PetscCall(VecScatterBegin(c->nodes.qscatter, v, c->nodes.qall, INSERT_VALUES, SCATTER_FORWARD));
-    PetscCall(VecScatterEnd(c->nodes.qscatter, v, c->nodes.qall, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterBegin(c->nodes.gather.qscatter, v, c->nodes.gather.qall, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterEnd(c->nodes.gather.qscatter, v, c->nodes.gather.qall, INSERT_VALUES, SCATTER_FORWARD));
     PetscCall(MatDenseRestoreColumnVecRead(X, jj, &v));
-    PetscCall(VecGetArrayRead(c->nodes.qall, &a));
+    PetscCall(VecGetArrayRead(c->nodes.gather.qall, &a));
     for (PetscInt j = 0; j < nq; ++j) x[j + (size_t)jj * nq] = PetscRealPart(a[j]);
-    PetscCall(VecRestoreArrayRead(c->nodes.qall, &a));
+    PetscCall(VecRestoreArrayRead(c->nodes.gather.qall, &a));
   }
   { /* phi row-major (n x nq) is column-major nq x n: out = P^T x, P that matrix (PETSc's dense product, BLAS gemm) */
     Mat                P, Xs, O;

@@ -136,9 +136,9 @@ PetscErrorCode RollerContactResidualLevelsEnd(RollerContact c, const Vec lev[3])
     PetscScalar       *ba;
     PetscReal         *r;
 
-    PetscCall(VecScatterBegin(c->nodes.qscatter, lev[l], c->nodes.qall, INSERT_VALUES, SCATTER_FORWARD));
-    PetscCall(VecScatterEnd(c->nodes.qscatter, lev[l], c->nodes.qall, INSERT_VALUES, SCATTER_FORWARD));
-    PetscCall(VecGetArrayRead(c->nodes.qall, &qa));
+    PetscCall(VecScatterBegin(c->nodes.gather.qscatter, lev[l], c->nodes.gather.qall, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterEnd(c->nodes.gather.qscatter, lev[l], c->nodes.gather.qall, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecGetArrayRead(c->nodes.gather.qall, &qa));
     PetscCall(RollerContactResidualComposed(c, lev[l], &r));
     for (PetscInt i = 0; i < n; ++i) {
       const PetscReal *p = c->nodes.phi + (size_t)i * nq;
@@ -147,7 +147,7 @@ PetscErrorCode RollerContactResidualLevelsEnd(RollerContact c, const Vec lev[3])
       for (PetscInt j = 0; j < nq; ++j) u += p[j] * PetscRealPart(qa[j]);
       r[i] = c->nodes.residual.u0[l * n + i] - u;
     }
-    PetscCall(VecRestoreArrayRead(c->nodes.qall, &qa));
+    PetscCall(VecRestoreArrayRead(c->nodes.gather.qall, &qa));
     PetscCall(VecGetArrayWrite(b, &ba));
     for (PetscInt i = 0; i < n; ++i) ba[i] = r[i];
     PetscCall(VecRestoreArrayWrite(b, &ba));
