@@ -10,7 +10,7 @@ reduced levels are its K-orthogonal projection and carry the Gamma_C remainder a
   (with the residual's energy and dissipation) to 1e-8 of its largest energy over the 6,000 steps (the full run's own
   identity is 9e-11 here).
 The growth converges with the cutoff only once the modes up to where the step resolves them are kept: 67 modes (1
-cycle per unit time) +35 %, 227 (2) -110 %, 399 (2.75) +8 %, 595 (the default, 3.5) +0.8 % (docs/performance.md);
+cycle per unit time) +35 %, 227 (2) -110 %, 399 (2.75) +8 %, 595 (the default, 3.5) +1.0 % (docs/performance.md);
 about 4 min of CPU."""
 import csv
 import os

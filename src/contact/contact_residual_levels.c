@@ -160,8 +160,6 @@ PetscErrorCode RollerContactResidualLevelsEnd(RollerContact c, const Vec lev[3])
   PetscCall(VecDestroy(&b));
   PetscCall(MatDestroy(&F));
   PetscCall(PetscFree(c->nodes.residual.u0));
-  for (PetscInt k = 0; k < c->nodes.residual.nslot; ++k) PetscCall(PetscFree(c->nodes.residual.slot[k]));
-  c->nodes.residual.nslot = 0;
   PetscFunctionReturn(0);
 }
 
