@@ -13,17 +13,10 @@ settle in 50 Lemke solves"). Two runs of the YAML's 10 ms at its default dt (177
 """
 import numpy as np
 
-from rollertest import Checker, SOURCE, read_csv, run
+from rollertest import Checker, SOURCE, energy_defect, read_csv, run
 
 SCENE = f"{SOURCE}/jobs/printer_roller_kelvin_voigt.yaml"
 MU, MU_S, V_C, V = 0.8, 1.0, 0.01, 0.2356
-
-
-def energy_defect(d):
-    """max_k |E^k - E^0 - (shaft + sheet work - friction work - summed dissipations)| / max |E|."""
-    diss = np.cumsum(d["contact_dissipation"] + d["damping_dissipation"] + d["viscous_dissipation"])
-    bal = d["energy"] - d["energy"][0] - (d["shaft_work"] + d["sheet_work"] - d["friction_work"] - diss)
-    return float(np.abs(bal).max() / np.abs(d["energy"]).max())
 
 
 c = Checker("friction_printer")

@@ -18,7 +18,7 @@ import sys
 
 import numpy as np
 
-from rollertest import Checker, SOURCE, read_csv, run
+from rollertest import Checker, SOURCE, energy_defect, read_csv, run
 
 SCENE = os.path.join(SOURCE, "jobs", "stickslip.yaml")
 T0 = 7.0  # -theta_start of the scene
@@ -27,13 +27,6 @@ MU, MU_S, V_C = 0.5, 1.0, 0.03
 E, NU, TAU = 0.1, 0.49, 0.0115
 W_T = 2 * math.pi / 8.6915  # n = 0 torsional mode (docs/model.md section 6.2, src/model/accuracy.c)
 TOL = 0.35  # the measured periods against the 1-DOF estimate: the cycles are irregular (docs/friction.md 5.3)
-
-
-def energy_defect(d):
-    """max_k |E^k - E^0 - (shaft + sheet work - friction work - summed dissipations)| / max |E|."""
-    diss = np.cumsum(d["contact_dissipation"] + d["damping_dissipation"] + d["viscous_dissipation"])
-    bal = d["energy"] - d["energy"][0] - (d["shaft_work"] + d["sheet_work"] - d["friction_work"] - diss)
-    return float(np.abs(bal).max() / np.abs(d["energy"]).max())
 
 
 def episodes(t, flag, merge=0.5, least=1.0):

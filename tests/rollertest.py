@@ -47,6 +47,13 @@ def read_csv(path):
     return {name: column(i) for i, name in enumerate(head)}
 
 
+def energy_defect(d):
+    """max_k |E^k - E^0 - (shaft + sheet work - friction work - summed dissipations)| / max |E| of a -monitor_csv."""
+    diss = np.cumsum(d["contact_dissipation"] + d["damping_dissipation"] + d["viscous_dissipation"])
+    bal = d["energy"] - d["energy"][0] - (d["shaft_work"] + d["sheet_work"] - d["friction_work"] - diss)
+    return float(np.abs(bal).max() / np.abs(d["energy"]).max())
+
+
 def rel_max_error(d, ref, q):
     """max over d's times of |d[q] - ref[q]| (ref interpolated in t), relative to max |ref[q]|."""
     return float(np.abs(d[q] - np.interp(d["t"], ref["t"], ref[q])).max() / np.abs(ref[q]).max())

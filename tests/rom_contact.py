@@ -22,9 +22,8 @@ round-off; against the full model the mean contact force within 1 %, the frictio
 vertical position within 2 % and its rate within 0.5 % (measured +0.04 %, +0.63 %, +0.56 %, +0.06 %; the full model
 itself moves by 0.3 % in friction between 1 and 2 ranks); the surface's lab-frame orders 0, 1, 2 (-monitor_surface_csv,
 the sound's source) within 3 %."""
-import numpy as np
 
-from rollertest import SOURCE, Checker, read_csv, run
+from rollertest import SOURCE, Checker, energy_defect, read_csv, run
 
 c = Checker("rom_contact")
 R_OUTER = 0.0125
@@ -35,9 +34,7 @@ on = d["contact_nodes"] > 0
 c.check(abs(d["t"][-1] - 0.004) < 1e-12, f"the reduced transient reaches t = {d['t'][-1]:.6g} (4 ms)")
 c.check(on.sum() > 0.5 * len(on), f"the sheet touches the roller in {on.sum()} of {len(on)} steps (> half: press, then feeding)")
 c.check(d["friction_force"][on].min() < 0 or d["friction_force"][on].max() > 0, "the friction force is not zero in contact")
-diss = np.cumsum(d["contact_dissipation"] + d["damping_dissipation"] + d["viscous_dissipation"])
-bal = d["energy"] - d["energy"][0] - (d["shaft_work"] + d["sheet_work"] - d["friction_work"] - diss)
-defect = float(np.abs(bal).max() / np.abs(d["energy"]).max())
+defect = energy_defect(d)
 c.check(defect < 1e-11, f"the modal reduced model's energy identity with contact and friction holds to {defect:.1e} of its largest energy (< 1e-11)")
 c.check(d["gap_min"].min() > -1e-12 * R_OUTER, f"no penetration: least gap {d['gap_min'].min():.2e} m (> -1e-12 r_C)")
 c.check(d["kkt_residual"].max() < 1e-9, f"the contact QP's KKT residual {d['kkt_residual'].max():.1e} (< 1e-9) at every step")
@@ -53,9 +50,7 @@ w = f["t"] >= 0.001
 for col, tol in (("contact_force", 0.01), ("friction_force", 0.02), ("contact_nodes", 0.01), ("R", 0.01), ("alpha", 0.01), ("energy", 0.01)):
     a, b = f[col][w].mean(), r[col][w].mean()
     c.check(abs(b - a) <= tol * abs(a), f"with the residual flexibility, mean {col} over t >= 1 ms: reduced {b:.5g}, full {a:.5g} ({100 * (b - a) / abs(a):+.3f} %, bound {100 * tol:.0f} %)")
-diss = np.cumsum(r["contact_dissipation"] + r["damping_dissipation"] + r["viscous_dissipation"])
-bal = r["energy"] - r["energy"][0] - (r["shaft_work"] + r["sheet_work"] - r["friction_work"] - diss)
-defect = float(np.abs(bal).max() / np.abs(r["energy"]).max())
+defect = energy_defect(r)
 c.check(defect < 1e-11, f"its energy balance (modal + the residual's static energy; its update's dissipation) closes to {defect:.1e} of its largest energy (< 1e-11)")
 c.check(r["gap_min"].min() > -1e-12 * R_OUTER, f"no penetration: least gap {r['gap_min'].min():.2e} m")
 c.check(r["kkt_residual"].max() < 1e-9, f"KKT residual {r['kkt_residual'].max():.1e} (< 1e-9) at every step")
@@ -65,9 +60,7 @@ MX = ["-options_file", f"{SOURCE}/jobs/printer_roller.yaml", "-mesh_h", "0.0012"
 run(MX + ["-rom", "-rom_modes", "150", "-monitor_csv", "rom_contact_axle.csv", "-monitor_surface_csv", "rom_contact_axle_surface.csv"])
 run(MX + ["-monitor_csv", "rom_contact_axle_full.csv", "-monitor_surface_csv", "rom_contact_axle_full_surface.csv"])
 r, f = read_csv("rom_contact_axle.csv"), read_csv("rom_contact_axle_full.csv")
-diss = np.cumsum(r["contact_dissipation"] + r["damping_dissipation"] + r["viscous_dissipation"])
-bal = r["energy"] - r["energy"][0] - (r["shaft_work"] + r["sheet_work"] - r["friction_work"] - diss)
-defect = float(np.abs(bal).max() / np.abs(r["energy"]).max())
+defect = energy_defect(r)
 c.check(defect < 1e-11, f"axle + Maxwell: the reduced balance with the branches, the hub and the residual closes to {defect:.1e} of its largest energy (< 1e-11)")
 w = f["t"] >= 0.001
 for col, tol in (("contact_force", 0.01), ("friction_force", 0.02), ("axle_y", 0.02), ("hub_rate", 0.005)):

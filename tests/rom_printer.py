@@ -10,7 +10,7 @@ step's frequency error reaches -ts_phase_error, 9.9 kHz here, and the two static
 About 10 min of CPU (the full 30 ms, 75 s; the reduced model's modes)."""
 import numpy as np
 
-from rollertest import SOURCE, Checker, read_csv, run
+from rollertest import SOURCE, Checker, energy_defect, read_csv, run
 
 c = Checker("rom_printer")
 SCENE = ["-options_file", f"{SOURCE}/jobs/printer_roller_kelvin_voigt.yaml", "-ts_max_time", "0.03", "-quiet"]
@@ -38,8 +38,6 @@ def line(d):
 (f_a, l_a), (f_b, l_b) = line(a), line(b)
 c.check(abs(f_b - f_a) / f_a < 0.01, f"the friction force's largest line: reduced {f_b:.1f} Hz, full {f_a:.1f} Hz (within 1 %)")
 c.check(abs(l_b - l_a) < 2.0, f"its level: reduced {l_b:.1f} dB, full {l_a:.1f} dB (within 2 dB)")
-diss = np.cumsum(b["contact_dissipation"] + b["damping_dissipation"] + b["viscous_dissipation"])
-bal = b["energy"] - b["energy"][0] - (b["shaft_work"] + b["sheet_work"] - b["friction_work"] - diss)
-defect = float(np.abs(bal).max() / np.abs(b["energy"]).max())
+defect = energy_defect(b)
 c.check(defect < 1e-11, f"the reduced model's energy identity holds to {defect:.1e} of its largest energy (< 1e-11)")
 c.close()

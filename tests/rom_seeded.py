@@ -16,10 +16,8 @@ import csv
 import os
 import sys
 
-import numpy as np
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from rollertest import SOURCE, Checker, read_csv, run  # noqa: E402
+from rollertest import SOURCE, Checker, energy_defect, read_csv, run  # noqa: E402
 
 sys.path.insert(0, os.path.join(SOURCE, "scripts"))
 from rollerreport import squeal_fit as sf  # noqa: E402
@@ -51,8 +49,6 @@ for col in ("contact_force", "friction_force"):
     x, y = a[col][m].mean(), b[col][m].mean()
     c.check(abs(y / x - 1) < 0.01, f"mean {col}: reduced {y:.6g}, full {x:.6g} ({100 * (y / x - 1):+.2f} %, 1 %)")
 c.check(b["gap_min"].min() > -1e-12, f"no penetration in the reduced run (least gap {b['gap_min'].min():.1e})")
-diss = np.cumsum(b["contact_dissipation"] + b["damping_dissipation"] + b["viscous_dissipation"])
-bal = b["energy"] - b["energy"][0] - (b["shaft_work"] + b["sheet_work"] - b["friction_work"] - diss)
-defect = float(np.abs(bal).max() / np.abs(b["energy"]).max())
+defect = energy_defect(b)
 c.check(defect < 1e-8, f"the reduced model's energy balance over {len(b['t']) - 1} steps: {defect:.1e} of its largest energy (< 1e-8)")
 c.close()

@@ -47,7 +47,7 @@ PETSC_INTERN PetscErrorCode RollerContactResidualFunctionals(RollerContact, Vec,
 PETSC_INTERN PetscErrorCode RollerContactResidualAddFull(RollerContact, Vec, Vec);                                                         /* x (full layout) += E r of the level q */
 PETSC_INTERN PetscErrorCode RollerContactResidualRows(RollerContact, Vec, PetscReal **);                                                   /* a functional's Gamma_C rows */
 PETSC_INTERN PetscErrorCode RollerContactResidualDot(RollerContact, Vec, const PetscReal[], PetscReal *); /* += rows . r of the level q */ /* keeps w_R, w_alpha's Gamma_C rows (full layout) */
-PETSC_INTERN void           RollerContactResidualDots(RollerContact, Vec, PetscReal *, PetscReal *);                                       /* += w_R . r, w_alpha . r of a level */
+PETSC_INTERN PetscErrorCode RollerContactResidualDots(RollerContact, Vec, PetscReal *, PetscReal *);                                       /* += w_R . r, w_alpha . r of a level */
 PETSC_INTERN PetscErrorCode RollerContactCheckReduced(Roller, RollerContact);                                                              /* -contact_solver condensed, no -contact_check */
 /* -sheet_mass (contact_sheet.c): the sheet moves by its own forces; its part of E^k, its speed, its state for the
    checkpoint (4 reals: X^k, X^{k-1}, X^{k-2} and its case; NULL for the kinematic sheet) */

@@ -40,6 +40,6 @@ PETSC_INTERN PetscErrorCode RollerContactReducedAddResidual(RollerContact, Vec, 
 PETSC_INTERN PetscErrorCode RollerContactResidualDestroy(RollerContact);
 PETSC_INTERN PetscErrorCode RollerContactResidualGatherFull(RollerContact, Vec, PetscReal[]); /* Gamma_C rows of a full-layout Vec */
 PETSC_INTERN PetscErrorCode RollerContactResidualOf(RollerContact, Vec, PetscReal **);        /* a level's (r, f_C), or NULL */
-PETSC_INTERN PetscErrorCode RollerContactResidualComposed(RollerContact, Vec, PetscReal **);  /* ... made if none, zeroed */
+PETSC_INTERN PetscErrorCode RollerContactResidualKeep(RollerContact, Vec, PetscReal **);      /* ... kept for the Vec (made if none), zeroed */
 
 #endif

@@ -37,17 +37,13 @@ PetscErrorCode RollerContactResidualFunctionals(RollerContact c, Vec wR, Vec wal
 }
 
 /* *wr += w_R . r, *wa += w_alpha . r of the residual of the level q (nothing without one). */
-void RollerContactResidualDots(RollerContact c, Vec q, PetscReal *wr, PetscReal *wa)
+PetscErrorCode RollerContactResidualDots(RollerContact c, Vec q, PetscReal *wr, PetscReal *wa)
 {
-  const PetscInt n = c ? 2 * c->nodes.nc : 0;
-  PetscReal     *r = NULL;
-
-  if (!c || !c->nodes.residual.R || !c->nodes.residual.wc) return;
-  if (RollerContactResidualOf(c, q, &r) || !r) return;
-  for (PetscInt i = 0; i < n; ++i) {
-    *wr += c->nodes.residual.wc[i] * r[i];
-    *wa += c->nodes.residual.wc[n + i] * r[i];
-  }
+  PetscFunctionBeginUser;
+  if (!c || !c->nodes.residual.wc) PetscFunctionReturn(0);
+  PetscCall(RollerContactResidualDot(c, q, c->nodes.residual.wc, wr));
+  PetscCall(RollerContactResidualDot(c, q, c->nodes.residual.wc + 2 * c->nodes.nc, wa));
+  PetscFunctionReturn(0);
 }
 
 /* R in a -rom_output file (a flat dataset of (2 nc)^2 reals, column-major, written by rank 0), or read back from one
@@ -139,7 +135,7 @@ PetscErrorCode RollerContactResidualLevelsEnd(RollerContact c, const Vec lev[3])
     PetscCall(VecScatterBegin(c->nodes.gather.qscatter, lev[l], c->nodes.gather.qall, INSERT_VALUES, SCATTER_FORWARD));
     PetscCall(VecScatterEnd(c->nodes.gather.qscatter, lev[l], c->nodes.gather.qall, INSERT_VALUES, SCATTER_FORWARD));
     PetscCall(VecGetArrayRead(c->nodes.gather.qall, &qa));
-    PetscCall(RollerContactResidualComposed(c, lev[l], &r));
+    PetscCall(RollerContactResidualKeep(c, lev[l], &r));
     for (PetscInt i = 0; i < n; ++i) {
       const PetscReal *p = c->nodes.phi + (size_t)i * nq;
       PetscReal        u = 0.0;

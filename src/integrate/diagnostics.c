@@ -110,7 +110,7 @@ PetscErrorCode RollerStepInfoGet(Roller ctx)
   {
     PetscReal wr = PetscRealPart(r), wa = PetscRealPart(a);
 
-    RollerContactResidualDots(ctx->contact, st->cur, &wr, &wa); /* -rom_residual: the Gamma_C residual's part */
+    PetscCall(RollerContactResidualDots(ctx->contact, st->cur, &wr, &wa)); /* -rom_residual: the Gamma_C residual's part */
     info->R     = wr / ctx->mesh.boundary_length;
     info->alpha = wa / ctx->mesh.boundary_length;
   }

@@ -38,7 +38,7 @@ static PetscErrorCode MonitorSurface(Roller ctx, RollerMonitorEvent event, void 
     PetscReal      wr = PetscRealPart(r), wa = 0.0;
     const PetscInt nr = RollerContactNodeCount(ctx->contact) * 2;
 
-    RollerContactResidualDots(ctx->contact, ctx->state.cur, &wr, &wa);
+    PetscCall(RollerContactResidualDots(ctx->contact, ctx->state.cur, &wr, &wa));
     r = wr;
     for (PetscInt k = 0; k < 2 * m->orders; ++k) {
       PetscReal d = PetscRealPart(dots[k]);
