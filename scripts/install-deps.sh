@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   petsc-dev slepc-dev libopenmpi-dev openmpi-bin libhdf5-openmpi-dev
-  libmetis-dev gmsh libgmsh-dev libyaml-dev clang-format
+  libmetis-dev gmsh libgmsh-dev libyaml-dev liblapack-dev clang-format
   python3 python3-numpy python3-scipy python3-h5py python3-matplotlib
   chromium ffmpeg   # the squeak report's page opened headless (tests/report_page.py), its MP4 (rollerreport.animation)
 )

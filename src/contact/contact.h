@@ -31,6 +31,7 @@ PETSC_INTERN PetscErrorCode RollerContactInfo(Roller, RollerContact, Vec, Vec, V
 PETSC_INTERN PetscErrorCode RollerContactEnergyAdd(Roller, RollerContact, Vec, PetscReal, PetscReal, RollerStepInfo *);
 PETSC_INTERN PetscErrorCode RollerContactFields(Roller, RollerContact, Vec, Vec, Vec); /* pressure, traction, state: P1 scalar Vecs on the mesh */
 PETSC_INTERN PetscBool      RollerContactHasFriction(RollerContact);
+PETSC_INTERN PetscErrorCode RollerContactMultipliers(RollerContact, PetscInt *, PetscReal **, PetscReal **); /* the last solve's lambda_N, lambda_T (NULL without friction) of the nc nodes: checkpointed */
 /* -rom: the displacement becomes V q (V dense, N x nq, the full model's layout; q a Vec of the reduced layout): the
    Gamma_C rows of V taken before the operators are replaced (contact_reduced.c) */
 PETSC_INTERN PetscErrorCode RollerContactSetBasis(Roller, RollerContact, Mat, Vec);

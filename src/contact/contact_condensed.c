@@ -282,6 +282,7 @@ static PetscErrorCode CondensedSolve(RollerContactSolver s, Roller ctx, RollerCo
   PetscBool         any  = PETSC_FALSE;
   CondensedS       *cs;
   PetscInt          nneed = 0;
+  PetscReal        *yn;
 
   PetscFunctionBeginUser;
   PetscCall(CondensedGetS(c, cd, c->step.op, &cs));
@@ -290,12 +291,15 @@ static PetscErrorCode CondensedSolve(RollerContactSolver s, Roller ctx, RollerCo
     if (!cs->have[cand[a]]) cd->need[nneed++] = cand[a];
   PetscCall(CondensedColumns(ctx, c, c->step.op, cs, cd->need, nneed));
   PetscCall(FreeSolution(ctx, c, cd, b));
+  PetscCall(PetscMalloc1(3 * m, &yn)); /* the hub's rows of the candidates along the normal (-axle) */
+  for (PetscInt a = 0; a < m; ++a) RollerContactBorderRow(&c->step, c->step.normal, cand[a], n, yn + 3 * a);
   for (PetscInt a = 0; a < m; ++a) {
     lcp->d[a]   = cd->gf[cand[a]];
     lcp->act[a] = c->step.on_obstacle[cand[a]];
     dmax        = PetscMax(dmax, PetscAbsReal(lcp->d[a]));
-    for (PetscInt b2 = 0; b2 <= a; ++b2) lcp->G[a + (size_t)b2 * m] = lcp->G[b2 + (size_t)a * m] = NormalEntry(cs->S, n, c->step.normal, cand[a], cand[b2]) + RollerContactBorderEntry(&c->step, c->step.normal, c->step.normal, cand[a], cand[b2], n);
+    for (PetscInt b2 = 0; b2 <= a; ++b2) lcp->G[a + (size_t)b2 * m] = lcp->G[b2 + (size_t)a * m] = NormalEntry(cs->S, n, c->step.normal, cand[a], cand[b2]) + RollerContactBorderPair(&c->step, yn + 3 * a, yn + 3 * b2);
   }
+  PetscCall(PetscFree(yn));
   res->its = 0;
   /* TAO: the gradient G lam + d is a gap (a length): converge it far below the gaps of the free solution */
   if (cd->qp == CONTACT_QP_TAO && m > 0) PetscCall(RollerContactLCPTao(lcp, m, c->opt.rtol * dmax, c->step.t, lcp->lam, &res->its));

@@ -6,8 +6,9 @@
    bound; condensed on the candidates (contact_condensed.c) its dual is the box QP of contact_boxqp.c in
    x = (lambda_N, lambda_T): G = B^T S B, d = (gaps, slips of the free solution), lambda_N >= 0,
    |lambda_T| <= g. Coulomb is solved first directly by the semismooth Newton method (friction/coulomb.c), with
-   the velocity weakening mu(v) (v = |Delta s|/(2 dt) the slip speed) inside it, its first iterate at mu of the last
-   step's slip speeds; where that fails, with mu frozen per Newton solve and iterated about them (Anderson's
+   the velocity weakening mu(v) (v = |Delta s|/(2 dt) the slip speed) inside it, its first iterate the last solve's
+   multipliers (checkpointed) where they were in contact, with mu of their slips there, else the frictionless ones at
+   mu of the last step's slip speeds; where that fails, with mu frozen per Newton solve and iterated about them (Anderson's
    acceleration, contact_anderson.c). Without weakening, if Newton fails: the fixed point g = mu lambda_N of Tresca
    steps from the frictionless multipliers, then, after -contact_friction_max_it steps, Coulomb as one LCP by
    Lemke's method (contact_lemke.c), and if that ends on a ray the step fails with an error. With weakening the
@@ -39,6 +40,7 @@ PetscErrorCode RollerContactFrictionCreate(Roller ctx, RollerContact c)
   RollerFrictionRange(fr->law, fr->range);
   PetscCall(RollerContactBoxQPCreate(2 * nc, &fr->box));
   PetscCall(PetscMalloc7(2 * nc, &fr->state, nc, &fr->lam_n, nc, &fr->mu_n, 2 * nc, &fr->x, nc, &fr->node_state, 2 * nc, &fr->g, 2 * nc, &fr->y));
+  PetscCall(PetscCalloc1(2 * nc, &fr->warm));
   PetscCall(RollerContactAndersonCreate(2 * nc, 5, &fr->aa));
   PetscCall(PetscArrayzero(fr->node_state, nc));
   PetscCall(PetscMalloc1(nc, &c->acc.result.lambda_t));
@@ -59,10 +61,24 @@ PetscErrorCode RollerContactFrictionDestroy(MPI_Comm comm, RollerContactFriction
                           fr->count.steps, fr->count.newton_failures, fr->count.lemke_steps, fr->count.lagged_steps));
   PetscCall(RollerContactBoxQPDestroy(&fr->box));
   PetscCall(PetscFree7(fr->state, fr->lam_n, fr->mu_n, fr->x, fr->node_state, fr->g, fr->y));
+  PetscCall(PetscFree(fr->warm));
   PetscCall(RollerContactAndersonDestroy(&fr->aa));
   PetscCall(PetscFree3(fr->M, fr->q, fr->z));
   PetscCall(PetscFree(fr));
   *friction = NULL;
+  PetscFunctionReturn(0);
+}
+
+/* Before a step's (or stage's) solve: the multipliers of the last one (c->acc.result, a part of the checkpoint, so a
+   restart starts its first Newton solve where the uninterrupted run did), the semismooth Newton's first iterate. */
+PetscErrorCode RollerContactFrictionRemember(RollerContact c)
+{
+  const PetscInt nc = c->nodes.nc;
+
+  PetscFunctionBeginUser;
+  if (!c->friction) PetscFunctionReturn(0);
+  PetscCall(PetscArraycpy(c->friction->warm, c->acc.result.lambda, nc));
+  PetscCall(PetscArraycpy(c->friction->warm + nc, c->acc.result.lambda_t, nc));
   PetscFunctionReturn(0);
 }
 
@@ -144,9 +160,14 @@ static PetscErrorCode FrictionData(Roller ctx, RollerContact c, const PetscReal 
   const PetscInt        m = c->step.ncand, m2 = 2 * m, n = 2 * c->nodes.nc, *cand = c->step.cand;
   const PetscReal      *nr = c->step.normal, *tg = c->step.tangent, *xc = c->nodes.xc;
   const PetscScalar    *uf, *u2;
-  PetscReal             t2[2], dX, compliance = 0.0;
+  PetscReal             t2[2], dX, compliance = 0.0, *yn, *yt; /* the hub's rows of the candidates along n and t */
 
   PetscFunctionBeginUser;
+  PetscCall(PetscMalloc2(3 * m, &yn, 3 * m, &yt));
+  for (PetscInt a = 0; a < m; ++a) {
+    RollerContactBorderRow(&c->step, nr, cand[a], n, yn + 3 * a);
+    RollerContactBorderRow(&c->step, tg, cand[a], n, yt + 3 * a);
+  }
   SlipFrame(ctx, c->step.t, t2, &dX);
   if (RollerContactSheetMoves(c)) RollerContactSheetFree(ctx, c, &dX, &compliance); /* the sheet's own motion */
   PetscCall(RollerContactGather(c, ctx->state.prev, c->nodes.red2));                /* xi^{k-2} */
@@ -160,14 +181,15 @@ static PetscErrorCode FrictionData(Roller ctx, RollerContact c, const PetscReal 
     for (PetscInt b = 0; b < m; ++b) {
       const PetscInt j = cand[b];
 
-      fr->box.G[a + (size_t)b * m2]           = Entry(S, n, nr, nr, i, j) + RollerContactBorderEntry(&c->step, nr, nr, i, j, n);
-      fr->box.G[a + (size_t)(m + b) * m2]     = Entry(S, n, nr, tg, i, j) + RollerContactBorderEntry(&c->step, nr, tg, i, j, n);
-      fr->box.G[m + a + (size_t)b * m2]       = Entry(S, n, tg, nr, i, j) + RollerContactBorderEntry(&c->step, tg, nr, i, j, n);
-      fr->box.G[m + a + (size_t)(m + b) * m2] = Entry(S, n, tg, tg, i, j) + RollerContactBorderEntry(&c->step, tg, tg, i, j, n) + compliance;
+      fr->box.G[a + (size_t)b * m2]           = Entry(S, n, nr, nr, i, j) + RollerContactBorderPair(&c->step, yn + 3 * a, yn + 3 * b);
+      fr->box.G[a + (size_t)(m + b) * m2]     = Entry(S, n, nr, tg, i, j) + RollerContactBorderPair(&c->step, yn + 3 * a, yt + 3 * b);
+      fr->box.G[m + a + (size_t)b * m2]       = Entry(S, n, tg, nr, i, j) + RollerContactBorderPair(&c->step, yt + 3 * a, yn + 3 * b);
+      fr->box.G[m + a + (size_t)(m + b) * m2] = Entry(S, n, tg, tg, i, j) + RollerContactBorderPair(&c->step, yt + 3 * a, yt + 3 * b) + compliance;
     }
   }
   PetscCall(VecRestoreArrayRead(c->nodes.red, &uf));
   PetscCall(VecRestoreArrayRead(c->nodes.red2, &u2));
+  PetscCall(PetscFree2(yn, yt));
   PetscFunctionReturn(0);
 }
 

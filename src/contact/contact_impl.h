@@ -140,16 +140,18 @@ typedef struct {
 } RollerContactStep;
 
 /* -axle: the hub's part of S_eff = E^T A_eff^{-1} E = S + Yg W Yg^T between the components u of node i and v of node j
-   (model/axle.h: the step's W); 0 without the hub. */
-static inline PetscReal RollerContactBorderEntry(const RollerContactStep *st, const PetscReal u[2], const PetscReal v[2], PetscInt i, PetscInt j, PetscInt n)
+   (model/axle.h: the step's W) is a^T W b with a = u . Yg(i), b = v . Yg(j) (RollerContactBorderRow, 3 reals each, once
+   per node and direction: a step's G takes m^2 pairs); 0 without the hub. */
+static inline void RollerContactBorderRow(const RollerContactStep *st, const PetscReal u[2], PetscInt i, PetscInt n, PetscReal a[3])
 {
-  PetscReal a[3], b[3], r = 0.0;
+  for (PetscInt k = 0; k < 3; ++k) a[k] = st->Yg ? u[0] * st->Yg[k * n + 2 * i] + u[1] * st->Yg[k * n + 2 * i + 1] : 0.0;
+}
+
+static inline PetscReal RollerContactBorderPair(const RollerContactStep *st, const PetscReal a[3], const PetscReal b[3])
+{
+  PetscReal r = 0.0;
 
   if (!st->Yg) return 0.0;
-  for (PetscInt k = 0; k < 3; ++k) {
-    a[k] = u[0] * st->Yg[k * n + 2 * i] + u[1] * st->Yg[k * n + 2 * i + 1];
-    b[k] = v[0] * st->Yg[k * n + 2 * j] + v[1] * st->Yg[k * n + 2 * j + 1];
-  }
   for (PetscInt k = 0; k < 3; ++k)
     for (PetscInt l = 0; l < 3; ++l) r += a[k] * st->op->border->W[3 * k + l] * b[l];
   return r;
@@ -317,6 +319,7 @@ struct _n_RollerContactFriction {
   PetscReal            *x;                        /* 2 nc: the box QP's solution */
   PetscInt             *node_state;               /* nc: 0 off the sheet, 1 stick, 2 slip, of the accepted step */
   PetscReal            *g, *y;                    /* 2 nc: a fixed point's image (lambda_N, mu(v)) and its iterate */
+  PetscReal            *warm;                     /* 2 nc: (lambda_N, lambda_T) of every node after the last solve, the Newton's first iterate */
   RollerContactAnderson aa;                       /* the acceleration of the fixed points on mu(v) and (lambda_N, mu) */
   PetscReal            *M, *q, *z;                /* Lemke's LCP of 4 m unknowns (allocated when first needed, for lemke_cap) */
   PetscInt              lemke_cap, its, fallback; /* Lemke's allocation; the last solve's iterations and fallback */
@@ -358,6 +361,7 @@ PETSC_INTERN PetscErrorCode RollerContactFrictionNewton(Roller, RollerContact, P
 
 /* contact_friction.c */
 PETSC_INTERN PetscErrorCode RollerContactFrictionCreate(Roller, RollerContact);
+PETSC_INTERN PetscErrorCode RollerContactFrictionRemember(RollerContact); /* the last solve's multipliers, before a new solve */
 PETSC_INTERN PetscErrorCode RollerContactFrictionSolve(Roller, RollerContact, const PetscReal[], RollerContactLCP *, RollerContactResult *);
 PETSC_INTERN PetscErrorCode RollerContactFrictionInfo(Roller, RollerContact, const PetscReal[], RollerStepInfo *);
 PETSC_INTERN PetscErrorCode RollerContactFrictionState(RollerContact, PetscReal[]);

@@ -4,6 +4,7 @@
    exactly by an active-set method, or by a sequential TAO (-contact_condensed_qp tao). G and d are filled by
    the caller, column-major m x m in the arrays sized for nc. */
 #include "contact_impl.h"
+#include <petscblaslapack.h>
 
 PetscErrorCode RollerContactLCPCreate(PetscInt nc, RollerContactLCP *cd)
 {
@@ -18,23 +19,26 @@ PetscErrorCode RollerContactLCPCreate(PetscInt nc, RollerContactLCP *cd)
    (getrf); Gff is scratch of nf^2 entries. */
 PetscErrorCode RollerContactDenseSolve(const PetscReal G[], PetscInt m, const PetscInt F[], PetscInt nf, PetscBool spd, PetscReal Gff[], PetscReal r[], PetscReal y[])
 {
-  Mat Mff;
-  Vec rhs, sol;
+  PetscBLASInt n, one = 1, info, *piv = NULL;
 
   PetscFunctionBeginUser;
   for (PetscInt q = 0; q < nf; ++q)
     for (PetscInt p = 0; p < nf; ++p) Gff[p + (size_t)q * nf] = G[F[p] + (size_t)F[q] * m];
-  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, nf, nf, Gff, &Mff));
+  PetscCall(PetscBLASIntCast(nf, &n));
+  PetscCall(PetscArraycpy(y, r, nf));
+  /* LAPACK directly, as a dense Mat's factor and solve do it (a Mat made for each small solve cost more than it) */
   if (spd) {
-    PetscCall(MatSetOption(Mff, MAT_SPD, PETSC_TRUE));
-    PetscCall(MatCholeskyFactor(Mff, NULL, NULL));
-  } else PetscCall(MatLUFactor(Mff, NULL, NULL, NULL));
-  PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, nf, r, &rhs));
-  PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, nf, y, &sol));
-  PetscCall(MatSolve(Mff, rhs, sol));
-  PetscCall(VecDestroy(&rhs));
-  PetscCall(VecDestroy(&sol));
-  PetscCall(MatDestroy(&Mff));
+    PetscCallBLAS("LAPACKpotrf", LAPACKpotrf_("L", &n, Gff, &n, &info));
+    PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_MAT_CH_ZRPVT, "Contact: the condensed matrix of %" PetscInt_FMT " multipliers is not positive definite (LAPACK potrf info %d)", nf, (int)info);
+    PetscCallBLAS("LAPACKpotrs", LAPACKpotrs_("L", &n, &one, Gff, &n, y, &n, &info));
+  } else {
+    PetscCall(PetscMalloc1(nf, &piv));
+    PetscCallBLAS("LAPACKgetrf", LAPACKgetrf_(&n, &n, Gff, &n, piv, &info));
+    PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_MAT_LU_ZRPVT, "Contact: the condensed matrix of %" PetscInt_FMT " unknowns is singular (LAPACK getrf info %d)", nf, (int)info);
+    PetscCallBLAS("LAPACKgetrs", LAPACKgetrs_("N", &n, &one, Gff, &n, piv, y, &n, &info));
+    PetscCall(PetscFree(piv));
+  }
+  PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "Contact: LAPACK's dense solve, info %d", (int)info);
   PetscFunctionReturn(0);
 }
 

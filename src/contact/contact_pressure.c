@@ -90,6 +90,17 @@ PetscBool RollerContactHasFriction(RollerContact c)
   return c && c->friction ? PETSC_TRUE : PETSC_FALSE;
 }
 
+/* The last solve's multipliers of every Gamma_C node (the same on every rank), which the next solve's friction starts
+   from: a part of the run's state for the checkpoint. */
+PetscErrorCode RollerContactMultipliers(RollerContact c, PetscInt *nc, PetscReal **lambda, PetscReal **lambda_t)
+{
+  PetscFunctionBeginUser;
+  *nc       = c->nodes.nc;
+  *lambda   = c->acc.result.lambda;
+  *lambda_t = c->friction ? c->acc.result.lambda_t : NULL;
+  PetscFunctionReturn(0);
+}
+
 /* Whether the contact needs its row every step: the friction's dissipation (a cumulative column) or -contact_monitor. */
 PetscBool RollerContactWantsRow(RollerContact c)
 {

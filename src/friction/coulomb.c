@@ -16,6 +16,7 @@
    its force); otherwise *converged is false and the caller falls back on the fixed point of Tresca steps. A few
    dense LU solves instead of the fixed point's tens of QPs. */
 #include "friction/friction.h"
+#include <petscblaslapack.h>
 
 /* w = G x + d (G n x n, column-major), skipping the zero entries of x (the same sums as the contact's LCP slack). */
 static void Slack(PetscInt n, const PetscReal G[], const PetscReal d[], const PetscReal x[], PetscReal w[])
@@ -27,8 +28,9 @@ static void Slack(PetscInt n, const PetscReal G[], const PetscReal d[], const Pe
 }
 
 typedef struct {
-  PetscInt  *idx_n, *idx_t, *state;              /* unknown numbers in the reduced system (-1: none); state 0 off, 1 stick, 2 slip */
-  PetscReal *sign, *R, *rhs, *sol, *w, *x0, *x1; /* x0: the iterate, x1: the full step from it */
+  PetscInt     *idx_n, *idx_t, *state;              /* unknown numbers in the reduced system (-1: none); state 0 off, 1 stick, 2 slip */
+  PetscBLASInt *piv;                                /* the LU's pivots */
+  PetscReal    *sign, *R, *rhs, *sol, *w, *x0, *x1; /* x0: the iterate, x1: the full step from it */
 } CoulombWork;
 
 /* The states of the last iterate (x, w = G x + d); returns how many changed. */
@@ -58,8 +60,6 @@ static PetscErrorCode SolveStates(PetscInt m, const PetscReal G[], const PetscRe
 {
   const PetscInt m2 = 2 * m;
   PetscInt       k  = 0;
-  Mat            R;
-  Vec            rhs, sol;
 
   PetscFunctionBeginUser;
   for (PetscInt a = 0; a < m; ++a) cw->idx_n[a] = cw->state[a] ? k++ : -1;
@@ -92,14 +92,17 @@ static PetscErrorCode SolveStates(PetscInt m, const PetscReal G[], const PetscRe
         if (cw->idx_t[b] >= 0) cw->R[row + (size_t)cw->idx_t[b] * k] += gt;
       }
     }
-  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, k, k, cw->R, &R));
-  PetscCall(MatLUFactor(R, NULL, NULL, NULL));
-  PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, k, cw->rhs, &rhs));
-  PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, k, cw->sol, &sol));
-  PetscCall(MatSolve(R, rhs, sol));
-  PetscCall(VecDestroy(&rhs));
-  PetscCall(VecDestroy(&sol));
-  PetscCall(MatDestroy(&R));
+  { /* LAPACK's LU directly (a PETSc Mat made and destroyed for each of these small systems cost more than its solve) */
+    PetscBLASInt nb, one = 1, info;
+
+    PetscCall(PetscBLASIntCast(k, &nb));
+    PetscCall(PetscArraycpy(cw->sol, cw->rhs, k));
+    PetscCallBLAS("LAPACKgetrf", LAPACKgetrf_(&nb, &nb, cw->R, &nb, cw->piv, &info));
+    PetscCheck(info >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "Coulomb's states: LAPACK getrf argument %d illegal", (int)-info);
+    PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_MAT_LU_ZRPVT, "Coulomb's states: the system of %" PetscInt_FMT " unknowns is singular (zero pivot %d)", k, (int)info);
+    PetscCallBLAS("LAPACKgetrs", LAPACKgetrs_("N", &nb, &one, cw->R, &nb, cw->piv, cw->sol, &nb, &info));
+    PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "Coulomb's states: LAPACK getrs info %d", (int)info);
+  }
   for (PetscInt a = 0; a < m; ++a) {
     if (cw->idx_n[a] >= 0) x[a] = cw->sol[cw->idx_n[a]];
     if (cw->idx_t[a] >= 0) x[m + a] = cw->sol[cw->idx_t[a]];
@@ -143,7 +146,8 @@ static PetscReal Merit(PetscInt m, const PetscReal G[], const RollerObstacle *la
 
 /* mu(|v|) at the slips w (v = |w_T|/two_dt): mu into mu[], the linearization of the slip law at the
    nodes in contact into kv (kv[a] = lambda_N mu'(v) sign(w_T)/(2 dt), kv[m + a] = -lambda_N mu'(v) |v|); the largest
-   change of mu. */
+   change of mu at the nodes that slipped in the last solve (cw->state): only their mu enters the states' system; a
+   sticking node's or a free one's decides its state only, which the next States checks with the new mu. */
 static PetscReal WeakeningMu(PetscInt m, const RollerObstacle *law, PetscReal two_dt, const PetscReal x[], const PetscReal w[], const CoulombWork *cw, PetscReal mu[], PetscReal kv[])
 {
   PetscReal change = 0.0;
@@ -152,7 +156,7 @@ static PetscReal WeakeningMu(PetscInt m, const RollerObstacle *law, PetscReal tw
     const PetscReal v = PetscAbsReal(w[m + a]) / two_dt, sw = w[m + a] != 0.0 ? PetscSign(w[m + a]) : -cw->sign[a];
     PetscReal       dmu, mun                                = RollerFrictionMu(law, v, &dmu);
 
-    change    = PetscMax(change, PetscAbsReal(mun - mu[a]));
+    if (cw->state[a] == 2) change = PetscMax(change, PetscAbsReal(mun - mu[a]));
     mu[a]     = mun;
     kv[a]     = PetscMax(x[a], 0.0) * dmu * sw / two_dt;
     kv[m + a] = -PetscMax(x[a], 0.0) * dmu * v;
@@ -173,7 +177,7 @@ PetscErrorCode RollerFrictionCoulombNewton(PetscInt m, const PetscReal G[], cons
   PetscFunctionBeginUser;
   *converged = PETSC_FALSE;
   *its       = 0;
-  PetscCall(PetscMalloc3(m, &cw.idx_n, m, &cw.idx_t, m, &cw.state));
+  PetscCall(PetscMalloc4(m, &cw.idx_n, m, &cw.idx_t, m, &cw.state, 2 * m, &cw.piv));
   PetscCall(PetscMalloc7(m, &cw.sign, (size_t)4 * m * m, &cw.R, 2 * m, &cw.rhs, 2 * m, &cw.sol, 2 * m, &cw.w, 2 * m, &cw.x0, 2 * m, &cw.x1));
   for (PetscInt a = 0; a < m; ++a) {
     cw.state[a] = -1; /* no state yet: the first pass counts as a change */
@@ -220,7 +224,7 @@ PetscErrorCode RollerFrictionCoulombNewton(PetscInt m, const PetscReal G[], cons
     full = (PetscBool)(alpha == 1.0);
   }
   PetscCall(PetscFree(kv));
-  PetscCall(PetscFree3(cw.idx_n, cw.idx_t, cw.state));
+  PetscCall(PetscFree4(cw.idx_n, cw.idx_t, cw.state, cw.piv));
   PetscCall(PetscFree7(cw.sign, cw.R, cw.rhs, cw.sol, cw.w, cw.x0, cw.x1));
   PetscFunctionReturn(0);
 }

@@ -82,6 +82,14 @@ PetscErrorCode RollerCheckpointRegister(Roller ctx)
   PetscCall(RollerSchemeKept(ctx, &n, kept, names));
   for (PetscInt i = 0; i < n; ++i) PetscCall(RollerCheckpointAddVec(ctx, names[i], kept[i], NULL, NULL));
   if (RollerContactSheetMoves(ctx->contact)) PetscCall(RollerCheckpointAddReals(ctx, "sheet", 4, RollerContactSheetState(ctx->contact))); /* X^k, X^{k-1}, X^{k-2}, its case */
+  if (RollerContactHasFriction(ctx->contact)) {                                                                                           /* the last solve's multipliers: the first Newton iterate of the next */
+    PetscInt   nc;
+    PetscReal *lambda, *lambda_t;
+
+    PetscCall(RollerContactMultipliers(ctx->contact, &nc, &lambda, &lambda_t));
+    PetscCall(RollerCheckpointAddReals(ctx, "contact_lambda", nc, lambda));
+    PetscCall(RollerCheckpointAddReals(ctx, "friction_lambda_t", nc, lambda_t));
+  }
   if (ctx->axle.hub) {
     RollerHubState *s = &ctx->axle.hub->s;
 
