@@ -290,6 +290,7 @@ typedef struct {
   char       where_name[64]; /* its dataset ("nodes": the displacement's free nodes, ops.coordinates) */
   PetscInt   n;
   PetscReal *values;
+  PetscBool  optional; /* a checkpoint without it restarts with the values as they are (a start, not a state) */
 } RollerCheckpointItem;
 
 /* Checkpoint and restart (integrate/checkpoint*.c) */

@@ -156,9 +156,9 @@ PetscErrorCode RollerContactInfo(Roller ctx, RollerContact c, Vec xi, Vec Mxi, V
   PetscReal            gap_min, kkt;
 
   PetscFunctionBeginUser;
-  if (!c->acc.solved || t != c->step.t) { /* before the first step: no multipliers yet */
+  if (!c->acc.solved || t != c->step.t) { /* before the first step: no multipliers yet (a restart's are the checkpoint's) */
     PetscCall(RollerContactSetTime(ctx, c, t));
-    PetscCall(PetscArrayzero(res->lambda, c->nodes.nc));
+    if (c->acc.solved || !ctx->ck.restart[0]) PetscCall(PetscArrayzero(res->lambda, c->nodes.nc));
     res->its = 0;
     PetscCall(RollerContactGather(c, xi, c->nodes.red));
     PetscCall(RollerContactGaps(c, c->nodes.red, c->step.gap, &gap_min));

@@ -88,7 +88,9 @@ PetscErrorCode RollerCheckpointRegister(Roller ctx)
 
     PetscCall(RollerContactMultipliers(ctx->contact, &nc, &lambda, &lambda_t));
     PetscCall(RollerCheckpointAddReals(ctx, "contact_lambda", nc, lambda));
+    ctx->ck.items[ctx->ck.nitems - 1].optional = PETSC_TRUE; /* a frictionless press restarted with friction: no warm start */
     PetscCall(RollerCheckpointAddReals(ctx, "friction_lambda_t", nc, lambda_t));
+    ctx->ck.items[ctx->ck.nitems - 1].optional = PETSC_TRUE;
   }
   if (ctx->axle.hub) {
     RollerHubState *s = &ctx->axle.hub->s;
@@ -278,7 +280,8 @@ PetscErrorCode RollerCheckpointRead(Roller ctx, const char *path)
 /* After the scheme's set-up: the registered items (the vectors the scheme keeps beyond the levels, as the
    checkpoint holds them: re-made from the levels they would differ in the last bits, and a restart would not repeat
    the run exactly; the other components' state), each vector through the match of its points. A checkpoint without
-   one was written without the component that registered it: refused by name. */
+   one was written without the component that registered it: refused by name, unless it is optional (the friction's
+   first iterate: a checkpoint of a frictionless run restarts with friction from the frictionless multipliers). */
 PetscErrorCode RollerCheckpointReadItems(Roller ctx, const char *path)
 {
   PetscViewer viewer;
@@ -293,6 +296,7 @@ PetscErrorCode RollerCheckpointReadItems(Roller ctx, const char *path)
     PetscBool             has;
 
     PetscCall(PetscViewerHDF5HasDataset(viewer, item->name, &has));
+    if (!has && item->optional) continue;
     PetscCheck(has, ctx->comm, PETSC_ERR_FILE_UNEXPECTED, "-restart %s: refused, no %s in the checkpoint (written without the component that keeps it)", path, item->name);
     if (!item->v) {
       PetscCall(RealsView(ctx, viewer, item, PETSC_TRUE));
