@@ -36,8 +36,6 @@ VALID = {
     ("-obstacle_depth", "0"): "touching only", ("-friction", "0"): "frictionless",
     ("-rom_modes", "0"): "the modes below -rom_cutoff", ("-rom_cutoff", "0"): "the default cutoff",
     ("-rom_cutoff", "1e300"): "unused without -rom (with it: refused above the step's Nyquist frequency 1/(2 dt))",
-    ("-rom_residual_frequency", "0"): "the relaxed rubber's residual flexibility (the default)",
-    ("-rom_residual_frequency", "1e300"): "the glassy rubber's (unused without -rom and -rubber maxwell)",
     ("-friction_decay", "0"): "no weakening (needs -friction_static = -friction: refused here)",
     ("-contact_max_resolves", "0"): "no re-solve", ("-contact_margin", "0"): "the predicted gap only",
     ("-contact_margin", "-1"): "shrinks the candidate set (refused: > -r_outer)",

@@ -38,12 +38,14 @@ PETSC_INTERN PetscErrorCode RollerContactSetBasis(Roller, RollerContact, Mat, Ve
 /* -rom_residual: MacNeal's static residual flexibility of the Gamma_C dofs, with a stiffness's factorization (a KSP on
    the full layout) and its reduced V^T K V (dense nq x nq, column-major, every rank); after RollerContactSetBasis */
 PETSC_INTERN PetscErrorCode RollerContactSetResidualFlexibility(Roller, RollerContact, KSP, const PetscReal[]);
-PETSC_INTERN PetscErrorCode RollerContactResidualEnergy(RollerContact, Vec, Vec, PetscReal *);        /* E^k += its static energy (cur, prev) */
-PETSC_INTERN PetscErrorCode RollerContactResidualDissipation(RollerContact, Vec, Vec, PetscReal *);   /* D^k += its dissipation (cur, prev2) */
-PETSC_INTERN PetscErrorCode RollerContactResidualView(Roller, RollerContact, PetscViewer, PetscBool); /* R to a -rom_output file, or from one (load) */
-PETSC_INTERN PetscInt       RollerContactNodeCount(RollerContact);                                    /* Gamma_C nodes (0 without contact) */
-PETSC_INTERN PetscErrorCode RollerContactResidualLevelsBegin(RollerContact, const Vec[3]);            /* the full levels' u_C, before the reduction */
-PETSC_INTERN PetscErrorCode RollerContactResidualLevelsEnd(RollerContact, const Vec[3]);              /* the reduced levels' r = u_C - Phi q, f = R^-1 r */
+PETSC_INTERN PetscErrorCode RollerContactResidualEnergy(RollerContact, Vec, Vec, PetscReal *);                                                     /* E^k += its static energy (cur, prev) */
+PETSC_INTERN PetscErrorCode RollerContactResidualDissipation(RollerContact, Vec, Vec, PetscReal *, PetscReal *);                                   /* D^k += its update's (cur, prev2), the branches' into the second */
+PETSC_INTERN PetscErrorCode RollerContactResidualTrace(RollerContact, PetscReal *);                                                                /* tr R */
+PETSC_INTERN PetscErrorCode RollerContactSetResidualBranches(RollerContact, PetscInt, const PetscReal[], const PetscReal[], PetscReal, PetscReal); /* the viscoelastic residual: g, tau, kappa, dt */
+PETSC_INTERN PetscErrorCode RollerContactResidualView(Roller, RollerContact, PetscViewer, PetscBool);                                              /* R to a -rom_output file, or from one (load) */
+PETSC_INTERN PetscInt       RollerContactNodeCount(RollerContact);                                                                                 /* Gamma_C nodes (0 without contact) */
+PETSC_INTERN PetscErrorCode RollerContactResidualLevelsBegin(RollerContact, const Vec[3]);                                                         /* the full levels' u_C, before the reduction */
+PETSC_INTERN PetscErrorCode RollerContactResidualLevelsEnd(RollerContact, const Vec[3]);                                                           /* the reduced levels' r = u_C - Phi q, f = R^-1 r */
 PETSC_INTERN PetscErrorCode RollerContactResidualFunctionals(RollerContact, Vec, Vec);
 PETSC_INTERN PetscErrorCode RollerContactResidualAddFull(RollerContact, Vec, Vec);                                                         /* x (full layout) += E r of the level q */
 PETSC_INTERN PetscErrorCode RollerContactResidualRows(RollerContact, Vec, PetscReal **);                                                   /* a functional's Gamma_C rows */

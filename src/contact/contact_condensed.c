@@ -265,6 +265,7 @@ static PetscErrorCode FreeSolution(Roller ctx, RollerContact c, Condensed *cd, V
   PetscFunctionBeginUser;
   PetscCall(RollerStepOperatorSolve(ctx, c->step.op, b, cd->xf, c->step.t));
   PetscCall(RollerContactGather(c, cd->xf, c->nodes.red));
+  PetscCall(RollerContactResidualAddHistory(c, c->nodes.red)); /* -rom_residual with the branches: R h/C */
   PetscCall(VecGetArrayRead(c->nodes.red, &u));
   for (PetscInt i = 0; i < c->nodes.nc; ++i) cd->gf[i] = PetscRealPart(u[2 * i]) * c->step.normal[0] + PetscRealPart(u[2 * i + 1]) * c->step.normal[1] - c->step.lower[i];
   PetscCall(VecRestoreArrayRead(c->nodes.red, &u));

@@ -13,6 +13,7 @@
    contact_reduced.c     -rom: the basis' Gamma_C rows Phi, the window's gathers Phi q, the force Phi^T f, S's columns
    contact_residual.c    -rom_residual: MacNeal's residual flexibility R, S + R, each level's residual R f_C, its energy
    contact_residual_levels.c  the residual in the fields, functionals and -rom_output file; the initial levels' remainder
+   contact_residual_branches.c  the residual of the Maxwell rubber: its branches as standard linear solids
                          (their types and functions: contact_reduced.h)
    Friction (only with -friction > 0; docs/friction.md), a part of the condensed solver; the law mu(v) and Coulomb's
    law on dense data by the semismooth Newton method are the friction layer's (friction/law.c, friction/coulomb.c),

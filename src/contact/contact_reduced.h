@@ -20,13 +20,21 @@ typedef struct {
   PetscInt         stamp[ROLLER_GATHER_CACHE], next;
   PetscReal       *val[ROLLER_GATHER_CACHE]; /* 2 nc: the window's entries */
 } RollerContactGatherCache;
+/* With the Maxwell rubber the residual is viscoelastic (contact_residual_branches.c): a level's slot holds, after r and
+   f_C, its coefficients a (r = R a), and per branch b_i and w_i = R b_i; hist is the new level's r before its force,
+   from the level two back (from); kappa the branches' deviatoric share of the residual's stiffness. */
 typedef struct {
-  PetscReal    *R;
-  PetscReal    *wc;
-  PetscReal    *u0;    /* 3 x 2 nc during the set-up: the initial levels' Gamma_C displacements (NULL from rest) */
-  PetscInt      nslot; /* the vectors that carry a residual (r, f_C: 4 nc reals each), by object id */
-  PetscObjectId id[ROLLER_RESIDUAL_SLOTS];
-  PetscReal    *slot[ROLLER_RESIDUAL_SLOTS];
+  PetscReal       *R;
+  PetscReal       *wc;
+  PetscReal       *u0;    /* 3 x 2 nc during the set-up: the initial levels' Gamma_C displacements (NULL from rest) */
+  PetscInt         nslot; /* the vectors that carry a residual ((2 + (nb ? 1 + 2 nb : 0)) x 2 nc reals each), by object id */
+  PetscObjectId    id[ROLLER_RESIDUAL_SLOTS];
+  PetscReal       *slot[ROLLER_RESIDUAL_SLOTS];
+  PetscInt         nb;                                                      /* branches (0: the elastic residual) */
+  PetscReal        kappa, g[ROLLER_MAX_BRANCHES], rho[ROLLER_MAX_BRANCHES]; /* rho_i = dt/tau_i (the midpoint rule over 2 dt) */
+  PetscReal        cinv;                                                    /* 1/C: the flexibility of a step's force, R/C */
+  PetscReal       *hist;                                                    /* 2 nc */
+  const PetscReal *from;                                                    /* the slot of the level two back (NULL: at rest) */
 } RollerContactResidual;
 
 PETSC_INTERN PetscErrorCode RollerContactReducedGather(RollerContact, Vec, Vec);
@@ -38,8 +46,14 @@ PETSC_INTERN PetscErrorCode RollerContactReducedResidual(RollerContact, const Ro
 PETSC_INTERN void           RollerContactReducedAddFlexibility(RollerContact, PetscInt, PetscReal[]);      /* S's column j += R's */
 PETSC_INTERN PetscErrorCode RollerContactReducedAddResidual(RollerContact, Vec, Vec);                      /* a gather's red += r of q */
 PETSC_INTERN PetscErrorCode RollerContactResidualDestroy(RollerContact);
-PETSC_INTERN PetscErrorCode RollerContactResidualGatherFull(RollerContact, Vec, PetscReal[]); /* Gamma_C rows of a full-layout Vec */
-PETSC_INTERN PetscErrorCode RollerContactResidualOf(RollerContact, Vec, PetscReal **);        /* a level's (r, f_C), or NULL */
-PETSC_INTERN PetscErrorCode RollerContactResidualKeep(RollerContact, Vec, PetscReal **);      /* ... kept for the Vec (made if none), zeroed */
+PETSC_INTERN PetscErrorCode RollerContactResidualGatherFull(RollerContact, Vec, PetscReal[]);                                         /* Gamma_C rows of a full-layout Vec */
+PETSC_INTERN PetscErrorCode RollerContactResidualOf(RollerContact, Vec, PetscReal **);                                                /* a level's (r, f_C), or NULL */
+PETSC_INTERN PetscErrorCode RollerContactResidualKeep(RollerContact, Vec, PetscReal **);                                              /* ... kept for the Vec (made if none), zeroed */
+PETSC_INTERN PetscErrorCode RollerContactResidualBegin(RollerContact, Vec);                                                           /* before a step's solve: the level two back, R h/C */
+PETSC_INTERN PetscErrorCode RollerContactResidualAddHistory(RollerContact, Vec);                                                      /* a free solution's gather += R h/C */
+PETSC_INTERN PetscInt       RollerContactResidualSize(RollerContact);                                                                 /* a slot's reals */
+PETSC_INTERN void           RollerContactResidualBranchesUpdate(RollerContact, PetscReal[]);                                          /* a, b_i, w_i of a new level from r, f_C and from */
+PETSC_INTERN void           RollerContactResidualLevelEnergy(RollerContact, const PetscReal[], PetscReal *);                          /* e = 1/2 a . r + kappa/2 sum g_i (a - b_i) . (r - w_i) */
+PETSC_INTERN void           RollerContactResidualBranchDissipation(RollerContact, const PetscReal[], const PetscReal[], PetscReal *); /* of the branches' update between two levels */
 
 #endif

@@ -37,6 +37,7 @@ PetscErrorCode RollerContactSetResidualFlexibility(Roller ctx, RollerContact c, 
 
   PetscFunctionBeginUser;
   PetscCheck(c->nodes.phi, ctx->comm, PETSC_ERR_ORDER, "The residual flexibility needs the basis' Gamma_C rows first");
+  PetscCall(PetscFree(c->nodes.residual.R)); /* an earlier one (rom.c: R of the storage stiffness, for kappa) */
   {
     Mat K;
 
@@ -95,18 +96,30 @@ PetscErrorCode RollerContactSetResidualFlexibility(Roller ctx, RollerContact c, 
   }
   for (PetscInt j = 0; j < n; ++j)
     for (PetscInt i = 0; i < j; ++i) R[i + (size_t)j * n] = R[j + (size_t)i * n] = 0.5 * (R[i + (size_t)j * n] + R[j + (size_t)i * n]);
-  c->nodes.residual.R = R;
+  c->nodes.residual.R    = R;
+  c->nodes.residual.cinv = 1.0;
   PetscFunctionReturn(0);
 }
 
-/* Column j of the condensed S (2 nc entries) plus R's. */
+/* tr R */
+PetscErrorCode RollerContactResidualTrace(RollerContact c, PetscReal *tr)
+{
+  const PetscInt n = 2 * c->nodes.nc;
+
+  PetscFunctionBeginUser;
+  *tr = 0.0;
+  for (PetscInt i = 0; c->nodes.residual.R && i < n; ++i) *tr += c->nodes.residual.R[i + (size_t)i * n];
+  PetscFunctionReturn(0);
+}
+
+/* Column j of the condensed S (2 nc entries) plus R's (over C with the branches: contact_residual_branches.c). */
 void RollerContactReducedAddFlexibility(RollerContact c, PetscInt j, PetscReal col[])
 {
   const PetscInt   n = 2 * c->nodes.nc;
-  const PetscReal *r = c->nodes.residual.R + (size_t)j * n;
+  const PetscReal *r = c->nodes.residual.R + (size_t)j * n, ci = c->nodes.residual.cinv;
 
   if (!c->nodes.residual.R) return;
-  for (PetscInt i = 0; i < n; ++i) col[i] += r[i];
+  for (PetscInt i = 0; i < n; ++i) col[i] += ci * r[i];
 }
 
 /* The residual's 2 n reals (r, then f_C) of a level's Vec, found by the Vec's object id (unique in the run, never
@@ -128,30 +141,32 @@ PetscErrorCode RollerContactResidualOf(RollerContact c, Vec v, PetscReal **r)
 PetscErrorCode RollerContactResidualKeep(RollerContact c, Vec v, PetscReal **r)
 {
   RollerContactResidual *rs = &c->nodes.residual;
-  const PetscInt         n  = 2 * c->nodes.nc;
+  const PetscInt         n  = RollerContactResidualSize(c);
 
   PetscFunctionBeginUser;
   PetscCall(RollerContactResidualOf(c, v, r));
   if (!*r) {
     PetscCheck(rs->nslot < ROLLER_RESIDUAL_SLOTS, c->comm, PETSC_ERR_PLIB, "-rom_residual: more than %d vectors carry a residual", ROLLER_RESIDUAL_SLOTS);
     PetscCall(PetscObjectGetId((PetscObject)v, &rs->id[rs->nslot]));
-    PetscCall(PetscMalloc1(2 * n, &rs->slot[rs->nslot]));
+    PetscCall(PetscMalloc1(n, &rs->slot[rs->nslot]));
     *r = rs->slot[rs->nslot++];
   }
-  PetscCall(PetscArrayzero(*r, 2 * n));
+  PetscCall(PetscArrayzero(*r, n));
   PetscFunctionReturn(0);
 }
 
 /* The residual r = R f_C of the solve's multipliers, kept for its solution xi (the Vec keeps it as it moves
-   through the levels; a Vec without one has none). */
+   through the levels; a Vec without one has none); with the branches r = R h/C + R f_C/C and the level's a, b_i, w_i. */
 PetscErrorCode RollerContactReducedResidual(RollerContact c, const RollerContactResult *res, Vec xi)
 {
-  const PetscInt n = 2 * c->nodes.nc;
-  PetscReal     *r;
+  const PetscInt  n  = 2 * c->nodes.nc;
+  const PetscReal ci = c->nodes.residual.cinv;
+  PetscReal      *r;
 
   PetscFunctionBeginUser;
   if (!c->nodes.residual.R) PetscFunctionReturn(0);
   PetscCall(RollerContactResidualKeep(c, xi, &r));
+  if (c->nodes.residual.nb) PetscCall(PetscArraycpy(r, c->nodes.residual.hist, n));
   for (PetscInt i = 0; i < c->nodes.nc; ++i) {
     const PetscReal lt = res->lambda_t ? res->lambda_t[i] : 0.0;
     PetscReal      *f  = r + n + 2 * i;
@@ -162,9 +177,10 @@ PetscErrorCode RollerContactReducedResidual(RollerContact c, const RollerContact
       const PetscReal *col = c->nodes.residual.R + (size_t)(2 * i + d) * n;
 
       if (f[d] == 0.0) continue;
-      for (PetscInt k = 0; k < n; ++k) r[k] += col[k] * f[d];
+      for (PetscInt k = 0; k < n; ++k) r[k] += col[k] * (ci * f[d]);
     }
   }
+  RollerContactResidualBranchesUpdate(c, r);
   PetscFunctionReturn(0);
 }
 
@@ -192,7 +208,8 @@ PetscErrorCode RollerContactReducedAddResidual(RollerContact c, Vec q, Vec red)
 /* The residual's energy in a three-level scheme's balance (section 2: the force f^k of step k works on
    D = u^k - u^{k-2}). With r = R f, E_r^k = 1/4 (f^k . r^k + f^{k-1} . r^{k-1}) and
    D_r^k = 1/4 (f^k - f^{k-2}) . (r^k - r^{k-2}) >= 0 give E_r^k - E_r^{k-1} = 1/2 f^k . (r^k - r^{k-2}) - D_r^k
-   exactly: the memoryless residual is the static energy E_r (added to E) and the dissipation D_r (the contact's). */
+   exactly: the memoryless residual is the static energy E_r (added to E) and the dissipation D_r (the contact's).
+   With the branches E_r^k = (e^k + e^{k-1})/2 and the branches' D_b^k besides (contact_residual_branches.c). */
 /* The dots f_u . r_u, f_v . r_v, f_u . r_v, f_v . r_u of the residuals of two levels (0 for a level without one). */
 static PetscErrorCode Dots(RollerContact c, Vec u, Vec v, PetscReal d[4])
 {
@@ -216,23 +233,38 @@ static PetscErrorCode Dots(RollerContact c, Vec u, Vec v, PetscReal d[4])
 
 PetscErrorCode RollerContactResidualEnergy(RollerContact c, Vec cur, Vec prev, PetscReal *energy)
 {
-  PetscReal d[4];
+  PetscReal *a, *b, e[2];
 
   PetscFunctionBeginUser;
   if (!c || !c->nodes.residual.R) PetscFunctionReturn(0);
-  PetscCall(Dots(c, cur, prev, d));
-  *energy += 0.25 * (d[0] + d[1]);
+  PetscCall(RollerContactResidualOf(c, cur, &a));
+  PetscCall(RollerContactResidualOf(c, prev, &b));
+  if (c->nodes.residual.nb) { /* kept in the slot */
+    const PetscInt last = RollerContactResidualSize(c) - 1;
+
+    e[0] = a ? a[last] : 0.0;
+    e[1] = b ? b[last] : 0.0;
+  } else {
+    RollerContactResidualLevelEnergy(c, a, &e[0]);
+    RollerContactResidualLevelEnergy(c, b, &e[1]);
+  }
+  *energy += 0.5 * (e[0] + e[1]);
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode RollerContactResidualDissipation(RollerContact c, Vec cur, Vec prev2, PetscReal *dissipation)
+/* contact_dissipation += 1/4 (f^k - f^{k-2}) . (r^k - r^{k-2}); viscous_dissipation += the branches' D_b^k */
+PetscErrorCode RollerContactResidualDissipation(RollerContact c, Vec cur, Vec prev2, PetscReal *dissipation, PetscReal *viscous)
 {
-  PetscReal d[4];
+  PetscReal d[4] = {0.0, 0.0, 0.0, 0.0}, *a, *b;
 
   PetscFunctionBeginUser;
   if (!c || !c->nodes.residual.R) PetscFunctionReturn(0);
   PetscCall(Dots(c, cur, prev2, d));
-  *dissipation += 0.25 * (d[0] + d[1] - d[2] - d[3]); /* 1/4 (f^k - f^{k-2}) . (r^k - r^{k-2}) */
+  *dissipation += 0.25 * (d[0] + d[1] - d[2] - d[3]);
+  if (!c->nodes.residual.nb) PetscFunctionReturn(0);
+  PetscCall(RollerContactResidualOf(c, cur, &a));
+  PetscCall(RollerContactResidualOf(c, prev2, &b));
+  RollerContactResidualBranchDissipation(c, a, b, viscous);
   PetscFunctionReturn(0);
 }
 
@@ -242,6 +274,7 @@ PetscErrorCode RollerContactResidualDestroy(RollerContact c)
   PetscCall(PetscFree(c->nodes.residual.R));
   PetscCall(PetscFree(c->nodes.residual.wc));
   PetscCall(PetscFree(c->nodes.residual.u0));
+  PetscCall(PetscFree(c->nodes.residual.hist));
   for (PetscInt k = 0; k < c->nodes.residual.nslot; ++k) PetscCall(PetscFree(c->nodes.residual.slot[k]));
   c->nodes.residual.nslot = 0;
   PetscFunctionReturn(0);

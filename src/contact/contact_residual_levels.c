@@ -69,6 +69,7 @@ PetscErrorCode RollerContactResidualView(Roller ctx, RollerContact c, PetscViewe
       PetscCall(VecRestoreArrayRead(v, &a));
     }
     PetscCallMPI(MPI_Bcast(c->nodes.residual.R, (PetscMPIInt)(n * n), MPIU_REAL, 0, ctx->comm));
+    c->nodes.residual.cinv = 1.0;
   } else {
     PetscScalar *a;
 
@@ -103,7 +104,7 @@ PetscErrorCode RollerContactResidualLevelsBegin(RollerContact c, const Vec lev[3
   PetscFunctionReturn(0);
 }
 
-/* ... and after R is known, each reduced level q (the K-orthogonal projection) carries the remainder
+/* ... and after R (and the branches) are known, each reduced level q (the K-orthogonal projection) carries the remainder
    r = u_C - Phi q with the force f_C = R^{-1} r (a Cholesky factorization of R): for a state held by contact forces,
    r = R f_C exactly and f_C is that force (0 away from the contact, to the basis' truncation). */
 PetscErrorCode RollerContactResidualLevelsEnd(RollerContact c, const Vec lev[3])
@@ -151,6 +152,16 @@ PetscErrorCode RollerContactResidualLevelsEnd(RollerContact c, const Vec lev[3])
     PetscCall(VecGetArrayRead(x, &xa));
     for (PetscInt i = 0; i < n; ++i) r[n + i] = PetscRealPart(xa[i]);
     PetscCall(VecRestoreArrayRead(x, &xa));
+    if (c->nodes.residual.nb) { /* the branches start unstretched (b_i = w_i = 0, as the full model's z_i): a = R^{-1} r, f_C = (1 + kappa sum g_i) a */
+      PetscReal G = 0.0;
+
+      for (PetscInt i = 0; i < c->nodes.residual.nb; ++i) G += c->nodes.residual.g[i];
+      for (PetscInt i = 0; i < n; ++i) {
+        r[2 * n + i] = r[n + i];
+        r[n + i] *= 1.0 + c->nodes.residual.kappa * G;
+      }
+      RollerContactResidualLevelEnergy(c, r, &r[RollerContactResidualSize(c) - 1]);
+    }
   }
   PetscCall(VecDestroy(&x));
   PetscCall(VecDestroy(&b));

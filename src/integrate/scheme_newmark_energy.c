@@ -61,7 +61,7 @@ PetscErrorCode RollerNewmarkBalance(RollerScheme s, Roller ctx, RollerStepInfo *
   }
   if (nm->mx) info->viscous_dissipation += RollerMaxwellDissipation(nm->mx, ctx);
   if (ctx->contact) PetscCall(RollerContactEnergyAdd(ctx, ctx->contact, ctx->state.prev2, ctx->state.time - 2.0 * dt, 0.5, info));
-  if (ctx->contact) PetscCall(RollerContactResidualDissipation(ctx->contact, ctx->state.cur, ctx->state.prev2, &info->contact_dissipation)); /* -rom_residual */
+  if (ctx->contact) PetscCall(RollerContactResidualDissipation(ctx->contact, ctx->state.cur, ctx->state.prev2, &info->contact_dissipation, &info->viscous_dissipation)); /* -rom_residual */
   if (ctx->axle.on) PetscCall(RollerHubBalance(ctx, nm->beta, info));
   PetscFunctionReturn(0);
 }

@@ -125,7 +125,7 @@ static PetscErrorCode UnitPassiveDiagonal(Mat A)
 
 /*
   RollerStepOperatorCreate - A = c_M M + c_K K + c_D K_d (M, K, K_d of ctx->ops; c_D != 0 only with the Maxwell
-  branches, whose K_d has K's pattern), factored: the matrix of a step (or a stage) of a time scheme. With G (the
+  branches, whose K_d has K's pattern, or with -rom contains the diagonal K_r's), factored: the matrix of a step (or a stage) of a time scheme. With G (the
   gyroscopic matrix of the centred Coriolis term, or NULL), A = A0 - c_G G, A0 = c_M M + c_K K + c_D K_d:
   non-symmetric, factored by LU (RollerStepOperatorUpdateGyroscopic changes c_G).
 */
@@ -138,9 +138,15 @@ PetscErrorCode RollerStepOperatorCreate(Roller ctx, PetscReal c_M, PetscReal c_K
   op->c_D = c_D;
   op->id  = id;
   PetscCheck(c_D == 0 || ctx->ops.Kd, ctx->comm, PETSC_ERR_PLIB, "A step matrix with the Maxwell branches needs K_d (-rubber maxwell)");
-  PetscCall(MatDuplicate(ctx->ops.K, MAT_COPY_VALUES, &op->A));
-  PetscCall(MatScale(op->A, c_K));
-  if (c_D != 0) PetscCall(MatAXPY(op->A, c_D, ctx->ops.Kd, SAME_NONZERO_PATTERN));
+  if (c_D != 0 && ctx->ops.reduced) { /* -rom: K_r diagonal, inside the dense pattern of K_d,r */
+    PetscCall(MatDuplicate(ctx->ops.Kd, MAT_COPY_VALUES, &op->A));
+    PetscCall(MatScale(op->A, c_D));
+    PetscCall(MatAXPY(op->A, c_K, ctx->ops.K, SUBSET_NONZERO_PATTERN));
+  } else {
+    PetscCall(MatDuplicate(ctx->ops.K, MAT_COPY_VALUES, &op->A));
+    PetscCall(MatScale(op->A, c_K));
+    if (c_D != 0) PetscCall(MatAXPY(op->A, c_D, ctx->ops.Kd, SAME_NONZERO_PATTERN));
+  }
   if (c_M != 0) PetscCall(MatAXPY(op->A, c_M, ctx->ops.M, UNKNOWN_NONZERO_PATTERN)); /* T^T M T (massless contact nodes) couples more nodes than K */
   if (G) {
     PetscCall(PetscObjectReference((PetscObject)G));

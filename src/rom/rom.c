@@ -6,8 +6,7 @@
 
 PetscErrorCode RollerRomSetFromOptions(Roller ctx)
 {
-  PetscBool on = PETSC_FALSE, residual = PETSC_TRUE;
-  PetscReal resfreq                   = 0.0;
+  PetscBool on = PETSC_FALSE, residual = PETSC_TRUE, branches = PETSC_TRUE;
   char      input[PETSC_MAX_PATH_LEN] = "", output[PETSC_MAX_PATH_LEN] = "";
   PetscInt  modes  = 0;
   PetscReal cutoff = 0.0;
@@ -18,21 +17,21 @@ PetscErrorCode RollerRomSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsInt("-rom_modes", "Modes kept (0: those below -rom_cutoff)", NULL, modes, &modes, NULL));
   PetscCall(PetscOptionsReal("-rom_cutoff", "Cutoff frequency of the kept modes, cycles per unit time (0: the default, the highest frequency the time step resolves to -ts_phase_error, -ts_view)", NULL, cutoff, &cutoff, NULL));
   PetscCall(PetscOptionsBool("-rom_residual", "With contact: MacNeal's static residual flexibility of the modes above the cutoff at Gamma_C (false: the modes alone, whose patch is too stiff)", NULL, residual, &residual, NULL));
-  PetscCall(PetscOptionsReal("-rom_residual_frequency", "With -rubber maxwell: the residual flexibility is the rubber's storage stiffness at this frequency, cycles per unit time (0: the relaxed rubber's)", NULL, resfreq, &resfreq, NULL));
+  PetscCall(PetscOptionsBool("-rom_residual_branches", "With -rubber maxwell: the residual flexibility relaxes with the rubber's branches (false: the relaxed rubber's, elastic)", NULL, branches, &branches, NULL));
   PetscCall(PetscOptionsString("-rom_output", "Save the reduced basis (and the residual flexibility) to this HDF5 file, for -rom_input of runs on the same mesh and rubber", NULL, output, output, sizeof(output), NULL));
   PetscCall(PetscOptionsString("-rom_input", "Read the reduced basis from this -rom_output file instead of computing it (refused if made for another mesh, rubber, cutoff or contact)", NULL, input, input, sizeof(input), NULL));
   PetscOptionsEnd();
   RollerCheckOption(ctx->comm, "-rom_modes", (PetscReal)modes, modes >= 0, ">= 0 (0: from -rom_cutoff)");
   RollerCheckOption(ctx->comm, "-rom_cutoff", cutoff, cutoff >= 0, ">= 0 (0: the default)");
-  RollerCheckOption(ctx->comm, "-rom_residual_frequency", resfreq, resfreq >= 0, ">= 0 (0: the relaxed rubber)");
   if (!on) PetscFunctionReturn(0);
   PetscCheck(!ctx->init.mms, ctx->comm, PETSC_ERR_ARG_INCOMP, "-rom steps the roller's own loads: -mms is the full model's");
   PetscCheck(!ctx->ck.restart[0], ctx->comm, PETSC_ERR_SUP, "-rom with -restart %s: a checkpoint holds the full model's nodal state", ctx->ck.restart);
   PetscCall(PetscNew(&ctx->rom));
-  ctx->rom->modes_req          = modes;
-  ctx->rom->cutoff             = cutoff;
-  ctx->rom->residual           = residual;
-  ctx->rom->residual_frequency = resfreq;
+  ctx->rom->modes_req         = modes;
+  ctx->rom->cutoff            = cutoff;
+  ctx->rom->residual          = residual;
+  ctx->rom->residual_branches = branches;
+  ctx->rom->kappa             = -1.0; /* no viscoelastic residual (set with it: Residual, RollerRomLoadResidual) */
   PetscCall(PetscStrncpy(ctx->rom->input, input, sizeof(input)));
   PetscCall(PetscStrncpy(ctx->rom->output, output, sizeof(output)));
   PetscFunctionReturn(0);
@@ -73,16 +72,18 @@ static PetscErrorCode View(Roller ctx, RollerRom rom)
                         ctx->axle.on ? " + 3 constraint modes of the hub (-axle: its unknowns kept)" : "", rom->nq, N, rom->nmodes ? (double)PetscSqrtReal(rom->lambda[rom->nmodes - 1] / ctx->material.density) : 0.0,
                         rom->nmodes ? (double)(PetscSqrtReal(rom->lambda[rom->nmodes - 1] / ctx->material.density) * ctx->ts.dt) : 0.0, (double)rom->offdiag, rom->t_modes, rom->input[0] ? " read from -rom_input " : "", rom->input, rom->t_reduce, rom->t_residual,
                         ctx->contact && rom->residual ? "with contact: MacNeal's static residual flexibility of the modes above the cutoff at the Gamma_C dofs, -rom_residual" : "no residual flexibility"));
+  if (rom->kappa >= 0)
+    PetscCall(PetscPrintf(ctx->comm, "roller: -rom: the residual relaxes with the rubber's %" PetscInt_FMT " branches (-rom_residual_branches), their share of its stiffness kappa %.4f (R(c) ~ R/(1 + kappa c) for the storage stiffness K + c K_d)\n",
+                          ctx->material.nbranch, (double)rom->kappa));
   PetscFunctionReturn(0);
 }
 
-/* MacNeal's residual flexibility at Gamma_C from K's factorization (the eigensolver's, shift 0) and V^T K V; with the
-   Maxwell rubber and -rom_residual_frequency F, of the storage stiffness at F, K + c K_d with
-   c = sum_i g_i (w tau_i)^2 / (1 + (w tau_i)^2), w = 2 pi F (its own Cholesky factorization). */
-static PetscErrorCode Residual(Roller ctx, RollerRom rom, Mat Kd)
+/* MacNeal's residual flexibility at Gamma_C of a stiffness K + c K_d: from K's factorization (the eigensolver's, shift
+   0) and V^T K V at c = 0, else from its own Cholesky factorization. */
+static PetscErrorCode ResidualOf(Roller ctx, RollerRom rom, Mat Kd, PetscReal c)
 {
   const PetscInt nq = rom->nq;
-  PetscReal     *Kr, c = 0.0;
+  PetscReal     *Kr;
   ST             st;
   KSP            ksp;
 
@@ -91,11 +92,6 @@ static PetscErrorCode Residual(Roller ctx, RollerRom rom, Mat Kd)
   PetscCall(STGetKSP(st, &ksp));
   PetscCall(PetscCalloc1((size_t)nq * nq, &Kr));
   for (PetscInt i = 0; i < nq; ++i) Kr[i + (size_t)i * nq] = rom->lambda[i];
-  for (PetscInt i = 0; Kd && i < ctx->material.nbranch; ++i) {
-    const PetscReal wt = 2 * PETSC_PI * rom->residual_frequency * ctx->material.tau[i];
-
-    c += ctx->material.g[i] * wt * wt / (1.0 + wt * wt);
-  }
   if (c > 0) {
     Mat        K, Keff, KdV;
     KSP        kk;
@@ -119,6 +115,38 @@ static PetscErrorCode Residual(Roller ctx, RollerRom rom, Mat Kd)
     PetscCall(MatDestroy(&Keff));
   } else PetscCall(RollerContactSetResidualFlexibility(ctx, ctx->contact, ksp, Kr));
   PetscCall(PetscFree(Kr));
+  PetscFunctionReturn(0);
+}
+
+/* The residual flexibility R of the relaxed rubber; with the Maxwell rubber's branches (-rom_residual_branches) also
+   kappa, their share of the residual's stiffness: the storage stiffness K + c K_d has R(c) ~ R/(1 + kappa c)
+   (contact_residual_branches.c), kappa from the traces at c1 = sum_i g_i/2, half the glassy rubber's,
+   tr R/tr R(c1) = 1 + kappa c1 (R(c1) a second factorization and 2 nc solves, then discarded). */
+static PetscErrorCode Residual(Roller ctx, RollerRom rom, Mat Kd)
+{
+  PetscReal c1 = 0.0, tr1 = 0.0, tr0;
+
+  PetscFunctionBeginUser;
+  rom->kappa = -1.0;
+  if (Kd && rom->residual_branches) {
+    for (PetscInt i = 0; i < ctx->material.nbranch; ++i) c1 += 0.5 * ctx->material.g[i];
+    PetscCall(ResidualOf(ctx, rom, Kd, c1));
+    PetscCall(RollerContactResidualTrace(ctx->contact, &tr1));
+  }
+  PetscCall(ResidualOf(ctx, rom, Kd, 0.0));
+  if (c1 > 0) {
+    PetscCall(RollerContactResidualTrace(ctx->contact, &tr0));
+    rom->kappa = (tr0 / tr1 - 1.0) / c1;
+  }
+  PetscFunctionReturn(0);
+}
+
+/* The viscoelastic residual's branches, once R and kappa are known (computed or read). */
+static PetscErrorCode ResidualBranches(Roller ctx, RollerRom rom)
+{
+  PetscFunctionBeginUser;
+  if (rom->kappa < 0) PetscFunctionReturn(0);
+  PetscCall(RollerContactSetResidualBranches(ctx->contact, ctx->material.nbranch, ctx->material.g, ctx->material.tau, rom->kappa, ctx->ts.dt));
   PetscFunctionReturn(0);
 }
 
@@ -155,6 +183,7 @@ PetscErrorCode RollerRomSetUp(Roller ctx)
   PetscCall(PetscTime(&t2));
   if (ctx->contact && rom->residual && rom->input[0]) PetscCall(RollerRomLoadResidual(ctx, rom, rom->input));
   else if (ctx->contact && rom->residual) PetscCall(Residual(ctx, rom, Kd));
+  if (ctx->contact && rom->residual) PetscCall(ResidualBranches(ctx, rom));
   PetscCall(MatDestroy(&Kd));
   if (ctx->contact && rom->residual) { /* the initial levels' Gamma_C remainder, with its force */
     const Vec lev[3] = {ctx->state.cur, ctx->state.prev, ctx->state.prev2};

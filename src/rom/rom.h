@@ -29,7 +29,8 @@ struct _n_RollerRom {
   PetscReal      offdiag;                                               /* max |V^T K V - diag| / max lambda, max |V^T M V - I|: the basis' round-off */
   Mat            V;                                                     /* N x nq dense, M-orthonormal */
   PetscBool      residual;                                              /* -rom_residual: MacNeal's static residual flexibility at Gamma_C (contact_residual.c) */
-  PetscReal      residual_frequency;                                    /* -rom_residual_frequency: the Maxwell rubber's storage stiffness at it (0: relaxed) */
+  PetscBool      residual_branches;                                     /* -rom_residual_branches: with -rubber maxwell the residual is viscoelastic (contact_residual_branches.c) */
+  PetscReal      kappa;                                                 /* its branches' share of the residual's stiffness (computed, or the -rom_input file's) */
   EPS            eps;                                                   /* the modes' eigensolver: its ST holds K's factorization until the set-up ends */
   char           input[PETSC_MAX_PATH_LEN], output[PETSC_MAX_PATH_LEN]; /* -rom_input, -rom_output ("" off) */
   PetscLogDouble t_modes, t_reduce, t_residual;

@@ -16,15 +16,14 @@
 /* What the basis depends on besides the mesh: the rubber's K and M, the modes asked for, the cutoff, the Gamma_C
    nodes and whether R is there. */
 typedef struct {
-  PetscReal r[5];
-  PetscInt  i[6];
+  PetscReal r[4];
+  PetscInt  i[7];
 } RomIdentity;
 
-static const char *const real_names[5]  = {"young", "poisson", "density", "w_cut", "residual_frequency"};
-static const char *const real_labels[5] = {"-young", "-poisson", "-density", "the cutoff w (rad per unit time: -rom_cutoff, or the default from -ts_dt, -ts_scheme and -ts_phase_error)", "-rom_residual_frequency"};
-static const char *const int_names[6]   = {"modes_requested", "degree", "contact_nodes", "residual", "unknowns", "axle"};
-static const char *const int_labels[6] =
-  {"-rom_modes", "-degree", "Gamma_C contact nodes", "the residual flexibility (-rom_residual with -obstacle)", "free dofs (another mesh: -mesh_h, -mesh_h_contact, -r_inner, -r_outer)", "-axle (the hub's constraint modes)"};
+static const char *const real_names[4]  = {"young", "poisson", "density", "w_cut"};
+static const char *const real_labels[4] = {"-young", "-poisson", "-density", "the cutoff w (rad per unit time: -rom_cutoff, or the default from -ts_dt, -ts_scheme and -ts_phase_error)"};
+static const char *const int_names[7]   = {"modes_requested", "degree", "contact_nodes", "residual", "unknowns", "axle", "residual_branches"};
+static const char *const int_labels[7]  = {"-rom_modes", "-degree", "Gamma_C contact nodes", "the residual flexibility (-rom_residual with -obstacle)", "free dofs (another mesh: -mesh_h, -mesh_h_contact, -r_inner, -r_outer)", "-axle (the hub's constraint modes)", "the residual's branch ratio kappa (-rubber maxwell with -rom_residual_branches)"};
 
 static PetscErrorCode IdentityOf(Roller ctx, RollerRom rom, RomIdentity *id)
 {
@@ -33,13 +32,13 @@ static PetscErrorCode IdentityOf(Roller ctx, RollerRom rom, RomIdentity *id)
   id->r[1] = ctx->material.poisson;
   id->r[2] = ctx->material.density;
   id->r[3] = rom->modes_req > 0 ? 0.0 : rom->w_cut; /* -rom_modes N: the N lowest whatever the cutoff */
-  id->r[4] = ctx->material.rubber == ROLLER_RUBBER_MAXWELL ? rom->residual_frequency : 0.0;
   id->i[0] = rom->modes_req;
   id->i[1] = ctx->disc.degree;
   id->i[2] = RollerContactNodeCount(ctx->contact);
   id->i[3] = (PetscInt)(ctx->contact && rom->residual);
   PetscCall(VecGetSize(ctx->ops.coordinates, &id->i[4]));
   id->i[5] = (PetscInt)ctx->axle.on;
+  id->i[6] = (PetscInt)(id->i[3] && ctx->material.rubber == ROLLER_RUBBER_MAXWELL && rom->residual_branches);
   PetscFunctionReturn(0);
 }
 
@@ -73,8 +72,9 @@ PetscErrorCode RollerRomSave(Roller ctx, RollerRom rom, const char path[])
   PetscCall(VecDestroy(&lam));
   if (id.i[3]) PetscCall(RollerContactResidualView(ctx, ctx->contact, viewer, PETSC_FALSE));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "rom_format", PETSC_INT, &format));
-  for (PetscInt k = 0; k < 5; ++k) PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", real_names[k], PETSC_REAL, &id.r[k]));
-  for (PetscInt k = 0; k < 6; ++k) PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", int_names[k], PETSC_INT, &id.i[k]));
+  for (PetscInt k = 0; k < 4; ++k) PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", real_names[k], PETSC_REAL, &id.r[k]));
+  for (PetscInt k = 0; k < 7; ++k) PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", int_names[k], PETSC_INT, &id.i[k]));
+  if (id.i[6]) PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "residual_branch_ratio", PETSC_REAL, &rom->kappa));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "modes", PETSC_INT, &rom->nmodes));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "coordinates", PETSC_INT, &rom->nq));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer, "/", "basis_roundoff", PETSC_REAL, &rom->offdiag));
@@ -98,15 +98,19 @@ static PetscErrorCode Open(Roller ctx, RollerRom rom, const char path[], PetscVi
   PetscCall(PetscViewerHDF5HasAttribute(*viewer, "/", "rom_format", &exists));
   PetscCheck(exists, ctx->comm, PETSC_ERR_FILE_UNEXPECTED, "-rom_input %s: not a reduced basis of Roller's -rom_output (no rom_format attribute)", path);
   PetscCall(IdentityOf(ctx, rom, &id));
-  for (PetscInt k = 0; k < 5; ++k) {
+  for (PetscInt k = 0; k < 4; ++k) {
     PetscCall(PetscViewerHDF5ReadAttribute(*viewer, "/", real_names[k], PETSC_REAL, NULL, &f.r[k]));
     if (f.r[k] == id.r[k]) continue;
     PetscCall(PetscSNPrintf(part, sizeof(part), "%s%s %.17g (file) vs %.17g (this run)", line[0] ? "; " : "", real_labels[k], (double)f.r[k], (double)id.r[k]));
     PetscCall(PetscStrlcat(line, part, sizeof(line)));
   }
-  for (PetscInt k = 0; k < 6; ++k) {
-    PetscCall(PetscViewerHDF5ReadAttribute(*viewer, "/", int_names[k], PETSC_INT, NULL, &f.i[k]));
-    if (f.i[k] == id.i[k] || (k == 3 && f.i[k] && !id.i[k])) continue; /* an R the run does not need is left unread */
+  for (PetscInt k = 0; k < 7; ++k) {
+    PetscBool has = PETSC_TRUE;
+
+    if (k == 6) PetscCall(PetscViewerHDF5HasAttribute(*viewer, "/", int_names[k], &has));
+    f.i[k] = 0;
+    if (has) PetscCall(PetscViewerHDF5ReadAttribute(*viewer, "/", int_names[k], PETSC_INT, NULL, &f.i[k]));
+    if (f.i[k] == id.i[k] || ((k == 3 || k == 6) && f.i[k] && !id.i[k])) continue; /* an R (or kappa) the run does not need is left unread */
     PetscCall(PetscSNPrintf(part, sizeof(part), "%s%s %" PetscInt_FMT " (file) vs %" PetscInt_FMT " (this run)", line[0] ? "; " : "", int_labels[k], f.i[k], id.i[k]));
     PetscCall(PetscStrlcat(line, part, sizeof(line)));
   }
@@ -168,6 +172,8 @@ PetscErrorCode RollerRomLoadResidual(Roller ctx, RollerRom rom, const char path[
   PetscFunctionBeginUser;
   PetscCall(Open(ctx, rom, path, &viewer));
   PetscCall(RollerContactResidualView(ctx, ctx->contact, viewer, PETSC_TRUE));
+  rom->kappa = -1.0;
+  if (ctx->material.rubber == ROLLER_RUBBER_MAXWELL && rom->residual_branches) PetscCall(PetscViewerHDF5ReadAttribute(viewer, "/", "residual_branch_ratio", PETSC_REAL, NULL, &rom->kappa));
   PetscCall(PetscViewerDestroy(&viewer));
   PetscFunctionReturn(0);
 }

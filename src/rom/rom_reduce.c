@@ -127,17 +127,10 @@ PetscErrorCode RollerRomReduce(Roller ctx, RollerRom rom)
   }
   PetscCall(Diagonal(ctx->comm, n, one, &M));
   PetscCall(Diagonal(ctx->comm, n, lam, &K));
-  if (ctx->ops.Kd) { /* -rubber maxwell: K_d,r = V^T K_d V (dense); K_r takes its pattern (the step matrix A + c_D K_d) */
+  if (ctx->ops.Kd) { /* -rubber maxwell: K_d,r = V^T K_d V (dense; K_r stays diagonal, the step matrix c_D K_d,r + c_K K_r + c_M I) */
     Mat Kd;
-    Vec d;
 
     PetscCall(Gram(ctx, rom, ctx->ops.Kd, PETSC_FALSE, n, &Kd));
-    PetscCall(MatCreateVecs(K, &d, NULL));
-    PetscCall(MatGetDiagonal(K, d));
-    PetscCall(MatDestroy(&K));
-    PetscCall(MatDuplicate(Kd, MAT_DO_NOT_COPY_VALUES, &K)); /* zeros in the dense pattern */
-    PetscCall(MatDiagonalSet(K, d, INSERT_VALUES));
-    PetscCall(VecDestroy(&d));
     PetscCall(MatDestroy(&ctx->ops.Kd));
     ctx->ops.Kd = Kd;
   }
