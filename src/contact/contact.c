@@ -168,7 +168,12 @@ PetscErrorCode RollerContactSolve(Roller ctx, RollerContact c, const RollerConta
   PetscFunctionBeginUser;
   c->step.op = stage->op;
   PetscCall(RollerContactFrictionRemember(c));
-  PetscCall(RollerContactResidualBegin(c, stage->x_aux)); /* -rom_residual with the branches: the level two back */
+  { /* -rom_residual with the branches: the level two back */
+    PetscReal *from;
+
+    PetscCall(RollerContactResidualOf(c, stage->x_aux, &from));
+    PetscCall(RollerContactResidualBegin(c, from));
+  }
   PetscCall(RollerContactSetUpStep(ctx, c, stage, t));
   PetscCall(VecCopy(b, c->acc.b));
   PetscCall(RollerContactSolveWith(ctx, c, c->solver, b, xi, &c->acc.result));

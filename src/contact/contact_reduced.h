@@ -49,7 +49,7 @@ PETSC_INTERN PetscErrorCode RollerContactResidualDestroy(RollerContact);
 PETSC_INTERN PetscErrorCode RollerContactResidualGatherFull(RollerContact, Vec, PetscReal[]);                                         /* Gamma_C rows of a full-layout Vec */
 PETSC_INTERN PetscErrorCode RollerContactResidualOf(RollerContact, Vec, PetscReal **);                                                /* a level's (r, f_C), or NULL */
 PETSC_INTERN PetscErrorCode RollerContactResidualKeep(RollerContact, Vec, PetscReal **);                                              /* ... kept for the Vec (made if none), zeroed */
-PETSC_INTERN PetscErrorCode RollerContactResidualBegin(RollerContact, Vec);                                                           /* before a step's solve: the level two back, R h/C */
+PETSC_INTERN PetscErrorCode RollerContactResidualBegin(RollerContact, const PetscReal[]);                                             /* before a step's solve: the level two back's slot, R h/C */
 PETSC_INTERN PetscErrorCode RollerContactResidualAddHistory(RollerContact, Vec);                                                      /* a free solution's gather += R h/C */
 PETSC_INTERN PetscInt       RollerContactResidualSize(RollerContact);                                                                 /* a slot's reals */
 PETSC_INTERN void           RollerContactResidualBranchesUpdate(RollerContact, PetscReal[]);                                          /* a, b_i, w_i of a new level from r, f_C and from */

@@ -48,16 +48,15 @@ PetscInt RollerContactResidualSize(RollerContact c)
   return nb ? (3 + 2 * nb) * n + 1 : 2 * n; /* with the branches the level's energy e last */
 }
 
-/* Before a step's solve: the level two back (x_aux of the three-level schemes) and the history displacement R h/C. */
-PetscErrorCode RollerContactResidualBegin(RollerContact c, Vec from)
+/* Before a step's solve: the slot s of the level two back (x_aux of the three-level schemes; NULL at rest) and the
+   history displacement R h/C. */
+PetscErrorCode RollerContactResidualBegin(RollerContact c, const PetscReal s[])
 {
   RollerContactResidual *rs = &c->nodes.residual;
   const PetscInt         n  = 2 * c->nodes.nc;
-  PetscReal             *s;
 
   PetscFunctionBeginUser;
   if (!rs->R || !rs->nb) PetscFunctionReturn(0);
-  PetscCall(RollerContactResidualOf(c, from, &s));
   rs->from = s;
   PetscCall(PetscArrayzero(rs->hist, n));
   for (PetscInt i = 0; s && i < rs->nb; ++i) {
