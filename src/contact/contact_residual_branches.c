@@ -123,11 +123,12 @@ void RollerContactResidualLevelEnergy(RollerContact c, const PetscReal s[], Pets
 {
   const RollerContactResidual *rs = &c->nodes.residual;
   const PetscInt               n = 2 * c->nodes.nc, nb = rs->nb;
-  const PetscReal             *a = s + (nb ? 2 : 1) * n;
+  const PetscReal             *a;
   PetscReal                    d = 0.0;
 
   *e = 0.0;
   if (!s) return;
+  a = s + (nb ? 2 : 1) * n;
   for (PetscInt k = 0; k < n; ++k) d += a[k] * s[k];
   *e = 0.5 * d;
   for (PetscInt i = 0; i < nb; ++i) {
