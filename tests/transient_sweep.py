@@ -74,6 +74,22 @@ single = {"contact_force": d["contact_force"][w].mean(), "friction_force": d["fr
 err = max(abs(float(np1[k][q]) - x) / abs(x) for q, x in single.items())
 c.check(err < 1e-12 and float(np1[k]["window_end"]) == d["t"][-1] and w.sum() > 100, f"case {k} (mu {mu}, sheet_speed {v}): the means over t >= {float(np1[k]['window_start']):.4f} ({w.sum()} states) = the single run's -monitor_csv, to {err:.1e} (< 1e-12)")
 
+# the cases as a table (-sweep_cases: a Latin hypercube's way), in another order and with each case's own series
+# (-sweep_monitor_csv): every row = the product map's row of the same values, the series = the single run's CSV
+table = [expect[5], expect[3], expect[0]]
+with open("cases.csv", "w") as f:
+    f.write("case,friction,sheet_speed\n" + "".join(f"{i},{mu!r},{v!r}\n" for i, (mu, v) in enumerate(table)))
+run(SCENE + ["-sweep", "table.csv", "-sweep_cases", "cases.csv", "-sweep_monitor_csv", "series.csv"], nproc=2)
+tab = rows("table.csv")
+same = all(without_wall("table.csv")[1 + i].split(",", 1)[1] == without_wall("np1.csv")[1 + expect.index(mv)].split(",", 1)[1] for i, mv in enumerate(table))
+c.check(len(tab) == 3 and list(tab[0].keys()) == COLUMNS and same, "-sweep_cases: the table's 3 cases, each row = the product map's row of its values (but for case and wall_time)")
+with open("single.csv", "rb") as f1, open("series.case1.csv", "rb") as f2:
+    c.check(f1.read() == f2.read(), f"-sweep_monitor_csv: case 1's series.case1.csv = the single run's -monitor_csv (mu {table[1][0]}, sheet_speed {table[1][1]}), byte for byte")
+with open("misspelt.csv", "w") as f:
+    f.write("friction,sheet_sped\n0.3,0.05\n")
+bad = run(SCENE + ["-sweep", "misspelt.csv.out", "-sweep_cases", "misspelt.csv"], check=False)
+c.check(bad[0] != 0 and not os.path.exists("misspelt.csv.out"), f"a misspelt column (sheet_sped) is refused (exit {bad[0]}), no map written")
+
 # killed after two cases, resumed on two ranks
 proc = subprocess.Popen([EXE, "-sweep", "killed.csv"] + [str(a) for a in MAP], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
 done, t0 = 0, time.time()

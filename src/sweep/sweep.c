@@ -1,6 +1,6 @@
 /* -sweep F.csv (docs/squeal.md section 6): the plan of a map. The cases are the Cartesian product of the values given
    to a few scene options (-sweep_omega 0,0.1,0.2 -sweep_young_range 0.05,0.2,4 ...), numbered with the last swept
-   option varying fastest; with -modes each case is an eigenvalue problem, without it a transient reduced to one row
+   option varying fastest, or the rows of a table (-sweep_cases, sweep_cases.c); with -modes each case is an eigenvalue problem, without it a transient reduced to one row
    over the last -sweep_window of its run (sweep_transient.c). The runs are sweep_run.c's. */
 #include "sweep/sweep.h"
 #include <ctype.h>
@@ -11,7 +11,7 @@ static const char *const SweepParams[] = {"omega", "young", "friction", "obstacl
 #define NPARAMS ((PetscInt)(sizeof(SweepParams) / sizeof(SweepParams[0])))
 
 /* The options of the sweep itself besides the swept lists */
-static const char *const SweepOptions[] = {"-sweep_subcomms", "-sweep_slice", "-sweep_window", "-sweep_fit"};
+static const char *const SweepOptions[] = {"-sweep_subcomms", "-sweep_slice", "-sweep_window", "-sweep_fit", "-sweep_cases", "-sweep_monitor_csv"};
 
 const char *const RollerSweepFits[] = {"contact_force", "friction_force", "shaft_torque", "R", "alpha", "RollerSweepFit", "ROLLER_SWEEP_FIT_", NULL};
 
@@ -109,7 +109,7 @@ static PetscErrorCode CheckUnknown(MPI_Comm comm)
       if (!known) PetscCall(PetscStrlcat(opt, "_range", sizeof(opt)));
       if (!known) PetscCall(PetscStrcmp(tok, opt, &known));
     }
-    PetscCheck(known, comm, PETSC_ERR_ARG_WRONG, "%s: not a sweep option; allowed: -sweep_<name> v1,v2,... or -sweep_<name>_range a,b,n for <name> one of %s (the table SweepParams in src/sweep/sweep.c), -sweep_subcomms k, -sweep_slice i,k, -sweep_window w, -sweep_fit column", tok, names);
+    PetscCheck(known, comm, PETSC_ERR_ARG_WRONG, "%s: not a sweep option; allowed: -sweep_<name> v1,v2,... or -sweep_<name>_range a,b,n for <name> one of %s (the table SweepParams in src/sweep/sweep.c), -sweep_cases F.csv, -sweep_monitor_csv F.csv, -sweep_subcomms k, -sweep_slice i,k, -sweep_window w, -sweep_fit column", tok, names);
   }
   PetscCall(PetscFree(all));
   PetscFunctionReturn(0);
@@ -188,7 +188,7 @@ PetscErrorCode RollerSweepSetFromOptions(MPI_Comm comm, RollerSweepPlan *plan)
   plan->slice[1] = 1;
   PetscCall(PetscOptionsGetBool(NULL, NULL, "-modes", &modes, NULL));
   plan->transient = (PetscBool)!modes;
-  PetscOptionsBegin(comm, NULL, "Roller: sweep (docs/squeal.md section 6): -modes or a transient for every case of a product of scene option values, the cases spread over sub-communicators", NULL);
+  PetscOptionsBegin(comm, NULL, "Roller: sweep (docs/squeal.md section 6): -modes or a transient for every case of a product of scene option values or of a table (-sweep_cases), the cases spread over sub-communicators", NULL);
   PetscCall(PetscOptionsString("-sweep", "Run a map; F.csv gathers every case's rows. With -modes: case,<swept options>,re,im,frequency,growth_rate,order,wave,error; without: case,<swept options>,window_start,window_end,contact_force,friction_force,stick_fraction,amplitude,growth_rate,frequency,wall_time,status", NULL,
                                plan->csv, plan->csv, sizeof(plan->csv), NULL));
   for (PetscInt p = 0; p < NPARAMS; ++p) {
@@ -208,6 +208,9 @@ PetscErrorCode RollerSweepSetFromOptions(MPI_Comm comm, RollerSweepPlan *plan)
       PetscCall(ParseParam(comm, SweepParams[p], list, range, &plan->count[q], &plan->values[q]));
     }
   }
+  PetscCall(PetscOptionsString("-sweep_cases", "F.csv: the cases as rows of a table, a header of scene option names (a first column case allowed) and one row of values per case (a Latin hypercube, any design); instead of the -sweep_<name> lists", NULL,
+                               plan->cases_file, plan->cases_file, sizeof(plan->cases_file), NULL));
+  PetscCall(PetscOptionsString("-sweep_monitor_csv", "F.csv: a transient map's case c writes its -monitor_csv series to F.case<c>.csv", NULL, plan->series, plan->series, sizeof(plan->series), NULL));
   PetscCall(PetscOptionsInt("-sweep_subcomms", "Sub-communicators, each solving its own cases (default: the number of ranks, one rank per case)", NULL, plan->nsub, &plan->nsub, NULL));
   PetscCall(PetscOptionsIntArray("-sweep_slice", "i,k: take only the cases c with c % k == i (one task of a job array; default 0,1: all)", NULL, plan->slice, &nslice, &slice_set));
   plan->window = 0.5;
@@ -237,10 +240,16 @@ PetscErrorCode RollerSweepSetFromOptions(MPI_Comm comm, RollerSweepPlan *plan)
     PetscCall(PetscOptionsHasName(NULL, NULL, "-ts_max_wall", &wall));
     PetscCheck(!wall, comm, PETSC_ERR_ARG_INCOMP, "-ts_max_wall: not with -sweep (a sweep stops on SIGTERM and resumes from its journal, docs/squeal.md section 6)");
   }
-  plan->ncases = plan->nparams ? 1 : 0;
-  for (PetscInt q = 0; q < plan->nparams; ++q) {
-    PetscCheck(plan->ncases * plan->count[q] <= 10000000, comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep: more than 1e7 cases");
-    plan->ncases *= plan->count[q];
+  PetscCheck(!plan->series[0] || plan->transient, comm, PETSC_ERR_ARG_INCOMP, "-sweep_monitor_csv %s: a transient map's option (each case's series); a -modes map's rows are the eigenvalues", plan->series);
+  if (plan->cases_file[0]) {
+    PetscCheck(!plan->nparams, comm, PETSC_ERR_ARG_INCOMP, "-sweep_cases %s and -sweep_%s: give the cases as a table or as lists, not both", plan->cases_file, plan->name[0]);
+    PetscCall(RollerSweepCasesRead(comm, plan->cases_file, plan));
+  } else {
+    plan->ncases = plan->nparams ? 1 : 0;
+    for (PetscInt q = 0; q < plan->nparams; ++q) {
+      PetscCheck(plan->ncases * plan->count[q] <= 10000000, comm, PETSC_ERR_ARG_OUTOFRANGE, "-sweep: more than 1e7 cases");
+      plan->ncases *= plan->count[q];
+    }
   }
   PetscCall(PetscOptionsGetBool(NULL, NULL, "-quiet", &plan->quiet, NULL));
   PetscCall(SceneOptions(plan, &plan->scene));
@@ -250,7 +259,11 @@ PetscErrorCode RollerSweepSetFromOptions(MPI_Comm comm, RollerSweepPlan *plan)
 PetscErrorCode RollerSweepPlanDestroy(RollerSweepPlan *plan)
 {
   PetscFunctionBeginUser;
-  for (PetscInt q = 0; q < plan->nparams; ++q) PetscCall(PetscFree(plan->values[q]));
+  for (PetscInt q = 0; q < plan->nparams; ++q) {
+    PetscCall(PetscFree(plan->values[q]));
+    PetscCall(PetscFree(plan->owned[q]));
+  }
+  PetscCall(PetscFree(plan->table));
   plan->nparams = 0;
   PetscCall(PetscFree(plan->scene));
   PetscFunctionReturn(0);
@@ -273,10 +286,14 @@ PetscErrorCode RollerSweepCaseParams(const RollerSweepPlan *plan, PetscInt c, ch
   PetscFunctionReturn(0);
 }
 
-/* Case c's values: the last swept option varies fastest. */
+/* Case c's values: the table's row c, or the product's c-th (the last swept option varies fastest). */
 PetscErrorCode RollerSweepCaseValues(const RollerSweepPlan *plan, PetscInt c, PetscReal v[])
 {
   PetscFunctionBeginUser;
+  if (plan->table) {
+    PetscCall(PetscArraycpy(v, plan->table + c * ROLLER_SWEEP_MAX_PARAMS, plan->nparams));
+    PetscFunctionReturn(0);
+  }
   for (PetscInt q = plan->nparams - 1; q >= 0; --q) {
     v[q] = plan->values[q][c % plan->count[q]];
     c /= plan->count[q];

@@ -2,6 +2,7 @@
    options, each solved on a sub-communicator -- by -modes (an eigenvalue map) or, without -modes, as a transient (a
    map of per-case means and fits); the rows of every case gathered into one CSV.
      sweep.c            the "Roller: sweep" options, the cases and their values, the scene's fingerprint
+     sweep_cases.c      -sweep_cases F.csv: the cases as the rows of a table (a Latin hypercube, any design)
      sweep_run.c        the sub-communicators and the runs, one Roller per case
      sweep_transient.c  a transient case's series (an observer of its run) reduced to one row: window means, fits
      sweep_csv.c        the rows of every case gathered to rank 0 and written, sorted by case
@@ -11,7 +12,7 @@
 
 #include <roller_impl.h>
 
-#define ROLLER_SWEEP_MAX_PARAMS 8
+#define ROLLER_SWEEP_MAX_PARAMS 16
 
 /* The columns a transient map may fit a growth rate and frequency to (-sweep_fit) */
 typedef enum { ROLLER_SWEEP_FIT_CONTACT_FORCE, ROLLER_SWEEP_FIT_FRICTION_FORCE, ROLLER_SWEEP_FIT_SHAFT_TORQUE, ROLLER_SWEEP_FIT_R, ROLLER_SWEEP_FIT_ALPHA } RollerSweepFit;
@@ -21,14 +22,17 @@ PETSC_INTERN const char *const RollerSweepFits[];
    the number of cases (the product of the counts), the slice i, k of them this run takes (c % k == i), the
    number of sub-communicators and the gathered CSV; a modes or a transient map, the transient's window (the last
    fraction of the run) and fitted column; the scene (every other option, sorted: a resumed map's must be the
-   same). Case c varies the last swept option fastest. */
+   same). Case c varies the last swept option fastest; with -sweep_cases (cases_file) case c is the table's row c
+   (table[c * ROLLER_SWEEP_MAX_PARAMS + q]) and the names are the table's (owned). A transient case writes its own
+   monitor CSV when series (-sweep_monitor_csv) is given. */
 typedef struct {
   PetscInt       nparams;
   const char    *name[ROLLER_SWEEP_MAX_PARAMS];
+  char          *owned[ROLLER_SWEEP_MAX_PARAMS];
   PetscInt       count[ROLLER_SWEEP_MAX_PARAMS];
-  PetscReal     *values[ROLLER_SWEEP_MAX_PARAMS];
+  PetscReal     *values[ROLLER_SWEEP_MAX_PARAMS], *table;
   PetscInt       ncases, slice[2], nsub;
-  char           csv[PETSC_MAX_PATH_LEN];
+  char           csv[PETSC_MAX_PATH_LEN], cases_file[PETSC_MAX_PATH_LEN], series[PETSC_MAX_PATH_LEN];
   PetscBool      quiet, transient;
   PetscReal      window;
   RollerSweepFit fit;
@@ -54,6 +58,10 @@ PETSC_INTERN PetscErrorCode RollerSweepPlanDestroy(RollerSweepPlan *);
 PETSC_INTERN PetscErrorCode RollerSweepCaseValues(const RollerSweepPlan *, PetscInt, PetscReal[]);
 PETSC_INTERN PetscErrorCode RollerSweepCaseParams(const RollerSweepPlan *, PetscInt, char[], size_t); /* ",v1,v2" */
 PETSC_INTERN PetscErrorCode RollerSweepFormatReal(char[], size_t, PetscReal);                         /* the shortest %g that reads back exactly */
+
+/* sweep_cases.c */
+PETSC_INTERN PetscErrorCode RollerSweepCasesRead(MPI_Comm, const char[], RollerSweepPlan *);
+PETSC_INTERN PetscErrorCode RollerSweepCasesCheckUsed(MPI_Comm, const RollerSweepPlan *, const char[]);
 
 /* sweep_transient.c */
 PETSC_INTERN PetscErrorCode RollerSweepSeriesObserve(Roller, RollerSweepSeries *);

@@ -48,6 +48,22 @@ typedef struct {
   PetscBool failed, stopped;
 } CaseOutcome;
 
+/* Case c's own monitor CSV (-sweep_monitor_csv F.csv): F.case<c>.csv (the case number before a .csv ending, else
+   after the name). */
+static PetscErrorCode CaseSeriesPath(const RollerSweepPlan *plan, PetscInt c, char path[], size_t len)
+{
+  char   stem[PETSC_MAX_PATH_LEN], suffix[48];
+  size_t n;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrncpy(stem, plan->series, sizeof(stem)));
+  PetscCall(PetscStrlen(stem, &n));
+  if (n > 4 && !strcmp(stem + n - 4, ".csv")) stem[n - 4] = '\0';
+  PetscCall(PetscSNPrintf(suffix, sizeof(suffix), ".case%" PetscInt_FMT ".csv", c));
+  PetscCall(RollerJoinPath(path, len, stem, suffix, "-sweep_monitor_csv"));
+  PetscFunctionReturn(0);
+}
+
 /* A transient case: the run with an observer recording its series. The set-up's errors (a value out of range, a
    rotation beyond the stability limit) end the map like any bad input; an error of the run itself (a step or the
    contact solver failing) is the case's status, "failed", and the map goes on. A signal (SIGTERM before a batch
@@ -80,7 +96,8 @@ static PetscErrorCode SolveTransient(Roller roller, const RollerSweepPlan *plan,
 static PetscErrorCode SolveCase(MPI_Comm sub, const RollerSweepPlan *plan, PetscInt c, RollerSweepRows *rows, RollerSweepJournal journal, CaseOutcome *out)
 {
   PetscReal      v[ROLLER_SWEEP_MAX_PARAMS];
-  SavedOption    saved[ROLLER_SWEEP_MAX_PARAMS + 1];
+  SavedOption    saved[ROLLER_SWEEP_MAX_PARAMS + 2];
+  PetscInt       nsaved = 0;
   char           ck[PETSC_MAX_PATH_LEN];
   Roller         roller;
   PetscMPIInt    rank;
@@ -94,23 +111,30 @@ static PetscErrorCode SolveCase(MPI_Comm sub, const RollerSweepPlan *plan, Petsc
 
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%s", plan->name[q]));
     PetscCall(RollerSweepFormatReal(value, sizeof(value), v[q]));
-    PetscCall(OptionPush(opt, PETSC_TRUE, value, &saved[q]));
+    PetscCall(OptionPush(opt, PETSC_TRUE, value, &saved[nsaved++]));
   }
   if (plan->transient) {
     char suffix[32];
 
     PetscCall(PetscSNPrintf(suffix, sizeof(suffix), ".case%" PetscInt_FMT ".h5", c));
     PetscCall(RollerJoinPath(ck, sizeof(ck), plan->csv, suffix, "-sweep"));
-    PetscCall(OptionPush("-checkpoint", PETSC_TRUE, ck, &saved[plan->nparams]));
+    PetscCall(OptionPush("-checkpoint", PETSC_TRUE, ck, &saved[nsaved++]));
+  }
+  if (plan->series[0]) {
+    char series[PETSC_MAX_PATH_LEN];
+
+    PetscCall(CaseSeriesPath(plan, c, series, sizeof(series)));
+    PetscCall(OptionPush("-monitor_csv", PETSC_TRUE, series, &saved[nsaved++]));
   }
   PetscCall(RollerCreate(sub, &roller));
   PetscCall(RollerSetFromOptions(roller));
   PetscCall(RollerSetUp(roller));
+  if (plan->table) PetscCall(RollerSweepCasesCheckUsed(sub, plan, plan->cases_file));
   PetscCallMPI(MPI_Comm_rank(sub, &rank));
   before = rows->len;
   PetscCall(PetscMemzero(out, sizeof(*out)));
   if (plan->transient) {
-    char row[1024], params[ROLLER_SWEEP_MAX_PARAMS * 32], line[1200];
+    char row[1024], params[ROLLER_SWEEP_MAX_PARAMS * 32], line[1600];
 
     PetscCall(SolveTransient(roller, plan, t0, row, sizeof(row), out));
     PetscCall(RollerSweepCaseParams(plan, c, params, sizeof(params)));
@@ -126,7 +150,7 @@ static PetscErrorCode SolveCase(MPI_Comm sub, const RollerSweepPlan *plan, Petsc
   if (journal && rows->len > before) PetscCall(RollerSweepJournalAdd(journal, c, rows->text + before, rows->len - before));
   PetscCall(RollerDestroy(&roller));
   if (out->stopped) PetscCall(RollerRemoveStale(sub, ck)); /* the map reruns the case whole: its checkpoint is of no use */
-  for (PetscInt q = plan->nparams - (plan->transient ? 0 : 1); q >= 0; --q) PetscCall(OptionPop(&saved[q]));
+  while (nsaved) PetscCall(OptionPop(&saved[--nsaved]));
   PetscFunctionReturn(0);
 }
 
@@ -154,7 +178,7 @@ static PetscErrorCode SolveCases(MPI_Comm sub, PetscMPIInt color, const RollerSw
   PetscFunctionBeginUser;
   *stopped = PETSC_FALSE;
   for (PetscInt c = plan->slice[0], j = 0; c < plan->ncases && !*stopped; c += plan->slice[1]) {
-    char           label[256];
+    char           label[512];
     CaseOutcome    out = {0};
     PetscLogDouble t0  = MPI_Wtime();
     PetscErrorCode ierr;
@@ -207,7 +231,8 @@ PetscErrorCode RollerSweep(MPI_Comm comm)
   PetscFunctionBeginUser;
   PetscCall(RollerSweepSetFromOptions(comm, &plan));
   PetscCheck(plan.csv[0], comm, PETSC_ERR_ARG_WRONG, "-sweep needs the name of its CSV, -sweep F.csv");
-  PetscCheck(plan.nparams, comm, PETSC_ERR_ARG_WRONG, "-sweep %s: nothing to sweep; give -sweep_<name> v1,v2,... or -sweep_<name>_range a,b,n for <name> one of omega, young, friction, obstacle_depth, sheet_speed", plan.csv);
+  PetscCheck(plan.nparams, comm, PETSC_ERR_ARG_WRONG, "-sweep %s: nothing to sweep; give -sweep_cases F.csv (a table of cases), or -sweep_<name> v1,v2,... or -sweep_<name>_range a,b,n for <name> one of omega, young, friction, obstacle_depth, sheet_speed",
+             plan.csv);
   PetscCall(RollerJoinPath(part, sizeof(part), plan.csv, ".part", "-sweep"));
   PetscCall(RollerRemoveStale(comm, plan.csv));
   PetscCall(RollerCheckWritable(comm, "-sweep", part)); /* before hours of cases, not after */
