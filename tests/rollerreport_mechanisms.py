@@ -17,6 +17,7 @@ mechanisms, heard.write_cycle; docs/squeal.md 9.4) on synthetic monitor CSVs, no
   mechanism's ratio to the 1-DOF closed form;
 - the propensity: a Latin hypercube has one point in each stratum of every axis, Wilson's interval at known values,
   the scene's own point maps onto the scene, 8 cases classified with the summary's keys."""
+import csv
 import json
 import math
 import os
@@ -175,22 +176,53 @@ c.check(fo.get("status") == "run" and abs(fo["response_rate_amplitude"] / A_r - 
         f"forced: {fo.get('status')}, {fo.get('response_rate_amplitude')}; {fo.get('evidence')} ({r.stderr.strip()[-300:]})")
 
 # ---- the propensity
-u = propensity.latin_hypercube(64, 6, 1)
-c.check(all(sorted((u[:, j] * 64).astype(int).tolist()) == list(range(64)) for j in range(6)),
-        "a Latin hypercube of 64 points in 6 dimensions: one point in each of the 64 strata of every axis")
+u = propensity.latin_hypercube(64, 7, 1)
+c.check(all(sorted((u[:, j] * 64).astype(int).tolist()) == list(range(64)) for j in range(7)),
+        "a Latin hypercube of 64 points in 7 dimensions: one point in each of the 64 strata of every axis")
 w0, w32 = propensity.wilson(0, 64), propensity.wilson(32, 64)
 c.check(w0[0] == 0 and abs(w0[1] - 0.05654) < 1e-4 and abs(w32[0] - 0.3801) < 1e-3 and abs(w32[1] - 0.6199) < 1e-3,
         f"Wilson's 95 % interval: 0/64 {w0}, 32/64 {w32}")
 mid_sample = {nm: (math.sqrt(lo_ * hi_) if nm != "friction_static_over_kinetic" else 1.25) for nm, (_, lo_, hi_) in propensity.SPREAD.items()}
 case = propensity.case_options(opts, mid_sample)
-same = {k: onedof.value(opts, k) for k in case}
-c.check(all(abs(case[k] / same[k] - 1) < 1e-12 for k in case), f"the ranges' centres map onto the scene: {case}")
+same = {k: propensity.scene_value(opts, k) for k in case}
+c.check(all(abs(case[k] / same[k] - 1) < 1e-12 for k in case) and {"viscosity", "axle_stiffness", "drive_damping"} <= set(case),
+        f"the ranges' centres map onto the scene (the loss factor on -viscosity, the bracket on -axle_stiffness): {case}")
+kin = dict(opts, sheet_speed="0.99", omega="2.0", r_outer="0.5")
+hi = propensity.case_options(kin, dict(mid_sample, surface_speed_m_per_s=0.36))
+c.check(abs(hi["omega"] / 2.0 - 0.36 / math.sqrt(0.12 * 0.36)) < 1e-12 and abs(hi["sheet_speed"] / hi["omega"] - 0.99 / 2.0) < 1e-12,
+        f"a kinematic sheet's speed follows the surface speed, the creep kept: omega {hi['omega']:.5g}, sheet_speed {hi['sheet_speed']:.5g}")
 dp = tempfile.mkdtemp(prefix="rollerreport_prop_")
 pr = propensity.run(opts, dp, n=8, seed=3)
 rows = open(os.path.join(dp, "propensity.csv")).read().splitlines()
 c.check(pr["cases"] == 8 and len(rows) == 9 and pr["fraction"] == pr["squeaking"] / 8 and pr["confidence_95"][0] <= pr["fraction"] <= pr["confidence_95"][1]
         and set(pr) >= {"cases", "fraction", "by_mechanism", "ranges", "sampling", "ranking"} and pr["sampling"]["seed"] == 3,
         f"8 cases: {pr['squeaking']} squeak ({pr['by_class']}), interval {[round(x, 3) for x in pr['confidence_95']]}")
+
+# the finite elements' classification of the cases (rollerreport.propensity_fe) from the files the two maps write:
+# case 0 the stick-slip series above with a stable CEA (bistable), case 1 a decaying oscillation with a growing
+# oscillating CEA mode (flutter), case 2 decaying with a stable CEA (quiet), case 3 a failed run
+from rollerreport import propensity_fe  # noqa: E402
+
+dq = tempfile.mkdtemp(prefix="rollerreport_prop_fe_")
+cases = propensity.sample(opts, 4, 5)
+names = propensity_fe.write_cases(dq, cases)
+os.makedirs(os.path.join(dq, "propensity"))
+heads = "case," + ",".join(names)
+with open(os.path.join(dq, propensity_fe.RUNS), "w") as f:
+    f.write(heads + ",status\n" + "".join(f"{i}," + ",".join("0" for _ in names) + f",{'failed' if i == 3 else 'ok'}\n" for i in range(4)))
+with open(os.path.join(dq, propensity_fe.CEA), "w") as f:
+    f.write(heads + ",re,im\n" + "".join(f"{i}," + ",".join("0" for _ in names) + f",{re},{im}\n" for i, re, im in
+                                        ((0, -0.008, 0.32), (1, 0.004, 0.32), (1, -0.5, 3.0), (2, -0.008, 0.32))))
+decay = w + 0.002 * np.exp(-0.0079 * t) * np.cos(2 * math.pi * 0.0503 * t)
+for i, (rate_i, stick_i) in enumerate([(rate + ripple, np.where(stuck, 11, 0)), (decay, 0 * t), (decay, 0 * t)]):
+    write_csv(os.path.join(dq, "propensity", f"series.case{i}.csv"), dict(cols, hub_rate=np.concatenate([[0.0], rate_i]),
+                                                                         stick_nodes=np.concatenate([[0], stick_i])))
+fe = propensity_fe.summarize(dq, propensity_fe.classify(dq, opts, cases, True), 5, True, T_END, 8)
+got = [(r["class"], r["mechanism"], r["squeaks"]) for r in csv.DictReader(open(os.path.join(dq, "propensity.csv")))]
+c.check(got == [("bistable", "stick-slip", "1"), ("flutter", "flutter", "1"), ("quiet", "quiet", "0"), ("failed", "failed", "0")]
+        and fe["fraction"] == 0.5 and fe["by_mechanism"]["stick-slip"] == 0.25 and fe["by_mechanism"]["flutter"] == 0.25
+        and fe["agreement"]["stable_and_stick_slip"] == 1 and fe["agreement"]["unstable_and_settled"] == 1,
+        f"the finite elements' classes from the maps' files: {got}; {fe['by_mechanism']}, agreement {fe['agreement']}")
 
 # the CEA's unstable mode against the scene's own run (mechanisms.run_growth): a line at f growing at g is confirmed,
 # the same line steady (beside a louder steady line elsewhere) is not

@@ -155,6 +155,14 @@ def propensity_lines(prop, folder):
            + ", ".join(f"{k} {100 * x:.1f} %" for k, x in prop["by_class"].items()) + f". Classified by {prop['classifier']}.",
            "", "Ranked by the rank correlation with squeaking: " + ", ".join(
                f"{e['parameter']} {e['spearman']:+.2f}" for e in prop["ranking"]) + "."]
+    agree, one = prop.get("agreement"), prop.get("onedof_agreement")
+    if agree:
+        md += ["", f"The CEA against the start from rest, case by case ({agree['cases']} cases that ran): unstable and "
+               f"oscillating {agree['unstable_and_oscillating']}, unstable but settled {agree['unstable_and_settled']}, stable "
+               f"but stick-slipping (bistable: only the transient sees them) {agree['stable_and_stick_slip']}."]
+    if one:
+        md += ["", f"The 1-DOF cross-check gives the same stick-slip verdict as the finite elements in "
+               f"{one['same_stick_slip_verdict']} of {one['cases']} cases (propensity.csv, column onedof)."]
     if prop.get("validity"):
         md += ["", f"> Validity: {prop['validity']}."]
     if os.path.exists(os.path.join(folder, "propensity.png")):
@@ -526,7 +534,7 @@ def write(folder, parts=PARTS):
     out["wav_seconds"] = snd["wav_seconds"] if snd else 0.0
     out["wav_source"] = snd["wav_source"] if snd else None
     out["propensity"] = mechanisms.propensity(folder)
-    if out["propensity"].get("status") == "run" and stuck:
+    if out["propensity"].get("status") == "run" and stuck and "agreement" not in out["propensity"]:  # the 1-DOF's cases
         out["propensity"]["validity"] = (
             f"the 1-DOF models the roller sliding on the sheet; this scene's steady state rolls with {stuck} contact "
             "nodes stuck (steady.csv), whose tangential stiffness and lack of slip the 1-DOF leaves out: its cases are "

@@ -301,11 +301,13 @@ def base_command(cmd):
 OUTPUTS = ("modes.csv", "modes.h5", "modes.xmf", "steady.csv", "sweep.csv", "transient.csv", "surface.csv", "transient_base.csv", "surface_base.csv",
            "transient.h5", "transient.xmf", "transient_base.h5", "transient_base.xmf", "scene.json", "commands.json",
            "journal.json", "report.md", "report.json", "report.html", "map.png", "squeal.wav", "sound.csv", "spectrogram.png",
-           "vibration.gif", "vibration.mp4", "mesh.h5", "mesh.xmf")
+           "vibration.gif", "vibration.mp4", "mesh.h5", "mesh.xmf", "basis.h5", "propensity_basis.h5", "propensity_cases.csv",
+           "propensity_table.json", "propensity_runs.csv", "propensity_cea.csv", "propensity.json", "propensity.csv", "propensity.png")
 # PETSc's message for PETSC_ERR_SUP: what roller refuses as not carried (e.g. -modes with -rubber maxwell or
 # -sheet_mass): the part is "not run" with roller's reason, and the driver does not count it as failed
 REFUSED = "No support for this operation"
-ROLLER_PARTS = ("cea", "map", "transient", "transient_base", "mesh", "stickslip", "forced", "propensity")
+ROLLER_PARTS = ("cea", "map", "transient", "transient_base", "mesh", "basis", "stickslip", "forced", "propensity_table",
+                "propensity_basis", "propensity_cea", "propensity_runs", "propensity")
 
 
 def parse(argv):
@@ -350,9 +352,20 @@ def parse(argv):
                    "run (-drive_ripple, -drive_ripple_frequency; default the scene's, none if it has none)")
     p.add_argument("--forced-options", default="", help="axle scenes: roller options of the forced run besides the "
                    "ripple, e.g. '-theta_start 0 -drive_ramp 0 -nip_ramp 60' (a start sliding)")
+    p.add_argument("--model", choices=("rom", "full"), default="rom", help="axle scenes: the long transients (the start "
+                   "from rest, the forced run) on the reduced model (-rom, its basis computed once: basis.h5) or the full "
+                   "finite elements (default rom: docs/squeal.md 9.4 measures the two against each other)")
     p.add_argument("--propensity-cases", type=int, default=64, help="axle scenes: the propensity study's cases (Latin "
-                   "hypercube, classified by rollerref's 1-DOF; default 64, 0: none)")
+                   "hypercube; default 64, 0: none)")
     p.add_argument("--propensity-seed", type=int, default=38, help="the propensity's sampling seed (default 38)")
+    p.add_argument("--propensity-model", choices=("fe", "onedof"), default="fe", help="the propensity's classifier: fe, "
+                   "every case's CEA and its start from rest on the reduced model (roller -sweep -sweep_cases on --ranks), "
+                   "the 1-DOF's class beside it; onedof, rollerref's 1-DOF alone (seconds; default fe)")
+    p.add_argument("--propensity-periods", type=float, default=40, help="fe: each case's start from rest runs this many "
+                   "periods of the drive's mode after the motor started (default 40)")
+    p.add_argument("--propensity-nev", type=int, default=None, help="fe: -modes_nev of each case's CEA (default --nev)")
+    p.add_argument("--propensity-options", default="", help="fe: roller options of the propensity's runs besides the "
+                   "scene's and those after --, e.g. a coarser mesh '-mesh_h 0.0012 -mesh_h_contact 3e-4' (its own basis)")
     cut = argv.index("--") if "--" in argv else len(argv)
     return p.parse_args(argv[:cut]), argv[cut + 1 :]
 
@@ -414,10 +427,14 @@ def axle_parts(steps, base, opts, scene, a, extra, out):
     steps.run("mesh", base + ["-ts_max_steps", "0", "-output", j("mesh.h5"), "-quiet"] + extra,
               "the mesh alone (no step): its vertices on the outer circle set the mesh-passing lines the sound leaves out "
               "(rollerreport.lines)", outputs=["mesh.h5", "mesh.xmf"])
-    steps.run("stickslip", base + ["-ts_max_time", repr(T), "-monitor_csv", j("stickslip.csv"), "-monitor_surface_csv",
-                                   j("stickslip_surface.csv"), "-quiet"] + extra,
-              f"the start from rest on the axle to t = {T:.5g} ({T * s:.3g} s of audio): the stick-slip limit cycle "
-              "(docs/squeal.md 9.4)", outputs=["stickslip.csv", "stickslip_surface.csv"])
+    rom, inputs = [], []
+    if a.model == "rom":
+        rom, inputs = ["-rom", "-rom_input", j("basis.h5")], [j("basis.h5")]
+        basis_part(steps, base, extra, j("basis.h5"), "basis")
+    steps.run("stickslip", base + rom + ["-ts_max_time", repr(T), "-monitor_csv", j("stickslip.csv"), "-monitor_surface_csv",
+                                         j("stickslip_surface.csv"), "-quiet"] + extra,
+              f"the start from rest on the axle to t = {T:.5g} ({T * s:.3g} s of audio){' on the reduced model' if rom else ''}: "
+              "the stick-slip limit cycle (docs/squeal.md 9.4)", outputs=["stickslip.csv", "stickslip_surface.csv"], inputs=inputs)
     ripple = [float(x) for x in a.ripple.split(",")] if a.ripple else (
         [onedof.value(opts, "drive_ripple"), onedof.value(opts, "drive_ripple_frequency")])
     if ripple[0] and ripple[1] and "onedof" in scene:
@@ -430,33 +447,77 @@ def axle_parts(steps, base, opts, scene, a, extra, out):
         own = [onedof.value(opts, "drive_ripple"), onedof.value(opts, "drive_ripple_frequency")]
         if not a.forced_options and ripple == own:  # the scene runs with its own ripple: the start from rest is the forced run
             scene["ripple"]["files"] = ["stickslip.csv", "stickslip_surface.csv"]
-            return propensity_part(steps, opts, a, out)
+            return propensity_part(steps, base, opts, a, extra, out)
         more = a.forced_options.split()
-        steps.run("forced", base + more + ["-drive_ripple", repr(ripple[0]), "-drive_ripple_frequency", repr(ripple[1]),
-                                           "-ts_max_time", repr(T), "-monitor_csv", j("forced.csv"), "-monitor_surface_csv",
-                                           j("forced_surface.csv"), "-quiet"] + extra,
+        steps.run("forced", base + rom + more + ["-drive_ripple", repr(ripple[0]), "-drive_ripple_frequency", repr(ripple[1]),
+                                                 "-ts_max_time", repr(T), "-monitor_csv", j("forced.csv"), "-monitor_surface_csv",
+                                                 j("forced_surface.csv"), "-quiet"] + extra,
                   f"the motor's ripple {ripple[0]:g} rad at {ripple[1]:g} per unit time: the forced response "
-                  "(docs/squeal.md 9.4)", outputs=["forced.csv", "forced_surface.csv"])
-    propensity_part(steps, opts, a, out)
+                  "(docs/squeal.md 9.4)", outputs=["forced.csv", "forced_surface.csv"], inputs=inputs)
+    propensity_part(steps, base, opts, a, extra, out)
 
 
-def propensity_part(steps, opts, a, out):
-    """The propensity study (rollerreport.propensity), journalled."""
-    if a.propensity_cases > 0 and (steps.only is None or "propensity" in steps.only):
-        from . import propensity
+def basis_part(steps, base, extra, path, name):
+    """The reduced model's basis (roller -rom -rom_output, no step): the modes and the residual flexibility once, read by
+    every reduced run on the same mesh and rubber (docs/model.md 11)."""
+    steps.run(name, base + ["-rom", "-rom_output", path, "-ts_max_steps", "0", "-quiet"] + extra,
+              "the reduced model's basis (-rom -rom_output, no step): read by the reduced runs (-rom_input)",
+              outputs=[os.path.basename(path)])
 
-        digest = journal.inputs_hash({"part": "propensity", "options": opts, "cases": a.propensity_cases,
-                                      "seed": a.propensity_seed}, [os.path.join(os.path.dirname(__file__), f) for f in
-                                                                   ("propensity.py", "onedof.py")])
 
-        def go():
+def propensity_part(steps, base, opts, a, extra, out):
+    """The propensity study, journalled: on the finite elements (rollerreport.propensity_fe) the table of cases and its
+    plan (propensity_cases.csv, propensity_table.json: written whenever the study runs, seconds), the propensity's own
+    basis when its options differ, the reduced transients' map and, when the scene's CEA ran, the CEA map (roller parts,
+    each journalled; a Slurm array can write the maps instead: jobs/slurm/propensity.sh), then the classification of
+    what the maps wrote; or the 1-DOF alone (rollerreport.propensity.run)."""
+    if a.propensity_cases <= 0:
+        return
+    from . import propensity, propensity_fe
+
+    j = lambda f: os.path.join(out, f)  # noqa: E731
+    cases = propensity.sample(opts, a.propensity_cases, a.propensity_seed)
+    sources = [os.path.join(os.path.dirname(__file__), f) for f in ("propensity.py", "propensity_fe.py", "onedof.py", "cycle.py")]
+    plan, maps = {}, []
+    if a.propensity_model == "fe":
+        more = a.propensity_options.split()
+        basis = j("propensity_basis.h5" if more or a.model != "rom" else "basis.h5")  # the propensity's own mesh: its own basis
+        plan = {"run_time": propensity_fe.run_length(opts, a.propensity_periods), "nev": a.propensity_nev or a.nev,
+                "with_cea": steps.journal.parts.get("cea", {}).get("status") == "ok", "basis": os.path.basename(basis),
+                "options": more, "cases": a.propensity_cases, "seed": a.propensity_seed}
+        propensity_fe.write_cases(out, cases)
+        with open(j("propensity_table.json"), "w") as f:
+            json.dump(plan, f, indent=1)
+        if os.path.basename(basis) == "propensity_basis.h5":
+            basis_part(steps, base, more + extra, basis, "propensity_basis")
+        os.makedirs(j("propensity"), exist_ok=True)
+        for name, (cmd, what) in propensity_fe.commands(base, more + extra, out, basis, plan["run_time"], a.ranks, a.mpiexec,
+                                                        plan["nev"], plan["with_cea"]).items():
+            maps.append(propensity_fe.RUNS if name == "propensity_runs" else propensity_fe.CEA)
+            steps.run(name, cmd, what, outputs=[maps[-1]], inputs=[j(propensity_fe.CASES)] + ([basis] if name == "propensity_runs" else []),
+                      ranks=a.ranks)
+        what = f"the propensity: {a.propensity_cases} cases, each by its CEA and its reduced start from rest (docs/squeal.md 9.4)"
+    else:
+        what = f"the propensity: {a.propensity_cases} cases, classified by rollerref's 1-DOF (docs/squeal.md 9.4)"
+    if steps.only is not None and "propensity" not in steps.only:
+        return
+    digest = journal.inputs_hash({"part": "propensity", "options": opts, "plan": plan, "model": a.propensity_model},
+                                 sources + [j(m) for m in maps])
+
+    def go():
+        missing = [m for m in maps if not os.path.exists(j(m))]
+        if missing:
+            return False, {"error": f"the propensity's maps {', '.join(missing)} are missing (their parts' logs in logs/)"}
+        if a.propensity_model == "fe":
+            rows = propensity_fe.classify(out, opts, cases, plan["with_cea"])
+            r = propensity_fe.summarize(out, rows, a.propensity_seed, plan["with_cea"], plan["run_time"], plan["nev"])
+        else:
             r = propensity.run(opts, out, a.propensity_cases, a.propensity_seed)
-            propensity.figure(out)
-            return True, {"result": {"fraction": r["fraction"], "cases": r["cases"]}}
+        propensity.figure(out)
+        return True, {"result": {"fraction": r["fraction"], "cases": r["cases"]}}
 
-        steps.journal = journal.Journal(out)
-        steps.journal.run("propensity", digest, ["propensity.json", "propensity.csv", "propensity.png"], go,
-                          what=f"the propensity: {a.propensity_cases} cases, classified by rollerref's 1-DOF (docs/squeal.md 9.4)")
+    steps.journal = journal.Journal(out)
+    steps.journal.run("propensity", digest, ["propensity.json", "propensity.csv", "propensity.png"], go, what=what)
 
 
 def report_step(steps, scene, out, src, only):
