@@ -15,9 +15,12 @@ jobs/printer_roller.yaml (the feed on the real axle, the Maxwell EPDM, the stepp
   only with an eigenvalue of positive real part; its bounce (the largest axle_y) within 1.5 % in frequency and 10 % in
   decay of the same run's contact_force (a damped sine fitted over 12-30 ms; the frozen branches' error, docs/squeal.md
   3.1); on printer_pick.yaml "not run" with roller's reason (-sheet_mass);
+- the propensity's 64 cases by the finite elements (on the coarse mesh -mesh_h 0.0012 -mesh_h_contact 3e-4, its own
+  basis): every case's reduced start classified, every case's CEA on printer_roller.yaml, none on printer_pick.yaml;
 - report.html loads squeal.wav with its duration and every image in headless Chromium.
-long: per scene a CEA of 115k unknowns (printer_roller only, about 4 CPU minutes) and one finite-element run of 0.51 s
-(90,600 steps, 16-25 CPU minutes); the two scenes at a time."""
+long: per scene a CEA of 115k unknowns (printer_roller only, about 4 CPU minutes), the reduced model's basis and its
+runs of 0.51 s (90,600 steps, about 2 CPU minutes each), the propensity's 64 reduced starts and (printer_roller) 64
+CEAs on the coarse mesh; the two scenes at a time."""
 import csv
 import json
 import math
@@ -37,6 +40,7 @@ from rollerref import forced as ref_forced  # noqa: E402
 
 c = Checker("report_printer")
 RIPPLE = 873.0
+PROPENSITY_MESH = "-mesh_h 0.0012 -mesh_h_contact 3e-4"  # the propensity's cases on the coarse printer mesh (its own basis)
 
 
 def column(path, names):
@@ -78,8 +82,8 @@ def branch_modulus(out):
 
 
 def report(name):
-    return subprocess.run([sys.executable, "-m", "rollerreport.run", os.path.join(SOURCE, "jobs", f"{name}.yaml"), os.path.abspath(name), "--roller", os.path.abspath(EXE)],
-                          capture_output=True, text=True)
+    return subprocess.run([sys.executable, "-m", "rollerreport.run", os.path.join(SOURCE, "jobs", f"{name}.yaml"), os.path.abspath(name),
+                           "--propensity-options", PROPENSITY_MESH, "--roller", os.path.abspath(EXE)], capture_output=True, text=True)
 
 
 browser = shutil.which("chromium") or shutil.which("chromium-browser")
@@ -102,6 +106,16 @@ for name in ("printer_roller", "printer_pick"):
             and rep["propensity"]["cases"] >= 64 and len(cases) == rep["propensity"]["cases"] and rep["wav_source"],
             f"{name}: report.json {', '.join(k for k in keys if k in rep)}; verdict {rep['verdict']} by {rep['squeals_by']}; "
             f"{rep['spl_db']:.1f} dB SPL; propensity {rep['propensity']['cases']} cases, {100 * rep['propensity']['fraction']:.1f} %")
+
+    # the propensity by the finite elements: every case's reduced start ran and was classified; on the feed every case's
+    # CEA ran too (on the pick, with the sheet's mass, none: the scene's CEA is refused)
+    prop = rep["propensity"]
+    want_cea = name == "printer_roller"
+    c.check(prop.get("model", "").startswith("finite elements") and all(r["transient"] in ("stick-slip", "growing", "settled") for r in cases)
+            and all((r["cea"] in ("stable", "flutter", "divergence")) if want_cea else r["cea"] == "not run" for r in cases),
+            f"{name}: the propensity's {len(cases)} cases by the finite elements: starts {sorted(set(r['transient'] for r in cases))}, CEAs "
+            f"{sorted(set(r['cea'] for r in cases))}; classes {prop['by_class']}; CEA against the start {prop.get('agreement')}; "
+            f"1-DOF the same {prop.get('onedof_agreement')}; ranking {[(e['parameter'], round(e['spearman'], 2)) for e in prop['ranking'][:3]]}")
 
     # squeal.wav against its source
     src = rep["wav_source"]

@@ -250,12 +250,21 @@ def forced(ctx):
                   "linear one about sliding")
     if snd:
         ev.append(f"the radiated level at the ripple's frequency (within 20 %): {snd.get('spl_line_db', math.nan):.1f} dB SPL")
+    sw = ctx.get("ripple_sweep") or {}
+    if sw.get("peak"):
+        pk, at = sw["peak"], sw.get("scene_ripple") or {}
+        ev.append(f"the ripple swept over {sw['cases']} frequencies {sw['band_hz'][0]:.4g}-{sw['band_hz'][1]:.4g} Hz and the CEA's "
+                  f"modes (ripple_sweep.csv, the reduced model): the hub's response peaks at {pk['frequency_hz']:.5g} Hz "
+                  f"({pk['rate_per_ripple']:.4g} per rad of ripple{', stick-slip riding on it' if pk['stick_slip_in_window'] else ', sliding'})"
+                  + (f"; the scene's ripple at {at['frequency_hz']:.5g} Hz is {at['below_peak_db']:.1f} dB from the peak" if at.get("below_peak_db") is not None else "")
+                  + (f"; the patch stick-slips in {sw['stick_slip_cases']} of the runs" if sw.get("stick_slip_cases") else ""))
     # squeals: the ripple's line is audible (above 0 dB SPL) at a frequency a listener hears (>= 20 Hz)
     spl = snd.get("spl_line_db")
     audible = spl is not None and math.isfinite(spl) and spl > 0 and r["frequency"] / s >= 20.0
     return {"kind": "forced", "status": "run", "squeals": bool(audible), "frequency_hz": r["frequency"] / s,
             "growth_rate_per_s": None, "limit_cycle_amplitude": None, "response_rate_amplitude": r["rate_amplitude"],
-            "spl_db": spl, "evidence": ev}
+            "spl_db": spl, "sweep": sw.get("peak") and {"peak": sw["peak"], "scene_ripple": sw.get("scene_ripple"), "file": sw["file"]},
+            "evidence": ev}
 
 
 MECHANISMS = [flutter, stick_slip, forced]

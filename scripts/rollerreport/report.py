@@ -36,6 +36,14 @@ from . import heard, journal, lines, mechanisms, page
 FIXED = {"case", "re", "im", "frequency", "growth_rate", "order", "wave", "error"}
 
 
+def _json(path):
+    """A JSON file's content, None when it is missing."""
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        return json.load(f)
+
+
 def read_rows(path):
     with open(path, newline="") as f:
         return list(csv.DictReader(f))
@@ -522,7 +530,8 @@ def write(folder, parts=PARTS):
     ctx = dict(folder=folder, scene=scene, verdict=v, fit=out.get("fit"), sound=snd if not (heard_cycle or heard_run) else None,
                divergent=out.get("divergent", []), seconds_per_unit=s_unit, stick_slip_cycle=cyc, steady_stuck=stuck,
                stick_slip_sound=snd if heard_cycle else None, onedof=scene.get("onedof"), forced_response=forced_r,
-               forced_sound=forced_level(folder, scene, s_unit, forced_r["frequency"]) if forced_r else None)
+               forced_sound=forced_level(folder, scene, s_unit, forced_r["frequency"]) if forced_r else None,
+               ripple_sweep=_json(j("ripple_sweep.json")))
     if "friction_onset" in out:
         ctx["friction_onset"] = out["friction_onset"]
     if "cea_error" in out:
@@ -567,6 +576,9 @@ def write(folder, parts=PARTS):
                f"{snd['wav_seconds'] * 1e3:.1f} ms: the simulated span {src['t0']:.4g} to {src['t1']:.4g} times "
                f"{src['seconds_per_unit']:.4g} s per unit; full scale is a sine of {snd['wav_reference']['full_scale_db_spl']:g} dB SPL.", ""]
         md += [f"> {x}" for x in (snd["notice"], snd["level_note"]) if x] + ["", "![spectrogram](spectrogram.png)", ""]
+    if os.path.exists(j("ripple_sweep.png")):
+        md += ["## The drive's ripple swept", "", "The forced response against the ripple's frequency (ripple_sweep.csv; the "
+               "forced mechanism's evidence above):", "", "![the ripple swept](ripple_sweep.png)", ""]
     md += propensity_lines(out["propensity"], folder)
     out["cost"] = jr.parts
     if jr.parts:

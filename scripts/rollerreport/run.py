@@ -302,11 +302,13 @@ OUTPUTS = ("modes.csv", "modes.h5", "modes.xmf", "steady.csv", "sweep.csv", "tra
            "transient.h5", "transient.xmf", "transient_base.h5", "transient_base.xmf", "scene.json", "commands.json",
            "journal.json", "report.md", "report.json", "report.html", "map.png", "squeal.wav", "sound.csv", "spectrogram.png",
            "vibration.gif", "vibration.mp4", "mesh.h5", "mesh.xmf", "basis.h5", "propensity_basis.h5", "propensity_cases.csv",
-           "propensity_table.json", "propensity_runs.csv", "propensity_cea.csv", "propensity.json", "propensity.csv", "propensity.png")
+           "propensity_table.json", "propensity_runs.csv", "propensity_cea.csv", "propensity.json", "propensity.csv", "propensity.png",
+           "ripple_sweep_cases.csv", "ripple_sweep_runs.csv", "ripple_sweep.csv", "ripple_sweep.json", "ripple_sweep.png")
 # PETSc's message for PETSC_ERR_SUP: what roller refuses as not carried (e.g. -modes with -rubber maxwell or
 # -sheet_mass): the part is "not run" with roller's reason, and the driver does not count it as failed
 REFUSED = "No support for this operation"
-ROLLER_PARTS = ("cea", "map", "transient", "transient_base", "mesh", "basis", "stickslip", "forced", "propensity_table",
+ROLLER_PARTS = ("cea", "map", "transient", "transient_base", "mesh", "basis", "stickslip", "forced", "ripple_sweep_runs",
+                "ripple_sweep", "propensity_table",
                 "propensity_basis", "propensity_cea", "propensity_runs", "propensity")
 
 
@@ -350,6 +352,9 @@ def parse(argv):
                    "(default the scene's, at least 0.5 s of audio)")
     p.add_argument("--ripple", default=None, help="axle scenes: AMPLITUDE,FREQUENCY of the motor's ripple for the forced "
                    "run (-drive_ripple, -drive_ripple_frequency; default the scene's, none if it has none)")
+    p.add_argument("--ripple-sweep", type=int, default=24, help="axle scenes with a ripple: the forced response swept "
+                   "over this many log-spaced frequencies of the audible band (100 Hz-5 kHz) plus the CEA's modes, each a "
+                   "run of one -sweep map (default 24, 0: none)")
     p.add_argument("--forced-options", default="", help="axle scenes: roller options of the forced run besides the "
                    "ripple, e.g. '-theta_start 0 -drive_ramp 0 -nip_ramp 60' (a start sliding)")
     p.add_argument("--model", choices=("rom", "full"), default="rom", help="axle scenes: the long transients (the start "
@@ -447,6 +452,7 @@ def axle_parts(steps, base, opts, scene, a, extra, out):
         own = [onedof.value(opts, "drive_ripple"), onedof.value(opts, "drive_ripple_frequency")]
         if not a.forced_options and ripple == own:  # the scene runs with its own ripple: the start from rest is the forced run
             scene["ripple"]["files"] = ["stickslip.csv", "stickslip_surface.csv"]
+            ripple_sweep_part(steps, base + rom, opts, scene, a, extra, out, ripple, inputs)
             return propensity_part(steps, base, opts, a, extra, out)
         more = a.forced_options.split()
         steps.run("forced", base + rom + more + ["-drive_ripple", repr(ripple[0]), "-drive_ripple_frequency", repr(ripple[1]),
@@ -454,7 +460,49 @@ def axle_parts(steps, base, opts, scene, a, extra, out):
                                                  j("forced_surface.csv"), "-quiet"] + extra,
                   f"the motor's ripple {ripple[0]:g} rad at {ripple[1]:g} per unit time: the forced response "
                   "(docs/squeal.md 9.4)", outputs=["forced.csv", "forced_surface.csv"], inputs=inputs)
+        ripple_sweep_part(steps, base + rom + more, opts, scene, a, extra, out, ripple, inputs)
     propensity_part(steps, base, opts, a, extra, out)
+
+
+def ripple_sweep_part(steps, base, opts, scene, a, extra, out, ripple, inputs):
+    """The forced mechanism's sweep (rollerreport.ripple_sweep): the ripple's amplitude at --ripple-sweep frequencies
+    over the audible band and the CEA's modes, one -sweep -sweep_cases map on --ranks (part ripple_sweep_runs), then the
+    response read from each case's series (part ripple_sweep)."""
+    if a.ripple_sweep <= 0:
+        return
+    from . import ripple_sweep
+
+    j = lambda f: os.path.join(out, f)  # noqa: E731
+    modes = report.read_rows(j("modes.csv")) if os.path.exists(j("modes.csv")) else []
+    dt = float(opts["ts_dt"]) if "ts_dt" in opts else None
+    if dt is None and os.path.exists(j("stickslip.csv")):
+        t = [float(r["t"]) for r in report.read_rows(j("stickslip.csv"))[1:3]]
+        dt = t[1] - t[0]
+    s = scene.get("seconds_per_unit", 1.0)
+    freqs, cea_modes = ripple_sweep.frequencies(modes, s, dt, a.ripple_sweep, also=[ripple[1]])
+    started = scene.get("drive_started", 0.0)
+    t_end = ripple_sweep.run_length(started, freqs)
+    ripple_sweep.write_cases(out, freqs, ripple[0])
+    os.makedirs(j("ripple_sweep"), exist_ok=True)
+    steps.run("ripple_sweep_runs", ripple_sweep.command(base, extra, out, t_end, a.ranks, a.mpiexec),
+              f"the motor's ripple {ripple[0]:g} rad swept over {len(freqs)} frequencies {freqs[0] / s:.4g}-{freqs[-1] / s:.4g} Hz "
+              f"and the CEA's modes, each run to t = {t_end:.5g} (docs/squeal.md 9.4)", outputs=[ripple_sweep.RUNS],
+              inputs=[j(ripple_sweep.CASES)] + list(inputs), ranks=a.ranks)
+    if steps.only is not None and "ripple_sweep" not in steps.only:
+        return
+    src = [os.path.join(os.path.dirname(__file__), f) for f in ("ripple_sweep.py", "cycle.py")]
+    digest = journal.inputs_hash({"part": "ripple_sweep", "freqs": freqs, "ripple": ripple}, src + [j(ripple_sweep.RUNS)])
+
+    def go():
+        if not os.path.exists(j(ripple_sweep.RUNS)):
+            return False, {"error": "the sweep's map is missing (logs/ripple_sweep_runs.log)"}
+        r = ripple_sweep.classify(out, freqs, ripple[0], cea_modes, started, s, ripple[1])
+        ripple_sweep.figure(out)
+        return True, {"result": {"peak_hz": (r["peak"] or {}).get("frequency_hz")}}
+
+    steps.journal = journal.Journal(out)
+    steps.journal.run("ripple_sweep", digest, ["ripple_sweep.json", "ripple_sweep.csv", "ripple_sweep.png"], go,
+                      what=f"the forced response against the ripple's frequency ({len(freqs)} runs; docs/squeal.md 9.4)")
 
 
 def basis_part(steps, base, extra, path, name):

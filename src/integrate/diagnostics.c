@@ -81,11 +81,15 @@ static PetscErrorCode AxleColumns(Roller ctx, RollerStepInfo *info)
   if (ctx->axle.on) {
     const RollerHubState *s    = &ctx->axle.hub->s;
     const PetscReal       rate = (s->cur[2] - s->prev[2]) / ctx->ts.dt;
-    PetscReal             n[2];
+    PetscReal             n[2], th, th_prev;
 
     RollerAxleFrame(ctx, ctx->state.time, n);
-    info->axle.y            = n[0] * s->cur[0] + n[1] * s->cur[1];
-    info->axle.hub_rate     = td + rate;
+    info->axle.y = n[0] * s->cur[0] + n[1] * s->cur[1];
+    /* the hub's angle theta + phi differenced over the step, both parts alike: theta'(t) beside phi's backward
+       difference was a first-order mismatch that a fast ripple (w dt ~ 0.6) showed as a spurious response rising as w */
+    RollerTheta(ctx, ctx->state.time, &th, NULL, NULL);
+    RollerTheta(ctx, ctx->state.time - ctx->ts.dt, &th_prev, NULL, NULL);
+    info->axle.hub_rate     = (th - th_prev) / ctx->ts.dt + rate;
     info->axle.drive_torque = -ctx->axle.drive_stiffness * s->cur[2] - ctx->axle.drive_damping * rate;
     info->friction.torque   = info->axle.drive_torque;
   }
