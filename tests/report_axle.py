@@ -12,7 +12,9 @@ cases, then every file is read:
 - squeal.wav: mono 16-bit 44.1 kHz, at least 0.5 s, as long as the simulated span of wav_source times its time scale
   (1.5 samples), its pitch (the autocorrelation of its last two thirds, measured here) within 2 % of the limit cycle's,
   sustained (the RMS of its last two spans of four periods within 10 %), full scale the stated 94 dB SPL;
-- forced: the hub's response at the ripple within 10 % of rollerref.forced's closed form, its level finite;
+- forced: the hub's response at the ripple within 10 % of rollerref.forced's closed form, its level finite; the ripple
+  swept (24 frequencies of the band and the CEA's modes): its case at the scene's ripple within 2 % of the forced
+  run's line, its peak at the CEA's drive mode;
 - propensity: 64 cases in propensity.csv, the fraction inside its interval; each case by the finite elements (its CEA
   and its start from rest on the reduced model, on the coarser mesh -mesh_h 0.2 -mesh_h_contact 0.008 with its own
   basis): every run finished, no unstable CEA whose start settles, the 1-DOF's stick-slip verdict the same in at least
@@ -118,6 +120,17 @@ ref = sc["ripple"]["one_dof"]["rate_amplitude"]
 c.check(fo["status"] == "run" and abs(fo["response_rate_amplitude"] / ref - 1) < 0.10 and fo["spl_db"] is not None and math.isfinite(fo["spl_db"]),
         f"forced: the hub rate at the ripple {fo['response_rate_amplitude']:.6g} against the 1-DOF closed form {ref:.6g} "
         f"({100 * (fo['response_rate_amplitude'] / ref - 1):+.2f} %), its line {fo['spl_db']:.1f} dB SPL")
+# the ripple swept (ripple_sweep.csv, the reduced model): its case at the scene's ripple is the forced run's line (the
+# same frequency, a longer run), and the response peaks at the drive's mode of the CEA (largest hub_phi)
+sw = json.load(open(os.path.join(out, "ripple_sweep.json")))
+with open(os.path.join(out, "modes.csv"), newline="") as f:
+    drive_hz = float(max(csv.DictReader(f), key=lambda m: float(m["hub_phi"]))["im"]) / (2 * math.pi) / sc["seconds_per_unit"]
+at = sw["scene_ripple"]
+c.check(sw["failed"] == 0 and sw["cases"] >= 24 and abs(at["frequency_hz"] * sc["seconds_per_unit"] / 0.03 - 1) < 1e-9
+        and abs(at["rate_amplitude"] / fo["response_rate_amplitude"] - 1) < 0.02 and abs(sw["peak"]["frequency_hz"] / drive_hz - 1) < 1e-9,
+        f"ripple swept over {sw['cases']} frequencies: at the scene's {at['frequency_hz']:.4g} Hz {at['rate_amplitude']:.6g} against the "
+        f"forced run's {fo['response_rate_amplitude']:.6g} ({100 * (at['rate_amplitude'] / fo['response_rate_amplitude'] - 1):+.2f} %); "
+        f"the peak at {sw['peak']['frequency_hz']:.4g} Hz, the CEA's drive mode {drive_hz:.4g} Hz")
 prop = rep["propensity"]
 with open(os.path.join(out, "propensity.csv"), newline="") as f:
     cases = list(csv.DictReader(f))

@@ -8,7 +8,10 @@ Modules:
 - mechanisms: flutter, stick-slip, forced resonance, each a function of the folder returning a dict;
 - cycle: the limit cycle of a monitor series (stick in every period), the pitch of a periodic sound, the lock-in;
 - onedof: a scene on -axle as rollerref's 1-DOF (the cross-check of the CEA's drive mode, the forced closed form);
-- propensity: the odds over the real spread (Latin hypercube, Wilson's interval, the ranking);
+- propensity: the odds over the real spread (Latin hypercube, Wilson's interval, the ranking), the 1-DOF's classes;
+- propensity_fe: the propensity's cases on the finite elements (each case's CEA and its reduced start, -sweep_cases);
+- ripple_sweep: the forced response against the ripple's frequency (a -sweep_cases map of reduced runs);
+- tables: a study's STEM.csv and STEM.json, written and read alike;
 - radiation: the sound pressure at a listener from the roller's surface velocity (2-D cylinder, finite width);
 - sound: the WAV of the simulated time at a stated level, the loudest line, A-weighting, the spectrogram;
 - animation: the roller deforming, coloured by its velocity, with the stick and slip zones on the patch;
@@ -16,4 +19,4 @@ Modules:
 - spectrum, squeal_fit: the spectra and the whirl fits the tests and rollerplots use too.
 """
 __all__ = ["spectrum", "squeal_fit", "lines", "sound", "radiation", "animation", "mechanisms", "cycle", "onedof",
-           "propensity", "journal", "page", "report", "run"]
+           "propensity", "propensity_fe", "ripple_sweep", "tables", "journal", "page", "report", "run"]

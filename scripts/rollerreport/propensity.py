@@ -20,14 +20,12 @@ Two classifiers (case_options maps a sample onto the scene's options for both):
   it is stable but the start from rest reaches the stick-slip cycle, else quiet; both squeak by stick-slip (the 1-DOF
   has one mode: no flutter). It has no rubber and no bracket: the loss factor and the bracket's stiffness do not enter.
 """
-import csv
-import json
 import math
 import os
 
 import numpy as np
 
-from . import onedof
+from . import onedof, tables
 
 # name: (option scaled, low, high, how the factor is formed)
 SPREAD = {
@@ -140,10 +138,6 @@ def summarize(folder, rows, seed, by_mechanism, by_class, classifier, **more):
     fraction, its Wilson interval, by_mechanism, by_class, the ranges, the sampling, the ranking by Spearman's rank
     correlation of each sampled parameter with squeaking, the classifier, and `more`); returns the summary."""
     n, names = len(rows), list(SPREAD)
-    with open(os.path.join(folder, "propensity.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
     k = sum(int(r["squeaks"]) for r in rows)
     squeak = np.array([int(r["squeaks"]) for r in rows], float)
     ranking = []
@@ -157,9 +151,7 @@ def summarize(folder, rows, seed, by_mechanism, by_class, classifier, **more):
            "ranges": {nm: [lo, hi] for nm, (_, lo, hi) in SPREAD.items()}, "sampling": {"method": "latin hypercube",
            "seed": seed, "cases": n, "file": "propensity.csv"}, "classifier": classifier, "ranking": ranking}
     out.update(more)
-    with open(os.path.join(folder, "propensity.json"), "w") as f:
-        json.dump(out, f, indent=1)
-    return out
+    return tables.write(folder, "propensity", rows, out)
 
 
 def figure(folder, png="propensity.png"):
@@ -169,10 +161,7 @@ def figure(folder, png="propensity.png"):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    with open(os.path.join(folder, "propensity.json")) as f:
-        summary = json.load(f)
-    with open(os.path.join(folder, "propensity.csv"), newline="") as f:
-        rows = list(csv.DictReader(f))
+    summary, rows = tables.read(folder, "propensity")
     a, b = summary["ranking"][0]["parameter"], summary["ranking"][1]["parameter"]
     fig, ax = plt.subplots(figsize=(5.5, 4))
     for kind, col in (("quiet", "tab:blue"), ("bistable", "tab:red"), ("unstable sliding", "tab:orange"), ("stick-slip", "tab:brown"),

@@ -15,13 +15,12 @@ ripple_sweep.csv (a row per frequency), ripple_sweep.json (the peak, the scene's
 ripple_sweep.png (the response against frequency, the CEA's modes marked).
 """
 import csv
-import json
 import math
 import os
 
 import numpy as np
 
-from . import cycle
+from . import cycle, tables
 
 CASES, RUNS, SERIES = "ripple_sweep_cases.csv", "ripple_sweep_runs.csv", os.path.join("ripple_sweep", "series.csv")
 BAND_HZ = (100.0, 5000.0)
@@ -83,10 +82,6 @@ def classify(folder, freqs, amplitude, modes, started, seconds_per_unit, scene_f
         rows.append({"case": i, "frequency": f, "frequency_hz": f / seconds_per_unit, "rate_amplitude": a,
                      "rate_per_ripple": a / amplitude, "friction_amplitude": q, "stick_slip_in_window": int(ss),
                      "status": "ok" if ok else "failed"})
-    with open(os.path.join(folder, "ripple_sweep.csv"), "w", newline="") as fh:
-        w = csv.DictWriter(fh, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
     good = [r for r in rows if r["status"] == "ok"]
     peak = max(good, key=lambda r: r["rate_amplitude"]) if good else None
     at = None
@@ -98,9 +93,7 @@ def classify(folder, freqs, amplitude, modes, started, seconds_per_unit, scene_f
            "band_hz": [rows[0]["frequency_hz"], rows[-1]["frequency_hz"]], "modes_hz": [m / seconds_per_unit for m in modes],
            "peak": {k: peak[k] for k in ("frequency_hz", "rate_amplitude", "rate_per_ripple", "friction_amplitude", "stick_slip_in_window")} if peak else None,
            "stick_slip_cases": sum(r["stick_slip_in_window"] for r in good), "scene_ripple": at, "file": "ripple_sweep.csv"}
-    with open(os.path.join(folder, "ripple_sweep.json"), "w") as fh:
-        json.dump(out, fh, indent=1)
-    return out
+    return tables.write(folder, "ripple_sweep", rows, out)
 
 
 def figure(folder, png="ripple_sweep.png"):
@@ -109,9 +102,8 @@ def figure(folder, png="ripple_sweep.png"):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    with open(os.path.join(folder, "ripple_sweep.json")) as fh:
-        summary = json.load(fh)
-    rows = [r for r in csv.DictReader(open(os.path.join(folder, "ripple_sweep.csv"), newline="")) if r["status"] == "ok"]
+    summary, rows = tables.read(folder, "ripple_sweep")
+    rows = [r for r in rows if r["status"] == "ok"]
     f = np.array([float(r["frequency_hz"]) for r in rows])
     a = np.array([float(r["rate_per_ripple"]) for r in rows])
     ss = np.array([int(r["stick_slip_in_window"]) for r in rows], bool)
