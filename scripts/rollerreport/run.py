@@ -357,9 +357,11 @@ def parse(argv):
                    "run of one -sweep map (default 24, 0: none)")
     p.add_argument("--forced-options", default="", help="axle scenes: roller options of the forced run besides the "
                    "ripple, e.g. '-theta_start 0 -drive_ramp 0 -nip_ramp 60' (a start sliding)")
-    p.add_argument("--model", choices=("rom", "full"), default="rom", help="axle scenes: the long transients (the start "
-                   "from rest, the forced run) on the reduced model (-rom, its basis computed once: basis.h5) or the full "
-                   "finite elements (default rom: docs/squeal.md 9.4 measures the two against each other)")
+    p.add_argument("--model", choices=("full", "rom"), default="full", help="axle scenes: the heard runs (the start from "
+                   "rest, the forced run) on the full finite elements or the reduced model (-rom -rom_input basis.h5; the "
+                   "maps, the ripple sweep and the propensity, always run on it). Default full: the reduced contact's "
+                   "friction force rings near a quarter of the step's rate, 10-15 times the full model's, which the WAV "
+                   "would carry (docs/squeal.md 9.4)")
     p.add_argument("--propensity-cases", type=int, default=64, help="axle scenes: the propensity study's cases (Latin "
                    "hypercube; default 64, 0: none)")
     p.add_argument("--propensity-seed", type=int, default=38, help="the propensity's sampling seed (default 38)")
@@ -432,10 +434,11 @@ def axle_parts(steps, base, opts, scene, a, extra, out):
     steps.run("mesh", base + ["-ts_max_steps", "0", "-output", j("mesh.h5"), "-quiet"] + extra,
               "the mesh alone (no step): its vertices on the outer circle set the mesh-passing lines the sound leaves out "
               "(rollerreport.lines)", outputs=["mesh.h5", "mesh.xmf"])
-    rom, inputs = [], []
-    if a.model == "rom":
-        rom, inputs = ["-rom", "-rom_input", j("basis.h5")], [j("basis.h5")]
-        basis_part(steps, base, extra, j("basis.h5"), "basis")
+    # the reduced model's basis, read by the maps (the ripple sweep, the propensity) and, with --model rom, by the heard
+    # runs too (full by default: the reduced contact rings near a quarter of the step's rate, docs/squeal.md 9.4)
+    reduced = ["-rom", "-rom_input", j("basis.h5")]
+    basis_part(steps, base, extra, j("basis.h5"), "basis")
+    rom, inputs = (reduced, [j("basis.h5")]) if a.model == "rom" else ([], [])
     steps.run("stickslip", base + rom + ["-ts_max_time", repr(T), "-monitor_csv", j("stickslip.csv"), "-monitor_surface_csv",
                                          j("stickslip_surface.csv"), "-quiet"] + extra,
               f"the start from rest on the axle to t = {T:.5g} ({T * s:.3g} s of audio){' on the reduced model' if rom else ''}: "
@@ -452,7 +455,7 @@ def axle_parts(steps, base, opts, scene, a, extra, out):
         own = [onedof.value(opts, "drive_ripple"), onedof.value(opts, "drive_ripple_frequency")]
         if not a.forced_options and ripple == own:  # the scene runs with its own ripple: the start from rest is the forced run
             scene["ripple"]["files"] = ["stickslip.csv", "stickslip_surface.csv"]
-            ripple_sweep_part(steps, base + rom, opts, scene, a, extra, out, ripple, inputs)
+            ripple_sweep_part(steps, base + reduced, opts, scene, a, extra, out, ripple, [j("basis.h5")])
             return propensity_part(steps, base, opts, a, extra, out)
         more = a.forced_options.split()
         steps.run("forced", base + rom + more + ["-drive_ripple", repr(ripple[0]), "-drive_ripple_frequency", repr(ripple[1]),
@@ -460,7 +463,7 @@ def axle_parts(steps, base, opts, scene, a, extra, out):
                                                  j("forced_surface.csv"), "-quiet"] + extra,
                   f"the motor's ripple {ripple[0]:g} rad at {ripple[1]:g} per unit time: the forced response "
                   "(docs/squeal.md 9.4)", outputs=["forced.csv", "forced_surface.csv"], inputs=inputs)
-        ripple_sweep_part(steps, base + rom + more, opts, scene, a, extra, out, ripple, inputs)
+        ripple_sweep_part(steps, base + reduced + more, opts, scene, a, extra, out, ripple, [j("basis.h5")])
     propensity_part(steps, base, opts, a, extra, out)
 
 
@@ -529,7 +532,7 @@ def propensity_part(steps, base, opts, a, extra, out):
     plan, maps = {}, []
     if a.propensity_model == "fe":
         more = a.propensity_options.split()
-        basis = j("propensity_basis.h5" if more or a.model != "rom" else "basis.h5")  # the propensity's own mesh: its own basis
+        basis = j("propensity_basis.h5" if more else "basis.h5")  # the propensity's own mesh: its own basis
         plan = {"run_time": propensity_fe.run_length(opts, a.propensity_periods), "nev": a.propensity_nev or a.nev,
                 "with_cea": steps.journal.parts.get("cea", {}).get("status") == "ok", "basis": os.path.basename(basis),
                 "options": more, "cases": a.propensity_cases, "seed": a.propensity_seed}
