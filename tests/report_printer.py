@@ -169,7 +169,7 @@ for name in ("printer_roller", "printer_pick"):
             f"{name}: the ripple swept over {sw['cases']} frequencies {sw['band_hz'][0]:.0f}-{sw['band_hz'][1]:.0f} Hz: at 873 Hz "
             f"{at['rate_amplitude']:.4g} against the 0.51 s run's {fo['response_rate_amplitude']:.4g} "
             f"({100 * (at['rate_amplitude'] / fo['response_rate_amplitude'] - 1):+.2f} %); the peak {sw['peak']['frequency_hz']:.0f} Hz "
-            f"({sw['peak']['rate_per_ripple']:.4g} per rad), the scene's ripple {at['below_peak_db']:.1f} dB from it")
+            f"({sw['peak']['rate_per_ripple']:.4g} per rad), the scene's ripple {-at['below_peak_db']:.1f} dB below it")
 
     # flutter
     fl = mech["flutter"]

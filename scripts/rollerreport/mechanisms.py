@@ -256,7 +256,7 @@ def forced(ctx):
         ev.append(f"the ripple swept over {sw['cases']} frequencies {sw['band_hz'][0]:.4g}-{sw['band_hz'][1]:.4g} Hz and the CEA's "
                   f"modes (ripple_sweep.csv, the reduced model): the hub's response peaks at {pk['frequency_hz']:.5g} Hz "
                   f"({pk['rate_per_ripple']:.4g} per rad of ripple{', stick-slip riding on it' if pk['stick_slip_in_window'] else ', sliding'})"
-                  + (f"; the scene's ripple at {at['frequency_hz']:.5g} Hz is {at['below_peak_db']:.1f} dB from the peak" if at.get("below_peak_db") is not None else "")
+                  + (f"; the scene's ripple at {at['frequency_hz']:.5g} Hz is {-at['below_peak_db']:.1f} dB below the peak" if at.get("below_peak_db") is not None else "")
                   + (f"; the patch stick-slips in {sw['stick_slip_cases']} of the runs" if sw.get("stick_slip_cases") else ""))
     # squeals: the ripple's line is audible (above 0 dB SPL) at a frequency a listener hears (>= 20 Hz)
     spl = snd.get("spl_line_db")
