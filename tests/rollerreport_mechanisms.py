@@ -223,6 +223,11 @@ c.check(got == [("bistable", "stick-slip", "1"), ("flutter", "flutter", "1"), ("
         and fe["fraction"] == 0.5 and fe["by_mechanism"]["stick-slip"] == 0.25 and fe["by_mechanism"]["flutter"] == 0.25
         and fe["agreement"]["stable_and_stick_slip"] == 1 and fe["agreement"]["unstable_and_settled"] == 1,
         f"the finite elements' classes from the maps' files: {got}; {fe['by_mechanism']}, agreement {fe['agreement']}")
+# the same stick-slip series with the motor's ripple at the cycle's frequency (1 % off): the ripple drives the patch
+rippled = dict(opts, drive_ripple="0.001", drive_ripple_frequency=repr(1.01 / cyc["period"]))
+first = propensity_fe.classify(dq, rippled, cases, True)[0]
+c.check((first["class"], first["mechanism"], first["squeaks"]) == ("forced stick-slip", "forced", 1),
+        f"a stick-slip cycle at the motor's ripple (1 % off) is forced: {first['class']}, {first['mechanism']}")
 
 # the CEA's unstable mode against the scene's own run (mechanisms.run_growth): a line at f growing at g is confirmed,
 # the same line steady (beside a louder steady line elsewhere) is not

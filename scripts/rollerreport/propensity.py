@@ -165,7 +165,8 @@ def figure(folder, png="propensity.png"):
     a, b = summary["ranking"][0]["parameter"], summary["ranking"][1]["parameter"]
     fig, ax = plt.subplots(figsize=(5.5, 4))
     for kind, col in (("quiet", "tab:blue"), ("bistable", "tab:red"), ("unstable sliding", "tab:orange"), ("stick-slip", "tab:brown"),
-                      ("flutter", "tab:purple"), ("growing", "tab:olive"), ("undecided", "grey"), ("failed", "black")):
+                      ("forced stick-slip", "tab:pink"), ("flutter", "tab:purple"), ("growing", "tab:olive"), ("undecided", "grey"),
+                      ("failed", "black")):
         pts = [(float(r[a]), float(r[b])) for r in rows if r.get("class", r["mechanism"]) == kind]
         if pts:
             ax.plot(*zip(*pts), "o", color=col, label=f"{kind} ({len(pts)})")

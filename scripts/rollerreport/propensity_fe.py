@@ -15,12 +15,14 @@ into a Slurm array: jobs/slurm/propensity.sbatch), the 1-DOF's class beside them
   when the hub's oscillation, a clean one of at least 1 % of its mean rate, still grows at the end (more than 2 % a
   period over its last periods).
 
-A case's mechanism: stick-slip when its start from rest reaches the stick-slip cycle (class "unstable sliding" when its
-CEA is unstable too: the negative slope's onset grown into stick-slip; "bistable" when the CEA is stable: the cycle
-beside a stable steady state, which only the transient sees); flutter when the CEA has a growing oscillating mode and
-the start does not reach stick-slip; growing when the start's oscillation still grows at its end without either; else
-quiet ("failed" when its run failed). Flutter, stick-slip and growing squeak. The CEA's and the transient's verdicts are
-both in propensity.csv (cea, transient columns), and how often they agree is in propensity.json ("agreement").
+A case's mechanism: forced when its start reaches a stick-slip cycle at the motor's ripple frequency (within 2 %: the
+ripple drives the patch through stick and slip, class "forced stick-slip"); stick-slip when it reaches another one
+(class "unstable sliding" when its CEA is unstable too: the negative slope's onset grown into stick-slip; "bistable"
+when the CEA is stable: the cycle beside a stable steady state, which only the transient sees); flutter when the CEA
+has a growing oscillating mode and the start does not reach stick-slip; growing when the start's oscillation still
+grows at its end without either; else quiet ("failed" when its run failed). All but quiet and failed squeak. The CEA's
+and the transient's verdicts are both in propensity.csv (cea, transient columns), and how often they agree is in
+propensity.json ("agreement").
 """
 import csv
 import math
@@ -33,6 +35,7 @@ from . import cycle, onedof, propensity
 PEP_MAX_IT = 100  # the cases' eigensolver restarts (docs/squeal.md 9.4: a case's partial answer keeps the least stable)
 GROWING_PER_PERIOD = 0.02  # the envelope's growth a period above which an oscillation that has not settled grows
 GROWING_SIZE = 0.01  # ... when its half peak-to-peak is at least this fraction of the hub's mean rate
+FORCED_SPREAD = 0.02  # a stick-slip cycle within 2 % of the motor's ripple frequency is the ripple's (forced)
 CASES, CEA, RUNS, SERIES = "propensity_cases.csv", "propensity_cea.csv", "propensity_runs.csv", os.path.join("propensity", "series.csv")
 
 
@@ -104,6 +107,7 @@ def classify(folder, opts, cases, with_cea):
         for r in csv.DictReader(open(os.path.join(folder, CEA), newline="")):
             cea.setdefault(int(r["case"]), []).append(r)
     t_min = onedof.value(opts, "theta_start") + onedof.value(opts, "drive_ramp")
+    f_ripple = onedof.value(opts, "drive_ripple_frequency") if onedof.value(opts, "drive_ripple") else 0.0
     stem = os.path.join(folder, SERIES)[: -len(".csv")]
     rows = []
     for i, (x, case) in enumerate(cases):
@@ -113,14 +117,16 @@ def classify(folder, opts, cases, with_cea):
         else:
             t_kind, cyc = "failed", {"frequency": math.nan, "amplitude": math.nan, "growth_rate": math.nan}
         one_kind = propensity.classify(opts, case)[0]
-        kind = ("stick-slip" if t_kind == "stick-slip" else "flutter" if c_kind == "flutter" else
+        # a cycle at the motor's ripple is the ripple driving the patch through stick and slip: forced, not self-excited
+        forced = t_kind == "stick-slip" and f_ripple > 0 and abs(cyc["frequency"] / f_ripple - 1) < FORCED_SPREAD
+        kind = ("forced" if forced else "stick-slip" if t_kind == "stick-slip" else "flutter" if c_kind == "flutter" else
                 t_kind if t_kind in ("growing", "failed") else "quiet")
         klass = ({"flutter": "unstable sliding", "divergence": "unstable sliding", "stable": "bistable"}.get(c_kind, "stick-slip")
-                 if kind == "stick-slip" else kind)
+                 if kind == "stick-slip" else "forced stick-slip" if forced else kind)
         rows.append(dict(case=i, **x, **{"opt_" + k: v for k, v in case.items()}, cea=c_kind, cea_growth_rate=c_g,
                          cea_frequency=c_w, transient=t_kind, cycle_frequency=cyc["frequency"], cycle_amplitude=cyc["amplitude"],
                          cycle_growth_rate=cyc["growth_rate"], onedof=one_kind,
-                         squeaks=int(kind in ("flutter", "stick-slip", "growing")), mechanism=kind, **{"class": klass}))
+                         squeaks=int(kind in ("flutter", "stick-slip", "growing", "forced")), mechanism=kind, **{"class": klass}))
     return rows
 
 
@@ -136,15 +142,16 @@ def summarize(folder, rows, seed, with_cea, t_end, nev):
               "stable_and_stick_slip": sum(1 for r in ran if r["cea"] != "flutter" and r["transient"] == "stick-slip")} if with_cea else None)
     onedof_agrees = sum(1 for r in ran if (r["onedof"] in ("unstable sliding", "bistable")) == (r["transient"] == "stick-slip"))
     by_mechanism = {"flutter": frac("flutter") if with_cea else None, "stick-slip": frac("stick-slip"), "growing": frac("growing"),
-                    "forced": None}
+                    "forced": frac("forced")}
     classifier = ("the finite elements, case by case: " + (f"its CEA ({nev} eigenvalues: flutter when an oscillating mode "
                   "grows), " if with_cea else "no CEA (the scene's own CEA did not run), ") + "its start from rest on the "
                   f"reduced model to t = {t_end:.5g} (stick-slip: a sustained cycle stuck and slipping whole every period; "
                   "growing: still growing at the end); the 1-DOF's class beside them (column onedof)")
     by_class = {m: sum(1 for r in rows if r["class"] == m) / n for m in
-                ("unstable sliding", "bistable", "stick-slip", "flutter", "growing", "quiet", "failed")}
+                ("unstable sliding", "bistable", "stick-slip", "forced stick-slip", "flutter", "growing", "quiet", "failed")}
     return propensity.summarize(folder, rows, seed, by_mechanism, by_class, classifier,
                                 model="finite elements (CEA + reduced transient)", run_time=t_end, agreement=agree,
                                 onedof_agreement={"cases": len(ran), "same_stick_slip_verdict": onedof_agrees},
-                                forced_note="the motor's ripple is in every case's run; its line's level is the scene's "
-                                            "forced mechanism, not a case's class")
+                                forced_note="the motor's ripple is in every case's run: a case is 'forced' only when the "
+                                            "ripple drives its patch through stick and slip (a stick-slip cycle at the ripple's "
+                                            "frequency); the ripple's line itself, in every case, is the scene's forced mechanism")
