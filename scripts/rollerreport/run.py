@@ -23,6 +23,8 @@ that fails is named in the report with its error line; the later steps still run
 exits 1.
 """
 import argparse
+import csv
+import itertools
 import json
 import math
 import os
@@ -478,8 +480,9 @@ def ripple_sweep_part(steps, base, opts, scene, a, extra, out, ripple, inputs):
     j = lambda f: os.path.join(out, f)  # noqa: E731
     modes = report.read_rows(j("modes.csv")) if os.path.exists(j("modes.csv")) else []
     dt = float(opts["ts_dt"]) if "ts_dt" in opts else None
-    if dt is None and os.path.exists(j("stickslip.csv")):
-        t = [float(r["t"]) for r in report.read_rows(j("stickslip.csv"))[1:3]]
+    if dt is None and os.path.exists(j("stickslip.csv")):  # the run's step: its rows 1 and 2 (not the whole 0.5 s CSV)
+        with open(j("stickslip.csv"), newline="") as f:
+            t = [float(r["t"]) for r in itertools.islice(csv.DictReader(f), 1, 3)]
         dt = t[1] - t[0]
     s = scene.get("seconds_per_unit", 1.0)
     freqs, cea_modes = ripple_sweep.frequencies(modes, s, dt, a.ripple_sweep, also=[ripple[1]])
@@ -539,7 +542,7 @@ def propensity_part(steps, base, opts, a, extra, out):
         propensity_fe.write_cases(out, cases)
         with open(j("propensity_table.json"), "w") as f:
             json.dump(plan, f, indent=1)
-        if os.path.basename(basis) == "propensity_basis.h5":
+        if more:
             basis_part(steps, base, more + extra, basis, "propensity_basis")
         os.makedirs(j("propensity"), exist_ok=True)
         for name, (cmd, what) in propensity_fe.commands(base, more + extra, out, basis, plan["run_time"], a.ranks, a.mpiexec,
