@@ -169,6 +169,7 @@ typedef struct {
   PetscBool            on;
   PetscReal            mass, inertia, stiffness, stiffness_x, nip_force, nip_ramp;
   PetscReal            drive_stiffness, drive_damping;
+  PetscReal            kick, kick_time; /* -drive_kick: an angular impulse on the hub at one level, the nearest to kick_time */
   struct _n_RollerHub *hub;
 } RollerAxle;
 

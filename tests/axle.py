@@ -6,6 +6,12 @@ preloaded to -nip_force and driven through a torsional spring and damper by the 
    inertia rho pi (r_o^4 - r_i^4)/2 and mass rho pi (r_o^2 - r_i^2)), read from zero crossings of hub_rate and axle_y.
 2. The motor's ripple a sin(2 pi f t) near the torsional resonance, with the drive's damper: the hub rate's steady
    amplitude against the closed form a W |H(W)|, H = (k_d + i W c_d)/(k_d - I W^2 + i W c_d), within 5 %.
+2b. -drive_kick J on the hub at rest (no damping): the drive's mode swings with the hub rate's amplitude J/(I_h + I_r)
+   within 1 % (the impulse's momentum, the nearly rigid roller's inertia: a least-squares cosine from the kick at the
+   best frequency within 2 % of sqrt(k_d/(I_h + I_r)); the rubber's own torsion rings on top, undamped), the hub at rest before the kick's level and
+   moving from it; the energy's rise is the kick's work (shaft_work) to 1e-10 of the energy at every step. Its fields
+   (-output every 100 steps with -output_start 30): the 16 from t = 30 on, and the inner circle's vertices turned with the hub, their
+   rotation phi = -drive_torque/k_d (no damper) to 1e-9 at every stored step.
 3. -nip_force F on the sheet at rest (damped): the mean contact force F within 0.5 %, and the hub's indentation that
    of -static at it: the static contact force at that depth within 0.5 % of F.
 4. Rolling with friction on the axle (press, start from rest, drive ripple): the energy balance E^k - E^0 = shaft_work +
@@ -19,6 +25,7 @@ quick: coarse meshes, a few thousand steps (about 40 s)."""
 import math
 import shutil
 
+import h5py
 import numpy as np
 
 from rollertest import Checker, read_csv, run
@@ -68,6 +75,34 @@ amp = 0.5 * (d["hub_rate"][m].max() - d["hub_rate"][m].min())
 H = (kd + 1j * W * cd) / (kd - I * W**2 + 1j * W * cd)
 ref = a * W * abs(H)
 c.check(abs(amp / ref - 1) < 0.05, f"ripple at 0.95 of the torsional resonance: hub rate amplitude {amp:.6e} against a W |H| = {ref:.6e} ({100 * (amp / ref - 1):+.2f} %)")
+
+# 2b. a kick on the hub: its momentum J
+J, tk = 2e-3, 1.0
+run(["-axle", "-drive_stiffness", kd, "-axle_inertia", I_h, "-omega", 0, "-drive_kick", J, "-drive_kick_time", tk, "-ts_max_time", 60, "-monitor_csv", "kick.csv",
+     "-output", "kick.h5", "-output_every", 100, "-output_start", 30] + STIFF)
+d = read_csv("kick.csv")
+before, after = d["t"] < tk - 0.5 * 0.02, d["t"] > tk + 5
+ref, fits = J / I, []
+for w in wt * np.linspace(0.98, 1.02, 81):
+    A = np.c_[np.cos(w * (d["t"][after] - tk)), np.sin(w * (d["t"][after] - tk))]
+    co, res = np.linalg.lstsq(A, d["hub_rate"][after], rcond=None)[:2]
+    fits.append((float(res[0]), co))
+co = min(fits, key=lambda f: f[0])[1]
+amp = float(co[0])  # the cosine's: a jump of the hub's rate at the kick
+c.check(not np.any(d["hub_rate"][before]) and d["hub_rate"][np.argmax(d["t"] > tk + 0.5 * 0.02)] > 0.5 * ref,
+        f"-drive_kick at t = {tk}: the hub at rest before the kick's level, moving after it")
+c.check(abs(amp / ref - 1) < 0.01, f"-drive_kick {J}: hub rate amplitude {amp:.6e} against J/(I_h + I_r) = {ref:.6e} ({100 * (amp / ref - 1):+.3f} %)")
+bal = np.abs(d["energy"] - d["energy"][0] - d["shaft_work"]).max() / d["energy"].max()
+c.check(bal < 1e-10, f"-drive_kick: energy - shaft_work constant to {bal:.2e} of max energy")
+with h5py.File("kick.h5", "r") as f:
+    times, xv = f["time"][:].ravel(), f["geometry/vertices"][:][:, :2]
+    uv = f["vertex_fields/displacement_displacement"][:][:, :, :2]
+inner = np.abs(np.hypot(xv[:, 0], xv[:, 1]) - RI) < 1e-9
+phi = [np.mean(xv[inner, 0] * u[inner, 1] - xv[inner, 1] * u[inner, 0]) / RI**2 for u in uv]
+want = [-d["drive_torque"][np.argmin(np.abs(d["t"] - tt))] / kd for tt in times]
+err = max(abs(a - b) for a, b in zip(phi, want)) / max(abs(b) for b in want)
+c.check(times.min() >= 30 - 0.01 and len(times) == 16 and inner.sum() > 8 and err < 1e-9,
+        f"-output -output_start 30: {len(times)} frames from t = {times.min():.4g}; the inner circle's {inner.sum()} vertices turned with the hub (phi within {err:.1e})")
 
 # 3. the nip force on the sheet at rest, and the indentation of -static at that force
 F = 0.005

@@ -5,7 +5,7 @@
 # envelope, the forced response against rollerref.forced's closed form (10 %), 64 propensity cases by the finite
 # elements (each its CEA and its reduced start from rest) against the 1-DOF, the journal's reuse. The start from rest
 # and the forced run on the reduced model; the propensity's 64 CEAs and runs on a coarser mesh on 2 ranks.
-roller_test(report_axle report_axle.py LABELS long PROCESSORS 2 TIMEOUT 2400)
+roller_test(report_axle report_axle.py LABELS long PROCESSORS 2 TIMEOUT 3600)
 # The report on the printer's own scenes (issue 38, docs/squeal.md 7.10): jobs/printer_roller.yaml (the feed on the axle)
 # and jobs/printer_pick.yaml (the pick from rest) with the report's defaults: SPEC section 10's keys, squeal.wav of
 # 0.51 s against its source (level, the bounce's decay, the ripple's sustained line), stick-slip only if the patch lets

@@ -15,15 +15,23 @@ cases, then every file is read:
 - forced: the hub's response at the ripple within 10 % of rollerref.forced's closed form, its level finite; the ripple
   swept (24 frequencies of the band and the CEA's modes): its case at the scene's ripple within 2 % of the forced
   run's line, its peak at the CEA's drive mode;
+- kicks about the steady state (disturbances.csv: the approach sliding, then the hub kicked against the motor by 0.1 to
+  150 % of its rate, the reduced model): the approach settles, the kicks up to some size settle and all larger reach a
+  stick-slip cycle (the basin's edge), which coexists with the settled steady state; rollerref's 1-DOF threshold
+  (basin.kick_threshold, 82.6 % of the motor's rate) between the largest kick that settles and the smallest that does
+  not; the page shows disturbances.png;
 - propensity: 64 cases in propensity.csv, the fraction inside its interval; each case by the finite elements (its CEA
   and its start from rest on the reduced model, on the coarser mesh -mesh_h 0.2 -mesh_h_contact 0.008 with its own
   basis): every run finished, no unstable CEA whose start settles, the 1-DOF's stick-slip verdict the same in at least
   85 % of the cases;
+- the vibration seen: vibration.gif of the heard run's last three periods of the drive's mode (stickslip.h5, -output
+  -output_start), on the page;
 - report.html plays squeal.wav; a second run reuses every part (journal.json).
 The CEA with --nev 8 (the drive's mode and the rubber's lowest, as tests/axle_modes_onset.py: about a CPU minute;
 the report's default 40 takes over 10 CPU minutes on this scene).
-long: the CEA (8 eigenvalues of about 40k unknowns) and two finite-element runs of about 4100 steps (about 4 CPU
-minutes each)."""
+long: the CEA (8 eigenvalues of about 40k unknowns), two finite-element runs of about 4100 steps (about 1.5 CPU minutes
+each), the propensity's 64 CEAs (about 20 CPU minutes) and the reduced maps (the ripple, the kicks, the propensity's
+starts: a few CPU minutes): about 30 CPU minutes."""
 import csv
 import json
 import math
@@ -131,6 +139,17 @@ c.check(sw["failed"] == 0 and sw["cases"] >= 24 and abs(at["frequency_hz"] * sc[
         f"ripple swept over {sw['cases']} frequencies: at the scene's {at['frequency_hz']:.4g} Hz {at['rate_amplitude']:.6g} against the "
         f"forced run's {fo['response_rate_amplitude']:.6g} ({100 * (at['rate_amplitude'] / fo['response_rate_amplitude'] - 1):+.2f} %); "
         f"the peak at {sw['peak']['frequency_hz']:.4g} Hz, the CEA's drive mode {drive_hz:.4g} Hz")
+# kicks of growing size about the steady state (disturbances.csv): the basin's edge against the 1-DOF's
+kd = json.load(open(os.path.join(out, "disturbances.json")))
+with open(os.path.join(out, "disturbances.csv"), newline="") as f:
+    kicks = [(float(r["kick_rate_fraction"]), r["outcome"]) for r in csv.DictReader(f)][1:]
+sk, one = kd.get("smallest_kick") or {}, kd.get("onedof") or {}
+edge = sk.get("kick_rate_fraction", math.inf)
+c.check(kd["failed"] == 0 and kd["steady"] == "settled" and kd["coexists"] and all((o == "stick-slip") == (x >= edge) for x, o in kicks)
+        and all(o in ("settled", "stick-slip") for x, o in kicks) and kd["largest_settled"] <= one.get("threshold", -1) <= edge
+        and (ss.get("disturbances") or {}).get("coexists") and any("coexists" in e for e in ss["evidence"]),
+        f"kicks about the steady state: the approach {kd['steady']}; {kicks}; the cycle from {edge} of the motor's rate, "
+        f"{kd['largest_settled']} settles; the 1-DOF's threshold {one.get('threshold')}")
 prop = rep["propensity"]
 with open(os.path.join(out, "propensity.csv"), newline="") as f:
     cases = list(csv.DictReader(f))
@@ -148,11 +167,16 @@ c.check(prop.get("model", "").startswith("finite elements") and len(ran) == len(
         f"CEA against the start {agree}; the 1-DOF's stick-slip verdict the same in {one.get('same_stick_slip_verdict')} of {len(cases)} (>= 85 %); "
         f"classes {prop['by_class']}")
 page = open(os.path.join(out, "report.html")).read()
-c.check("src='squeal.wav'" in page and "propensity.png" in page, "report.html plays squeal.wav and shows the propensity")
+c.check("src='squeal.wav'" in page and "propensity.png" in page and "disturbances.png" in page,
+        "report.html plays squeal.wav and shows the propensity and the kicks")
+anim = rep.get("animation") or {}
+c.check("vibration.gif" in anim.get("files", []) and os.path.getsize(os.path.join(out, "vibration.gif")) > 0 and "vibration.gif" in page
+        and "heard run" in anim.get("reference", "") and anim.get("frames", 0) >= 100,
+        f"the vibration seen: {anim.get('files')}, {anim.get('frames')} frames, {anim.get('reference')}")
 r2 = subprocess.run(cmd, capture_output=True, text=True)
 again = json.load(open(os.path.join(out, "report.json")))
 jr = json.load(open(os.path.join(out, "journal.json")))
-c.check(r2.returncode == 0 and all(p.get("reused") for name, p in jr.get("parts", jr).items() if name in ("cea", "basis", "stickslip", "forced", "propensity_basis", "propensity_runs", "propensity_cea", "propensity", "sound"))
+c.check(r2.returncode == 0 and all(p.get("reused") for name, p in jr.get("parts", jr).items() if name in ("cea", "basis", "stickslip", "forced", "disturbances_runs", "disturbances", "propensity_basis", "propensity_runs", "propensity_cea", "propensity", "sound"))
         and again["mechanisms"][1]["period"] == ss["period"],
         "the same command again reuses every part: " + ", ".join(f"{k} {'reused' if p.get('reused') else 'REDONE'}" for k, p in jr.get("parts", jr).items()))
 c.close()

@@ -16,6 +16,10 @@ jobs/printer_roller.yaml (the feed on the real axle, the Maxwell EPDM, the stepp
   decay of the same run's contact_force (a damped sine fitted over 12-30 ms; the frozen branches' error, docs/squeal.md
   3.1); on printer_pick.yaml "not run" with roller's reason (-sheet_mass);
 - the ripple swept over the band and the CEA's modes: its case at 873 Hz within 5 % of the 0.51 s run's line;
+- kicks about the steady state (disturbances.csv, 15 kicks against the motor of 0.1-150 % of its rate, the reduced
+  model): every run finished and read, the stick-slip mechanism's evidence says what they found; the kicked runs that
+  settle end within 2 % of the motor's rate of the undisturbed one;
+- the vibration seen: vibration.gif of the heard run's last three periods of the drive's mode (stickslip.h5);
 - the propensity's 64 cases by the finite elements (on the coarse mesh -mesh_h 0.0012 -mesh_h_contact 3e-4, its own
   basis): every case's reduced start classified, every case's CEA on printer_roller.yaml, none on printer_pick.yaml;
 - report.html loads squeal.wav with its duration and every image in headless Chromium.
@@ -170,6 +174,20 @@ for name in ("printer_roller", "printer_pick"):
             f"{at['rate_amplitude']:.4g} against the 0.51 s run's {fo['response_rate_amplitude']:.4g} "
             f"({100 * (at['rate_amplitude'] / fo['response_rate_amplitude'] - 1):+.2f} %); the peak {sw['peak']['frequency_hz']:.0f} Hz "
             f"({sw['peak']['rate_per_ripple']:.4g} per rad), the scene's ripple {-at['below_peak_db']:.1f} dB below it")
+
+    # kicks of growing size about the steady state, and the animation of the heard run's end
+    kd = json.load(open(os.path.join(out, "disturbances.json")))
+    with open(os.path.join(out, "disturbances.csv"), newline="") as f:
+        kicks = list(csv.DictReader(f))
+    ss = mech["stick-slip"]
+    c.check(kd["failed"] == 0 and len(kicks) == 16 and all(r["outcome"] in ("settled", "stick-slip", "forced stick-slip", "growing") for r in kicks)
+            and (ss.get("disturbances") or {}).get("steady") == kd["steady"] and any("kick" in e for e in ss["evidence"])
+            and (kd["returned_max"] is None or kd["returned_max"] < 0.02),
+            f"{name}: kicks about the steady state: the approach {kd['steady']}, {[(r['kick_rate_fraction'], r['outcome']) for r in kicks]}; "
+            f"the smallest reaching stick-slip {kd['smallest_kick']}; settled runs back within {kd['returned_max']} of the motor's rate")
+    anim = rep.get("animation") or {}
+    c.check("vibration.gif" in anim.get("files", []) and "heard run" in anim.get("reference", "") and anim.get("frames", 0) >= 100,
+            f"{name}: the vibration seen: {anim.get('files')}, {anim.get('frames')} frames, {anim.get('reference')}")
 
     # flutter
     fl = mech["flutter"]

@@ -16,7 +16,11 @@ mechanisms, heard.write_cycle; docs/squeal.md 9.4) on synthetic monitor CSVs, no
 - the forced response's lock-in (a ripple's line beside a decaying free oscillation) within 0.5 %, and the forced
   mechanism's ratio to the 1-DOF closed form;
 - the propensity: a Latin hypercube has one point in each stratum of every axis, Wilson's interval at known values,
-  the scene's own point maps onto the scene, 8 cases classified with the summary's keys."""
+  the scene's own point maps onto the scene, 8 cases classified with the summary's keys;
+- the kicks about the steady state (rollerreport.disturbances) from the files their map writes: kicks up to 80 % of the
+  motor's rate decaying, from 90 % a stick-slip cycle: the smallest kick 90 %, the largest settled 80 %, the cycle
+  coexisting with the settled approach, the 1-DOF's threshold (rollerref.basin.kick_threshold) between them, and the
+  stick-slip mechanism's evidence saying so."""
 import csv
 import json
 import math
@@ -228,6 +232,33 @@ rippled = dict(opts, drive_ripple="0.001", drive_ripple_frequency=repr(1.01 / cy
 first = propensity_fe.classify(dq, rippled, cases, True)[0]
 c.check((first["class"], first["mechanism"], first["squeaks"]) == ("forced stick-slip", "forced", 1),
         f"a stick-slip cycle at the motor's ripple (1 % off) is forced: {first['class']}, {first['mechanism']}")
+
+# the kicks about the steady state (rollerreport.disturbances): synthetic series of the map, settled below 90 % of the
+# motor's rate, a stick-slip cycle from it (stuck at the bottom of every period, slipping whole otherwise)
+from rollerreport import disturbances  # noqa: E402
+
+dk = tempfile.mkdtemp(prefix="rollerreport_kicks_")
+plan = disturbances.plan(opts, periods=12)
+disturbances.write_cases(dk, plan)
+os.makedirs(os.path.join(dk, "disturbances"))
+with open(os.path.join(dk, disturbances.RUNS), "w") as f:
+    f.write("case,drive_kick,status\n" + "".join(f"{i},{J!r},ok\n" for i, J in enumerate(plan["impulses"])))
+tk = np.arange(1, int(plan["t_end"] / DT)) * DT
+after, ph = tk >= plan["t_kick"], 2 * math.pi * 0.0511 * (tk - plan["t_kick"])
+for i, x in enumerate(plan["kicks"]):
+    if x >= 0.9:
+        hub, st = w + after * 0.0075 * np.sin(ph), np.where(after & (np.sin(ph) < -0.9), 11, 0)
+    else:
+        hub, st = w + 1e-5 * np.cos(0.3 * tk) + after * x * w * np.exp(-0.008 * (tk - plan["t_kick"])) * np.cos(ph), 0 * tk
+    write_csv(os.path.join(dk, "disturbances", f"series.case{i}.csv"), {"t": np.concatenate([[0.0], tk]), "hub_rate": np.concatenate([[w], hub]),
+                                                                         "stick_nodes": np.concatenate([[0], st])})
+ks = disturbances.classify(dk, opts, plan, 1.0, True)
+ev = mechanisms.stick_slip(dict(stick_slip_cycle=dict(cyc, column="hub_rate", t_min=25.0, t1=T_END), disturbances=ks, seconds_per_unit=1.0))
+one = ks["onedof"] or {}
+c.check(ks["steady"] == "settled" and ks["coexists"] and ks["smallest_kick"]["kick_rate_fraction"] == 0.9 and ks["largest_settled"] == 0.8
+        and 0.8 <= one.get("threshold", 0) <= 0.9 and ev["disturbances"]["coexists"] and any("bistable" in e and "90 %" in e for e in ev["evidence"]),
+        f"kicks: the approach {ks['steady']}, stick-slip from {ks['smallest_kick']}, {ks['largest_settled']} settles; the 1-DOF's threshold "
+        f"{one.get('threshold')}; evidence: {[e for e in ev['evidence'] if 'kick' in e]}")
 
 # the CEA's unstable mode against the scene's own run (mechanisms.run_growth): a line at f growing at g is confirmed,
 # the same line steady (beside a louder steady line elsewhere) is not

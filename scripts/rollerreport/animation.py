@@ -7,6 +7,13 @@ vertices: the seed's response, as the fit uses) when that file is there, else th
 the first stored step; it is magnified so that its largest excursion is MAGNIFIED_TO of r_outer, the steady
 deformation (the patch) drawn at its true size. The states are the vertices' (0 off, 1 stick, 2 slip). Written as
 a GIF (matplotlib's PillowWriter), and also as an MP4 when ffmpeg is on the PATH.
+
+On the axle (`load_window`: the heard run's fields over its last periods, `roller -output F.h5 -output_start T`) there is
+no unseeded twin: the steady rolling state is steady in the lab, so it is the lab deformation R(theta) xi's mean over the
+window at fixed lab points (Eulerian: each frame's interpolated from its rotated mesh onto the reference vertices,
+averaged), and the vibration is each frame's lab deformation less that mean at the frame's own vertex places;
+the frame's angle theta (the motor's, with the hub's own motion in the displacement) is the rotation that takes x + xi
+to x + displacement_lab, fitted over the vertices.
 """
 import math
 import shutil
@@ -60,14 +67,68 @@ def load(h5, base_h5=None, frames=120):
     return out
 
 
+def _interp(x, cells, values, at):
+    """values on the vertices x of the triangles cells, linearly interpolated at the points at ([m, 2]); a point outside
+    the mesh (the polygonal boundary turned) takes its nearest vertex's value."""
+    from matplotlib.tri import LinearTriInterpolator, Triangulation
+
+    tri = Triangulation(x[:, 0], x[:, 1], cells)
+    out = np.empty((len(at), values.shape[1]))
+    for c in range(values.shape[1]):
+        out[:, c] = np.ma.filled(LinearTriInterpolator(tri, values[:, c])(at[:, 0], at[:, 1]), np.nan)
+    bad = np.isnan(out).any(axis=1)
+    for i in np.where(bad)[0]:
+        out[i] = values[np.argmin(np.hypot(x[:, 0] - at[i, 0], x[:, 1] - at[i, 1]))]
+    return out
+
+
+def load_window(h5, frames=160):
+    """The frames of a run's fields over a window (the axle's heard run, module docstring): the same keys as load, with
+    theta [k] the frame's angle, xi the steady lab state and dxi the vibration turned back into the frame (so that
+    R(theta) (x + xi + m dxi) is the lab picture magnified m times)."""
+    import h5py
+
+    with h5py.File(h5, "r") as f:
+        par = dict(f["parameters"].attrs) if "parameters" in f else {}
+        g = f["vertex_fields"]
+        n = len(f["time"][:].ravel())
+        keep = np.unique(np.linspace(0, n - 1, min(frames, n)).round().astype(int))
+        xi = g["displacement_displacement"][:][keep][:, :, :2]
+        lab = g["displacement_lab_displacement"][:][keep][:, :, :2]
+        cs = next((g[k][:][keep] for k in g if k.startswith("contact_state")), None)
+        t = f["time"][:].ravel()[keep]
+        x, cells = f["geometry/vertices"][:][:, :2], f["viz/topology/cells"][:]
+    a, b = x[None] + xi, x[None] + lab
+    theta = np.arctan2(np.sum(a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0], axis=1), np.sum(a[..., 0] * b[..., 0] + a[..., 1] * b[..., 1], axis=1))
+    placed = [_rotate(x, th) for th in theta]  # each frame's vertices in the lab, undeformed
+    lab = np.array([_rotate(u, th) for u, th in zip(xi, theta)])  # the deformation in the lab: R(theta) xi (no rigid turn)
+    steady = np.mean([_interp(p, cells, u, x) for p, u in zip(placed, lab)], axis=0)  # at the fixed lab points x
+    here = np.array([_interp(x, cells, steady, p) for p in placed])  # the steady state at each frame's vertices
+    vib = lab - here
+    dt = np.gradient(t) if len(t) > 1 else np.ones(1)
+    dv = np.gradient(vib, axis=0) / dt[:, None, None] if len(t) > 1 else np.zeros_like(vib)
+    back = lambda v, th: _rotate(v, -th)  # noqa: E731  lab vectors into the frame
+    return {"t": t, "x": x, "cells": cells, "omega": float(np.ravel(par.get("omega", 0.0))[0]), "theta_start": 0.0,
+            "r_outer": float(np.ravel(par.get("r_outer", 0.0))[0]), "theta": theta,
+            "xi": np.array([back(u, th) for u, th in zip(here, theta)]), "dxi": np.array([back(u, th) for u, th in zip(vib, theta)]),
+            "speed": np.hypot(dv[..., 0], dv[..., 1]), "state": cs,
+            "reference": "the heard run's lab displacement less its mean over the window at fixed lab points (the steady "
+                         f"rolling state), over its last {t[-1] - t[0]:.4g} units of time"}
+
+
+def _angle(data, k):
+    return float(data["theta"][k]) if "theta" in data else data["omega"] * max(float(data["t"][k]) - data["theta_start"], 0.0)
+
+
 def _rotate(p, th):
     c, s = math.cos(th), math.sin(th)
     return np.stack([c * p[:, 0] - s * p[:, 1], s * p[:, 0] + c * p[:, 1]], axis=1)
 
 
-def write(data, stem, seconds_per_unit=1.0, sound=None, fps=10, title=""):
+def write(data, stem, seconds_per_unit=1.0, sound=None, fps=10, title="", t_origin=None):
     """The animation at stem.gif (and stem.mp4 with ffmpeg). sound: (t_audio in s, pressure in Pa) at the listener,
-    drawn under the roller with the frame's time marked. Returns {files, frames, magnification, reference}."""
+    drawn under the roller over the frames' span with the frame's time marked; t_origin: the simulated time of the
+    sound's first sample (default the first frame's). Returns {files, frames, magnification, reference}."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -83,22 +144,23 @@ def write(data, stem, seconds_per_unit=1.0, sound=None, fps=10, title=""):
     fig = plt.figure(figsize=(9, 6.2))
     grid = fig.add_gridspec(2, 2, height_ratios=(3, 1.1), width_ratios=(1, 1))
     ax, az, ap = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1]), fig.add_subplot(grid[1, :])
-    t_audio = (data["t"] - data["t"][0]) * seconds_per_unit
+    t_audio = (data["t"] - (data["t"][0] if t_origin is None else t_origin)) * seconds_per_unit
     if sound is not None:
-        ts, p = sound
-        ap.plot(np.asarray(ts) * 1e3, p, lw=0.6, color="0.3")
+        ts, p = np.asarray(sound[0]), np.asarray(sound[1])
+        span = (ts >= t_audio[0] - 0.02 * np.ptp(t_audio)) & (ts <= t_audio[-1] + 0.02 * np.ptp(t_audio))
+        ap.plot(ts[span] * 1e3, p[span], lw=0.6, color="0.3")
         ap.set_ylabel("p at the listener (Pa)", fontsize=8)
     ap.set_xlabel("time (ms of the sound: simulated time x seconds per unit)", fontsize=8)
     cursor = ap.axvline(0.0, color="C3", lw=1.2)
     if contact:  # the window around every frame's contact vertices, in the lab
-        pts = [_rotate(x[st > 0], data["omega"] * max(t - data["theta_start"], 0.0)) for t, st in zip(data["t"], data["state"]) if np.any(st > 0)]
+        pts = [_rotate(x[st > 0], _angle(data, k)) for k, st in enumerate(data["state"]) if np.any(st > 0)]
         pts = np.concatenate(pts)
         w = max(float(np.ptp(pts[:, 0])), 1e-3 * r)
         box = (float(pts[:, 0].min()) - 0.6 * w, float(pts[:, 0].max()) + 0.6 * w, float(pts[:, 1].min()) - 0.15 * w, float(pts[:, 1].min()) + 0.85 * w)
     colourbar = [None]
 
     def draw(k):
-        th = data["omega"] * max(float(data["t"][k]) - data["theta_start"], 0.0)
+        th = _angle(data, k)
         p = _rotate(x + data["xi"][k] + mag * data["dxi"][k], th)
         tri = Triangulation(p[:, 0], p[:, 1], cells)
         for a in (ax, az):

@@ -192,6 +192,11 @@ def stick_slip(ctx):
         if ctx.get("steady_stuck"):
             ev.append(f"the 1-DOF slides whole, the CEA's steady state rolls with {ctx['steady_stuck']} nodes stuck: its "
                       "sliding closed form is not this scene's")
+    dist = ctx.get("disturbances") or {}
+    if dist.get("status") == "run":
+        from .disturbances import lines as disturbance_lines
+
+        ev += disturbance_lines(dist)
     ok = math.isfinite(cyc["frequency"])
     snd = ctx.get("stick_slip_sound") or {}
     return {"kind": "stick-slip", "status": "run", "squeals": bool(cyc["stick_slip"]),
@@ -200,6 +205,7 @@ def stick_slip(ctx):
             "limit_cycle_amplitude": cyc["amplitude"] if ok else None, "limit_cycle_column": cyc["column"],
             "stick_every_period": cyc["stick_every_period"], "sustained": cyc["sustained"],
             "periods_used": cyc["periods_used"], "spl_db": snd.get("spl_db"),
+            "disturbances": {k: dist.get(k) for k in ("steady", "coexists", "smallest_kick", "largest_settled", "onedof", "file")} if dist.get("status") == "run" else None,
             "spl_note": snd.get("level_note") if snd else None, "evidence": ev}
 
 

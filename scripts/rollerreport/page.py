@@ -69,6 +69,8 @@ def write(folder, out, name="report.html"):
                     + (f"; also as <a href='{_e(mp4)}'>{_e(mp4)}</a>" if mp4 and has(mp4) else "") + ".</p>")
     if has("map.png"):
         body.append("<h2>The map</h2><img src='map.png' alt='the squeal map'>")
+    if has("disturbances.png"):
+        body.append("<h2>Kicks about the steady state</h2><img src='disturbances.png' alt='kicks of growing size about the steady state'>")
     if has("ripple_sweep.png"):
         body.append("<h2>The drive's ripple swept</h2><img src='ripple_sweep.png' alt='the forced response against the ripple frequency'>")
     prop = out.get("propensity", {})

@@ -352,21 +352,26 @@ def sound_part(folder, scene, v, out, jr):
     return entry.get("result", result)
 
 
-def animation_part(folder, scene, v, snd, jr):
-    """The animation (rollerreport.animation), journalled."""
+def animation_part(folder, scene, s, snd, jr, source="transient.h5"):
+    """The animation (rollerreport.animation), journalled: of the seeded transient (transient.h5 less
+    transient_base.h5), or on the axle of the heard run's last periods (stickslip.h5: animation.load_window), on the
+    sound's time axis."""
     from . import animation, sound
 
     j = lambda name: os.path.join(folder, name)  # noqa: E731
-    files = [j(f) for f in ("transient.h5", "transient_base.h5", "squeal.wav", "scene.json")] + _source_files("animation.py")
-    digest = journal.inputs_hash({"part": "animation"}, files)
+    files = [j(f) for f in (source, "transient_base.h5", "squeal.wav", "scene.json")] + _source_files("animation.py")
+    digest = journal.inputs_hash({"part": "animation", "source": source}, files)
 
     def run():
         series = None
         if snd and os.path.exists(j("squeal.wav")):
             samples, rate = sound.read_wav(j("squeal.wav"))
             series = (np.arange(len(samples)) / rate, samples * snd["wav_reference"]["full_scale_peak_pa"] * 32768 / 32767)
-        data = animation.load(j("transient.h5"), j("transient_base.h5"))
-        r = animation.write(data, j("vibration"), v["seconds_per_unit"], series, title=scene.get("name", ""))
+        if source == "transient.h5":
+            data, origin = animation.load(j("transient.h5"), j("transient_base.h5")), None
+        else:  # the sound's first sample is the heard run's first row after the initial state
+            data, origin = animation.load_window(j(source)), ((snd or {}).get("wav_source") or {}).get("t0")
+        r = animation.write(data, j("vibration"), s, series, title=scene.get("name", ""), t_origin=origin)
         r["files"] = [os.path.basename(f) for f in r["files"]]
         return True, {"result": r}
 
@@ -514,7 +519,10 @@ def write(folder, parts=PARTS):
                      f"{failed[0]['error']} (its log: {failed[0]['log']}).", ""]
     anim = None
     if os.path.exists(j("transient.h5")) and v is not None:
-        anim = animation_part(folder, scene, v, snd, jr) if "animation" in parts else recorded(jr, "animation", ("files", "reference"))
+        anim = animation_part(folder, scene, s_unit, snd, jr) if "animation" in parts else recorded(jr, "animation", ("files", "reference"))
+    elif os.path.exists(j("stickslip.h5")) and snd and (snd.get("wav_source") or {}).get("file") == "stickslip.csv":
+        anim = (animation_part(folder, scene, s_unit, snd, jr, "stickslip.h5") if "animation" in parts
+                else recorded(jr, "animation", ("files", "reference")))
     if anim:
         out["animation"] = anim
         out["files"] += anim["files"]
@@ -531,7 +539,7 @@ def write(folder, parts=PARTS):
                divergent=out.get("divergent", []), seconds_per_unit=s_unit, stick_slip_cycle=cyc, steady_stuck=stuck,
                stick_slip_sound=snd if heard_cycle else None, onedof=scene.get("onedof"), forced_response=forced_r,
                forced_sound=forced_level(folder, scene, s_unit, forced_r["frequency"]) if forced_r else None,
-               ripple_sweep=_json(j("ripple_sweep.json")))
+               ripple_sweep=_json(j("ripple_sweep.json")), disturbances=_json(j("disturbances.json")))
     if "friction_onset" in out:
         ctx["friction_onset"] = out["friction_onset"]
     if "cea_error" in out:
@@ -579,6 +587,10 @@ def write(folder, parts=PARTS):
     if os.path.exists(j("ripple_sweep.png")):
         md += ["## The drive's ripple swept", "", "The forced response against the ripple's frequency (ripple_sweep.csv; the "
                "forced mechanism's evidence above):", "", "![the ripple swept](ripple_sweep.png)", ""]
+    if os.path.exists(j("disturbances.png")):
+        md += ["## Kicks about the steady state", "", "The hub kicked against the motor by a growing fraction of its rate, "
+               "from the steady state approached while sliding (disturbances.csv; the stick-slip mechanism's evidence above):",
+               "", "![kicks of growing size](disturbances.png)", ""]
     md += propensity_lines(out["propensity"], folder)
     out["cost"] = jr.parts
     if jr.parts:

@@ -303,14 +303,15 @@ def base_command(cmd):
 OUTPUTS = ("modes.csv", "modes.h5", "modes.xmf", "steady.csv", "sweep.csv", "transient.csv", "surface.csv", "transient_base.csv", "surface_base.csv",
            "transient.h5", "transient.xmf", "transient_base.h5", "transient_base.xmf", "scene.json", "commands.json",
            "journal.json", "report.md", "report.json", "report.html", "map.png", "squeal.wav", "sound.csv", "spectrogram.png",
-           "vibration.gif", "vibration.mp4", "mesh.h5", "mesh.xmf", "basis.h5", "propensity_basis.h5", "propensity_cases.csv",
+           "vibration.gif", "vibration.mp4", "mesh.h5", "mesh.xmf", "stickslip.h5", "stickslip.xmf", "basis.h5", "propensity_basis.h5", "propensity_cases.csv",
            "propensity_table.json", "propensity_runs.csv", "propensity_cea.csv", "propensity.json", "propensity.csv", "propensity.png",
-           "ripple_sweep_cases.csv", "ripple_sweep_runs.csv", "ripple_sweep.csv", "ripple_sweep.json", "ripple_sweep.png")
+           "ripple_sweep_cases.csv", "ripple_sweep_runs.csv", "ripple_sweep.csv", "ripple_sweep.json", "ripple_sweep.png",
+           "disturbances_cases.csv", "disturbances_runs.csv", "disturbances.csv", "disturbances.json", "disturbances.png")
 # PETSc's message for PETSC_ERR_SUP: what roller refuses as not carried (e.g. -modes with -rubber maxwell or
 # -sheet_mass): the part is "not run" with roller's reason, and the driver does not count it as failed
 REFUSED = "No support for this operation"
 ROLLER_PARTS = ("cea", "map", "transient", "transient_base", "mesh", "basis", "stickslip", "forced", "ripple_sweep_runs",
-                "ripple_sweep", "propensity_table",
+                "ripple_sweep", "disturbances_runs", "disturbances", "propensity_table",
                 "propensity_basis", "propensity_cea", "propensity_runs", "propensity")
 
 
@@ -357,6 +358,9 @@ def parse(argv):
     p.add_argument("--ripple-sweep", type=int, default=24, help="axle scenes with a ripple: the forced response swept "
                    "over this many log-spaced frequencies of the audible band (100 Hz-5 kHz) plus the CEA's modes, each a "
                    "run of one -sweep map (default 24, 0: none)")
+    p.add_argument("--disturbance-periods", type=float, default=40, help="axle scenes: kicks of growing size about the "
+                   "steady state (rollerreport.disturbances), each run this many periods of the drive's mode after the kick, "
+                   "one -sweep map on the reduced model (default 40, 0: none)")
     p.add_argument("--forced-options", default="", help="axle scenes: roller options of the forced run besides the "
                    "ripple, e.g. '-theta_start 0 -drive_ramp 0 -nip_ramp 60' (a start sliding)")
     p.add_argument("--model", choices=("full", "rom"), default="full", help="axle scenes: the heard runs (the start from "
@@ -441,10 +445,12 @@ def axle_parts(steps, base, opts, scene, a, extra, out):
     reduced = ["-rom", "-rom_input", j("basis.h5")]
     basis_part(steps, base, extra, j("basis.h5"), "basis")
     rom, inputs = (reduced, [j("basis.h5")]) if a.model == "rom" else ([], [])
+    window = animation_window(opts, T, j("stickslip.h5"))
     steps.run("stickslip", base + rom + ["-ts_max_time", repr(T), "-monitor_csv", j("stickslip.csv"), "-monitor_surface_csv",
-                                         j("stickslip_surface.csv"), "-quiet"] + extra,
+                                         j("stickslip_surface.csv")] + window + ["-quiet"] + extra,
               f"the start from rest on the axle to t = {T:.5g} ({T * s:.3g} s of audio){' on the reduced model' if rom else ''}: "
-              "the stick-slip limit cycle (docs/squeal.md 9.4)", outputs=["stickslip.csv", "stickslip_surface.csv"], inputs=inputs)
+              "the stick-slip limit cycle (docs/squeal.md 9.4); its fields over the last periods for the animation",
+              outputs=["stickslip.csv", "stickslip_surface.csv"] + (["stickslip.h5", "stickslip.xmf"] if window else []), inputs=inputs)
     ripple = [float(x) for x in a.ripple.split(",")] if a.ripple else (
         [onedof.value(opts, "drive_ripple"), onedof.value(opts, "drive_ripple_frequency")])
     if ripple[0] and ripple[1] and "onedof" in scene:
@@ -458,6 +464,7 @@ def axle_parts(steps, base, opts, scene, a, extra, out):
         if not a.forced_options and ripple == own:  # the scene runs with its own ripple: the start from rest is the forced run
             scene["ripple"]["files"] = ["stickslip.csv", "stickslip_surface.csv"]
             ripple_sweep_part(steps, base + reduced, opts, scene, a, extra, out, ripple, [j("basis.h5")])
+            disturbances_part(steps, base + reduced, opts, scene, a, extra, out, [j("basis.h5")])
             return propensity_part(steps, base, opts, a, extra, out)
         more = a.forced_options.split()
         steps.run("forced", base + rom + more + ["-drive_ripple", repr(ripple[0]), "-drive_ripple_frequency", repr(ripple[1]),
@@ -466,7 +473,23 @@ def axle_parts(steps, base, opts, scene, a, extra, out):
                   f"the motor's ripple {ripple[0]:g} rad at {ripple[1]:g} per unit time: the forced response "
                   "(docs/squeal.md 9.4)", outputs=["forced.csv", "forced_surface.csv"], inputs=inputs)
         ripple_sweep_part(steps, base + reduced + more, opts, scene, a, extra, out, ripple, [j("basis.h5")])
+    disturbances_part(steps, base + reduced, opts, scene, a, extra, out, [j("basis.h5")])
     propensity_part(steps, base, opts, a, extra, out)
+
+
+ANIMATION_PERIODS, ANIMATION_FRAMES = 3, 150  # the axle's animation: the heard run's last periods of the drive's mode
+
+
+def animation_window(opts, t_end, h5):
+    """The heard run's fields for the animation (rollerreport.animation.load_window): -output over its last
+    ANIMATION_PERIODS periods of the drive's mode (the 1-DOF's frequency), about ANIMATION_FRAMES frames; none without a
+    drive or a -ts_dt to count the steps by."""
+    f = onedof.stability(opts)["frequency"] if onedof.value(opts, "drive_stiffness") > 0 else 0.0
+    if not f or f <= 0 or "ts_dt" not in opts:
+        return []
+    window = min(ANIMATION_PERIODS / f, 0.5 * t_end)
+    every = max(1, int(round(window / float(opts["ts_dt"]) / ANIMATION_FRAMES)))
+    return ["-output", h5, "-output_every", str(every), "-output_start", repr(t_end - window)]
 
 
 def ripple_sweep_part(steps, base, opts, scene, a, extra, out, ripple, inputs):
@@ -509,6 +532,41 @@ def ripple_sweep_part(steps, base, opts, scene, a, extra, out, ripple, inputs):
     steps.journal = journal.Journal(out)
     steps.journal.run("ripple_sweep", digest, ["ripple_sweep.json", "ripple_sweep.csv", "ripple_sweep.png"], go,
                       what=f"the forced response against the ripple's frequency ({len(freqs)} runs; docs/squeal.md 9.4)")
+
+
+def disturbances_part(steps, base, opts, scene, a, extra, out, inputs):
+    """The stick-slip mechanism's kicks of growing size about the steady state (rollerreport.disturbances): one -sweep
+    -sweep_cases map on the reduced model and --ranks (part disturbances_runs), then each case read (part
+    disturbances)."""
+    from . import disturbances
+
+    p = disturbances.plan(opts, a.disturbance_periods) if a.disturbance_periods > 0 else None
+    if p is None:
+        return
+    j = lambda f: os.path.join(out, f)  # noqa: E731
+    disturbances.write_cases(out, p)
+    os.makedirs(j("disturbances"), exist_ok=True)
+    steps.run("disturbances_runs", disturbances.command(base, extra, out, p, a.ranks, a.mpiexec),
+              f"{len(p['kicks']) - 1} kicks of the hub of growing size (0.1-150 % of the motor's rate) about the steady state "
+              f"at t = {p['t_kick']:.5g} and the undisturbed approach, each run to t = {p['t_end']:.5g} (docs/squeal.md 9.5)",
+              outputs=[disturbances.RUNS], inputs=[j(disturbances.CASES)] + list(inputs), ranks=a.ranks)
+    if steps.only is not None and "disturbances" not in steps.only:
+        return
+    src = [os.path.join(os.path.dirname(__file__), f) for f in ("disturbances.py", "propensity_fe.py", "cycle.py", "onedof.py")]
+    digest = journal.inputs_hash({"part": "disturbances", "plan": p, "options": opts}, src + [j(disturbances.RUNS), j("modes.csv")])
+
+    def go():
+        if not os.path.exists(j(disturbances.RUNS)):
+            return False, {"error": "the kicks' map is missing (logs/disturbances_runs.log)"}
+        rows = report.read_rows(j("modes.csv")) if os.path.exists(j("modes.csv")) else []
+        cea_stable = bool(all(report.num(r.get("re")) <= 0 for r in rows)) if rows else None  # no eigenvalue in the right half-plane
+        r = disturbances.classify(out, opts, p, scene.get("seconds_per_unit", 1.0), cea_stable)
+        disturbances.figure(out)
+        return True, {"result": {"coexists": r["coexists"], "smallest_kick": (r["smallest_kick"] or {}).get("kick_rate_fraction")}}
+
+    steps.journal = journal.Journal(out)
+    steps.journal.run("disturbances", digest, ["disturbances.json", "disturbances.csv", "disturbances.png"], go,
+                      what=f"kicks of growing size about the steady state ({len(p['kicks'])} runs; docs/squeal.md 9.5)")
 
 
 def basis_part(steps, base, extra, path, name):

@@ -37,10 +37,11 @@ PetscErrorCode RollerSetUp(Roller ctx)
   { /* a typo refused before any output file is opened (the outputs' options read, not yet acted on) */
     char      csv[PETSC_MAX_PATH_LEN], h5[PETSC_MAX_PATH_LEN];
     PetscInt  every;
+    PetscReal start;
     PetscBool help;
 
     PetscCall(PetscOptionsHasHelp(NULL, &help));
-    if (!ctx->eig.on && !help) PetscCall(RollerOutputSetFromOptions(ctx, csv, h5, sizeof(csv), &every));
+    if (!ctx->eig.on && !help) PetscCall(RollerOutputSetFromOptions(ctx, csv, h5, sizeof(csv), &every, &start));
     PetscCall(RollerOptionsCheck(ctx->comm, PETSC_FALSE));
   }
   if (!ctx->eig.on) {

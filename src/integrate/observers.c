@@ -61,11 +61,12 @@ static PetscErrorCode MonitorFieldsDestroy(void **mctx)
    continues it. */
 PetscErrorCode RollerOutputMonitorSetUp(Roller ctx)
 {
-  char     csv[PETSC_MAX_PATH_LEN], h5[PETSC_MAX_PATH_LEN];
-  PetscInt every;
+  char      csv[PETSC_MAX_PATH_LEN], h5[PETSC_MAX_PATH_LEN];
+  PetscInt  every;
+  PetscReal start;
 
   PetscFunctionBeginUser;
-  PetscCall(RollerOutputSetFromOptions(ctx, csv, h5, sizeof(csv), &every));
+  PetscCall(RollerOutputSetFromOptions(ctx, csv, h5, sizeof(csv), &every, &start));
   if (csv[0]) {
     RollerCsv writer;
 
@@ -75,7 +76,7 @@ PetscErrorCode RollerOutputMonitorSetUp(Roller ctx)
   if (h5[0]) {
     RollerOutput out;
 
-    PetscCall(RollerFieldsCreate(ctx, h5, every, &out));
+    PetscCall(RollerFieldsCreate(ctx, h5, every, start, &out));
     PetscCall(RollerMonitorSet(ctx, MonitorFields, out, MonitorFieldsDestroy));
   }
   PetscCall(RollerSurfaceMonitorSetUp(ctx));

@@ -40,9 +40,9 @@ PETSC_INTERN PetscErrorCode  RollerCsvDestroy(RollerCsv *);
 
 /* output.c: the fields (HDF5 + XDMF index, the diagnostics series) and the output options */
 typedef struct _n_RollerOutput *RollerOutput;
-PETSC_INTERN PetscErrorCode     RollerOutputSetFromOptions(Roller, char[], char[], size_t, PetscInt *); /* csv, h5 paths (empty: none), every */
-PETSC_INTERN PetscErrorCode     RollerFieldsCreate(Roller, const char[], PetscInt, RollerOutput *);
-PETSC_INTERN PetscErrorCode     RollerFieldsStep(Roller, RollerOutput); /* the step's diagnostics (ctx->info) and, every N steps, its fields */
+PETSC_INTERN PetscErrorCode     RollerOutputSetFromOptions(Roller, char[], char[], size_t, PetscInt *, PetscReal *); /* csv, h5 paths (empty: none), every, start */
+PETSC_INTERN PetscErrorCode     RollerFieldsCreate(Roller, const char[], PetscInt, PetscReal, RollerOutput *);       /* path, every, start */
+PETSC_INTERN PetscErrorCode     RollerFieldsStep(Roller, RollerOutput);                                              /* the step's diagnostics (ctx->info) and, every N steps, its fields */
 PETSC_INTERN PetscErrorCode     RollerFieldsClose(Roller, RollerOutput);
 PETSC_INTERN PetscErrorCode     RollerFieldsDestroy(RollerOutput *);
 

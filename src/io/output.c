@@ -166,8 +166,8 @@ PetscErrorCode RollerCheckParameters(Roller ctx, PetscViewer h5, const char opti
   PetscFunctionReturn(0);
 }
 
-/* -output path, every N steps: the HDF5 file (as path.part), the mesh, the parameters, the output spaces. */
-PetscErrorCode RollerFieldsCreate(Roller ctx, const char path[], PetscInt every, RollerOutput *output)
+/* -output path, every N steps from the time start on: the HDF5 file (as path.part), the mesh, the parameters, the output spaces. */
+PetscErrorCode RollerFieldsCreate(Roller ctx, const char path[], PetscInt every, PetscReal start, RollerOutput *output)
 {
   PetscErrorCode (*position[1])(PetscInt, PetscReal, const PetscReal[], PetscInt, PetscScalar *, void *) = {RollerPosition};
   PetscBool    has;
@@ -176,6 +176,7 @@ PetscErrorCode RollerFieldsCreate(Roller ctx, const char path[], PetscInt every,
   PetscFunctionBeginUser;
   PetscCall(PetscNew(&out));
   out->every   = every;
+  out->start   = start;
   out->xdmf.fd = -1;
   PetscCall(PetscStrncpy(out->h5_path, path, sizeof(out->h5_path)));
   *output = out;
@@ -267,8 +268,9 @@ static PetscErrorCode WriteFields(Roller ctx, RollerOutput out)
     v  = out->vfull;
   }
   PetscCall(RollerProjectAtVertices(ctx, xi, RollerPadVector, INSERT_VALUES, out->field[FIELD_DISPLACEMENT].vec));
-  PetscCall(LabDisplacement(out, theta, out->field[FIELD_DISPLACEMENT].vec, out->field[FIELD_LAB].vec));
   PetscCall(RollerProjectAtVertices(ctx, v, RollerPadVector, INSERT_VALUES, out->field[FIELD_VELOCITY].vec));
+  if (ctx->axle.on) PetscCall(RollerOutputHubAtVertices(ctx, out, out->field[FIELD_DISPLACEMENT].vec, out->field[FIELD_VELOCITY].vec));
+  PetscCall(LabDisplacement(out, theta, out->field[FIELD_DISPLACEMENT].vec, out->field[FIELD_LAB].vec));
   /* |sigma| (docs/model.md section 4); DMProjectField hands the kernel the constants of the input DS, ctx->mesh.dm's */
   PetscCall(RollerProjectAtVertices(ctx, xi, f_stress_norm, ADD_VALUES, out->field[FIELD_STRESS].vec));
   PetscCall(VecPointwiseDivide(out->field[FIELD_STRESS].vec, out->field[FIELD_STRESS].vec, out->count));
@@ -293,12 +295,12 @@ static PetscErrorCode WriteFields(Roller ctx, RollerOutput out)
 }
 
 /* The step's output: its diagnostics (ctx->info, made by the caller) to the series, the fields every -output_every
-   steps. */
+   steps from -output_start on (the level within half a step of it counts). */
 PetscErrorCode RollerFieldsStep(Roller ctx, RollerOutput out)
 {
   PetscFunctionBeginUser;
   PetscCall(RollerSeriesAppend(ctx, &out->series));
-  if (ctx->state.step % out->every == 0) PetscCall(WriteFields(ctx, out));
+  if (ctx->state.step % out->every == 0 && ctx->state.time >= out->start - 0.5 * ctx->ts.dt) PetscCall(WriteFields(ctx, out));
   PetscFunctionReturn(0);
 }
 
@@ -342,18 +344,21 @@ PetscErrorCode RollerFieldsDestroy(RollerOutput *output)
   PetscFunctionReturn(0);
 }
 
-/* The output options: -monitor_csv F (output_csv.c), -output F.h5 every -output_every steps; empty paths: none. */
-PetscErrorCode RollerOutputSetFromOptions(Roller ctx, char csv[], char h5[], size_t len, PetscInt *every)
+/* The output options: -monitor_csv F (output_csv.c), -output F.h5 every -output_every steps from -output_start on;
+   empty paths: none. */
+PetscErrorCode RollerOutputSetFromOptions(Roller ctx, char csv[], char h5[], size_t len, PetscInt *every, PetscReal *start)
 {
   PetscBool has_csv = PETSC_FALSE, has_h5 = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   csv[0] = h5[0] = 0;
   *every         = 10;
+  *start         = 0.0;
   PetscOptionsBegin(ctx->comm, NULL, "Roller: output", NULL);
   PetscCall(PetscOptionsString("-monitor_csv", "One CSV row per step: step,t,R,alpha,energy,contact_nodes,contact_force,gap_min,qp_iterations,kkt_residual,theta", NULL, csv, csv, len, &has_csv));
   PetscCall(PetscOptionsString("-output", "Fields to this HDF5 file, with an XDMF index beside it (F.h5 -> F.xmf)", NULL, h5, h5, len, &has_h5));
   PetscCall(PetscOptionsInt("-output_every", "Write fields every N steps", NULL, *every, every, NULL));
+  PetscCall(PetscOptionsReal("-output_start", "Write fields from this time on (a window at the end of a long run)", NULL, *start, start, NULL));
   { /* read again by the observer (integrate/observers_surface.c): listed and checked here, with the outputs */
     char      surface[PETSC_MAX_PATH_LEN] = "";
     PetscInt  orders                      = ROLLER_SURFACE_ORDERS;
@@ -366,6 +371,7 @@ PetscErrorCode RollerOutputSetFromOptions(Roller ctx, char csv[], char h5[], siz
   }
   PetscOptionsEnd();
   PetscCheck(*every > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-output_every %" PetscInt_FMT " must be > 0", *every);
+  RollerCheckOption(ctx->comm, "-output_start", *start, *start >= 0, ">= 0 (a time)");
   PetscCheck(!has_csv || csv[0], ctx->comm, PETSC_ERR_ARG_WRONG, "-monitor_csv needs a file name");
   PetscCheck(!has_h5 || h5[0], ctx->comm, PETSC_ERR_ARG_WRONG, "-output needs a file name");
   PetscFunctionReturn(0);

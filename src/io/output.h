@@ -51,6 +51,7 @@ struct _n_RollerOutput {
   char        h5_path[PETSC_MAX_PATH_LEN], h5_part[PETSC_MAX_PATH_LEN];
   PetscViewer h5;
   PetscInt    every;
+  PetscReal   start; /* -output_start: no fields before this time */
   RollerXdmf  xdmf;
 
   /* Output spaces on the same mesh: vdm P1 with 3 components; sdm, pdm (contact pressure), tdm and cdm (the
@@ -69,6 +70,7 @@ PETSC_INTERN PetscErrorCode RollerOutputSpace(Roller, PetscInt, const char[], DM
 PETSC_INTERN PetscErrorCode RollerFieldCreate(DM, const char[], OutputField *);
 PETSC_INTERN PetscErrorCode RollerProjectAtVertices(Roller, Vec, RollerPointFunc, InsertMode, Vec); /* u on ctx->mesh.dm */
 PETSC_INTERN PetscErrorCode RollerWriteParameters(Roller, PetscViewer);
+PETSC_INTERN PetscErrorCode RollerOutputHubAtVertices(Roller, RollerOutput, Vec, Vec);              /* -axle: xi, v at Gamma_D's vertices (output_hub.c) */
 PETSC_INTERN PetscErrorCode RollerCheckParameters(Roller, PetscViewer, const char[], const char[]); /* option, file */
 PETSC_INTERN void           RollerPadVector(ROLLER_KERNEL_ARGS, const PetscReal x[], PetscInt numConstants, const PetscScalar constants[], PetscScalar f[]);
 

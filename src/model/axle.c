@@ -18,6 +18,8 @@ PetscErrorCode RollerAxleSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsReal("-nip_ramp", "Time over which the preload rises smoothly to -nip_force (default: the press time -obstacle_depth/-obstacle_speed)", NULL, ax->nip_ramp, &ax->nip_ramp, NULL));
   PetscCall(PetscOptionsReal("-drive_stiffness", "Torsional stiffness per unit width of the drive (gear train and motor) between the motor and the hub (required with -axle)", NULL, ax->drive_stiffness, &ax->drive_stiffness, NULL));
   PetscCall(PetscOptionsReal("-drive_damping", "Torsional damping per unit width of the drive", NULL, ax->drive_damping, &ax->drive_damping, NULL));
+  PetscCall(PetscOptionsReal("-drive_kick", "A disturbance: the angular impulse per unit width given to the hub at -drive_kick_time (0: none; docs/squeal.md 9.5)", NULL, ax->kick, &ax->kick, NULL));
+  PetscCall(PetscOptionsReal("-drive_kick_time", "The time of -drive_kick (the step's level nearest to it takes the impulse)", NULL, ax->kick_time, &ax->kick_time, NULL));
   PetscCall(
     PetscOptionsReal("-sheet_mass", "The sheet's mass per unit width: its speed follows from the friction and -sheet_resistance, from -sheet_speed at t = 0 (0: the kinematic sheet at -sheet_speed)", NULL, ctx->obstacle.sheet_mass, &ctx->obstacle.sheet_mass, NULL));
   PetscCall(PetscOptionsReal("-sheet_resistance", "With -sheet_mass: the force per unit width holding the sheet back (the stack, the separation pad), a Coulomb element on its motion", NULL, ctx->obstacle.sheet_resistance, &ctx->obstacle.sheet_resistance, NULL));
@@ -34,6 +36,9 @@ PetscErrorCode RollerAxleSetFromOptions(Roller ctx)
   RollerCheckOption(ctx->comm, "-nip_ramp", ax->nip_ramp, ax->nip_ramp >= 0, ">= 0");
   RollerCheckOption(ctx->comm, "-drive_stiffness", ax->drive_stiffness, ax->drive_stiffness >= 0, ">= 0");
   RollerCheckOption(ctx->comm, "-drive_damping", ax->drive_damping, ax->drive_damping >= 0, ">= 0");
+  RollerCheckOption(ctx->comm, "-drive_kick", ax->kick, PetscAbsReal(ax->kick) <= 1e100, "|J| <= 1e100 (its energy J^2/(2 I) representable)");
+  RollerCheckOption(ctx->comm, "-drive_kick_time", ax->kick_time, ax->kick_time >= 0, ">= 0");
+  PetscCheck(ax->kick == 0 || ax->on, ctx->comm, PETSC_ERR_ARG_INCOMP, "-drive_kick %g is an impulse on the hub: needs -axle", (double)ax->kick);
   if (ax->on)
     PetscCheck(ax->nip_force < ctx->material.young * (ctx->mesh.r_outer - ctx->mesh.r_inner), ctx->comm, PETSC_ERR_USER_INPUT, "-nip_force %g must be below E (r_outer - r_inner) = %g (a force per unit width that would squeeze the rubber's wall flat)",
                (double)ax->nip_force, (double)(ctx->material.young * (ctx->mesh.r_outer - ctx->mesh.r_inner)));
@@ -93,6 +98,9 @@ void RollerAxleForce(Roller ctx, PetscReal t, PetscReal f[3])
   f[0] = a * n[0];
   f[1] = a * n[1];
   f[2] = 0.0;
+  /* -drive_kick J: the torque J/dt at the one level within half a step of the kick's time (the three-level step's
+     momentum jumps by J: (I (phi^{k+1} - phi^k) - I (phi^k - phi^{k-1}))/dt = J) */
+  if (ctx->axle.kick != 0 && t >= ctx->axle.kick_time - 0.5 * ctx->ts.dt && t < ctx->axle.kick_time + 0.5 * ctx->ts.dt) f[2] = ctx->axle.kick / ctx->ts.dt;
 }
 
 /* Dz = Z (Z^T D Z)^{-1} Z^T, Z = [[n, 0], [0, 1]] at t: the inverse of D on the hub's admissible motions (u along n). */
