@@ -112,7 +112,7 @@ def load_window(h5, frames=160):
             "r_outer": float(np.ravel(par.get("r_outer", 0.0))[0]), "theta": theta,
             "xi": np.array([back(u, th) for u, th in zip(here, theta)]), "dxi": np.array([back(u, th) for u, th in zip(vib, theta)]),
             "speed": np.hypot(dv[..., 0], dv[..., 1]), "state": cs,
-            "reference": "the heard run's lab displacement less its mean over the window at fixed lab points (the steady "
+            "reference": "the heard run's lab deformation less its mean over the window at fixed lab points (the steady "
                          f"rolling state), over its last {t[-1] - t[0]:.4g} units of time"}
 
 
