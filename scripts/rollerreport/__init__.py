@@ -11,6 +11,7 @@ Modules:
 - propensity: the odds over the real spread (Latin hypercube, Wilson's interval, the ranking), the 1-DOF's classes;
 - propensity_fe: the propensity's cases on the finite elements (each case's CEA and its reduced start, -sweep_cases);
 - ripple_sweep: the forced response against the ripple's frequency (a -sweep_cases map of reduced runs);
+- disturbances: kicks of growing size about the steady state (a coexisting stick-slip cycle and the smallest kick to it);
 - tables: a study's STEM.csv and STEM.json, written and read alike;
 - radiation: the sound pressure at a listener from the roller's surface velocity (2-D cylinder, finite width);
 - sound: the WAV of the simulated time at a stated level, the loudest line, A-weighting, the spectrogram;
@@ -19,4 +20,4 @@ Modules:
 - spectrum, squeal_fit: the spectra and the whirl fits the tests and rollerplots use too.
 """
 __all__ = ["spectrum", "squeal_fit", "lines", "sound", "radiation", "animation", "mechanisms", "cycle", "onedof",
-           "propensity", "propensity_fe", "ripple_sweep", "tables", "journal", "page", "report", "run"]
+           "propensity", "propensity_fe", "ripple_sweep", "disturbances", "tables", "journal", "page", "report", "run"]
