@@ -151,7 +151,9 @@ def write(data, stem, seconds_per_unit=1.0, sound=None, fps=10, title="", t_orig
         ap.plot(ts[span] * 1e3, p[span], lw=0.6, color="0.3")
         ap.set_ylabel("p at the listener (Pa)", fontsize=8)
     ap.set_xlabel("time (ms of the sound: simulated time x seconds per unit)", fontsize=8)
-    cursor = ap.axvline(0.0, color="C3", lw=1.2)
+    cursor = ap.axvline(t_audio[0] * 1e3, color="C3", lw=1.2)
+    if len(t_audio) > 1:  # the frames' span (the sound may be longer: on the axle the frames are its last periods)
+        ap.set_xlim(t_audio[0] * 1e3, t_audio[-1] * 1e3)
     if contact:  # the window around every frame's contact vertices, in the lab
         pts = [_rotate(x[st > 0], _angle(data, k)) for k, st in enumerate(data["state"]) if np.any(st > 0)]
         pts = np.concatenate(pts)
