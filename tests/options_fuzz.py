@@ -59,7 +59,8 @@ VALID = {
     ("-nip_force", "0"): "no preload", ("-nip_ramp", "0"): "the preload at once", ("-nip_ramp", "1e300"): "the preload never rises",
     ("-drive_stiffness", "1e300"): "a rigid drive", ("-sheet_mass", "0"): "the kinematic sheet", ("-sheet_resistance", "0"): "no resistance", ("-drive_damping", "0"): "an undamped drive", ("-drive_damping", "1e300"): None,
     ("-drive_kick", "-1"): "a kick against the motor", ("-drive_kick", "0"): "no kick", ("-drive_kick_time", "0"): "the kick at the first step",
-    ("-drive_kick_time", "1e300"): "unused without -drive_kick",
+    ("-drive_kick_time", "1e300"): "unused without -drive_kick", ("-output_start", "0"): "fields from the start (the default)",
+    ("-output_start", "1e300"): "no fields written (unused without -output)",
 }
 VALUES_REAL = ["nan", "inf", "-1", "0", "1e300", "word"]
 VALUES_INT = ["-1", "0", "1e300", "word"]
