@@ -67,19 +67,21 @@ def load(h5, base_h5=None, frames=120):
     return out
 
 
-def _interp(x, cells, values, at):
-    """values on the vertices x of the triangles cells, linearly interpolated at the points at ([m, 2]); a point outside
-    the mesh (the polygonal boundary turned) takes its nearest vertex's value."""
+def _interpolator(x, cells, values):
+    """values on the vertices x of the triangles cells as a function of points at ([m, 2]), linear; a point outside the
+    mesh (the polygonal boundary turned) takes its nearest vertex's value. Built once, evaluated at many point sets."""
     from matplotlib.tri import LinearTriInterpolator, Triangulation
 
     tri = Triangulation(x[:, 0], x[:, 1], cells)
-    out = np.empty((len(at), values.shape[1]))
-    for c in range(values.shape[1]):
-        out[:, c] = np.ma.filled(LinearTriInterpolator(tri, values[:, c])(at[:, 0], at[:, 1]), np.nan)
-    bad = np.isnan(out).any(axis=1)
-    for i in np.where(bad)[0]:
-        out[i] = values[np.argmin(np.hypot(x[:, 0] - at[i, 0], x[:, 1] - at[i, 1]))]
-    return out
+    parts = [LinearTriInterpolator(tri, values[:, c]) for c in range(values.shape[1])]
+
+    def at_points(at):
+        out = np.stack([np.ma.filled(f(at[:, 0], at[:, 1]), np.nan) for f in parts], axis=1)
+        for i in np.where(np.isnan(out).any(axis=1))[0]:
+            out[i] = values[np.argmin(np.hypot(x[:, 0] - at[i, 0], x[:, 1] - at[i, 1]))]
+        return out
+
+    return at_points
 
 
 def load_window(h5, frames=160):
@@ -102,8 +104,9 @@ def load_window(h5, frames=160):
     theta = np.arctan2(np.sum(a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0], axis=1), np.sum(a[..., 0] * b[..., 0] + a[..., 1] * b[..., 1], axis=1))
     placed = [_rotate(x, th) for th in theta]  # each frame's vertices in the lab, undeformed
     lab = np.array([_rotate(u, th) for u, th in zip(xi, theta)])  # the deformation in the lab: R(theta) xi (no rigid turn)
-    steady = np.mean([_interp(p, cells, u, x) for p, u in zip(placed, lab)], axis=0)  # at the fixed lab points x
-    here = np.array([_interp(x, cells, steady, p) for p in placed])  # the steady state at each frame's vertices
+    steady = np.mean([_interpolator(p, cells, u)(x) for p, u in zip(placed, lab)], axis=0)  # at the fixed lab points x
+    at = _interpolator(x, cells, steady)  # one interpolant of the steady state, at each frame's vertices
+    here = np.array([at(p) for p in placed])
     vib = lab - here
     dt = np.gradient(t) if len(t) > 1 else np.ones(1)
     dv = np.gradient(vib, axis=0) / dt[:, None, None] if len(t) > 1 else np.zeros_like(vib)

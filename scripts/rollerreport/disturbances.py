@@ -71,9 +71,7 @@ def command(base, extra, folder, p, ranks, mpiexec):
 
 
 def hub_rate(path):
-    with open(path, newline="") as fh:
-        rows = list(csv.DictReader(fh))[1:]
-    return np.array([float(r["t"]) for r in rows]), np.array([float(r["hub_rate"]) for r in rows])
+    return propensity_fe.read_series(path)[:2]
 
 
 def residual(t, h, t_kick, period):
@@ -92,8 +90,9 @@ def classify(folder, opts, p, seconds_per_unit=1.0, cea_stable=None):
         ok = runs.get(i, {}).get("status") == "ok"
         back = math.nan
         if ok:
-            kind, cyc = propensity_fe.transient_verdict(f"{stem}.case{i}.csv", p["t_kick"])
-            t, h = hub_rate(f"{stem}.case{i}.csv")
+            series = propensity_fe.read_series(f"{stem}.case{i}.csv")  # read once: the verdict and the comparison
+            kind, cyc = propensity_fe.transient_verdict(None, p["t_kick"], series)
+            t, h = series[:2]
             floor = residual(t, h, p["t_kick"], p["period"])
             if i == 0:
                 ref = (t, h)
@@ -134,8 +133,8 @@ def onedof_threshold(opts):
     from rollerref import basin
 
     r = basin.kick_threshold(onedof.torsion(opts, ripple=False))
-    return None if r is None else {"threshold": r["threshold"] / abs(onedof.value(opts, "omega")), "sliding_at": r["sliding_at"] / abs(onedof.value(opts, "omega")),
-                                   "cycle_at": r["cycle_at"] / abs(onedof.value(opts, "omega"))}
+    w = abs(onedof.value(opts, "omega"))
+    return None if r is None else {k: r[k] / w for k in ("threshold", "sliding_at", "cycle_at")}
 
 
 def lines(d, s=1.0):

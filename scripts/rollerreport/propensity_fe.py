@@ -86,12 +86,18 @@ def cea_verdict(rows):
     return kind, g, w
 
 
-def transient_verdict(path, t_min):
-    """A case's series -> ('stick-slip' | 'growing' | 'settled', the cycle.detect dict)."""
+def read_series(path):
+    """A case's series: (t, hub_rate, stick_nodes), row 0 (the state before the first contact solve) left out."""
     with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))[1:]  # row 0: the state before the first contact solve
-    t = np.array([float(r["t"]) for r in rows])
-    cyc = cycle.detect(t, np.array([float(r["hub_rate"]) for r in rows]), np.array([float(r["stick_nodes"]) for r in rows]), t_min=t_min)
+        rows = list(csv.DictReader(f))[1:]
+    return tuple(np.array([float(r[c]) for r in rows]) for c in ("t", "hub_rate", "stick_nodes"))
+
+
+def transient_verdict(path, t_min, series=None):
+    """A case's series (read from path unless given: read_series) -> ('stick-slip' | 'growing' | 'settled', the
+    cycle.detect dict)."""
+    t, hub, stick = series if series is not None else read_series(path)
+    cyc = cycle.detect(t, hub, stick, t_min=t_min)
     # growing: a clean oscillation (its periods within cycle.PERIOD_SPREAD) of a visible size (GROWING_SIZE of the hub's
     # mean rate: not the node passing's ripple of a settled run) whose envelope still grows
     grows = (math.isfinite(cyc["growth_rate"]) and cyc["growth_rate"] * cyc["period"] > GROWING_PER_PERIOD
