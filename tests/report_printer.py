@@ -14,7 +14,9 @@ jobs/printer_roller.yaml (the feed on the real axle, the Maxwell EPDM, the stepp
 - flutter: on printer_roller.yaml run by the CEA on the axle (roller -modes with -axle and -rubber maxwell), squeaking
   only with an eigenvalue of positive real part; its bounce (the largest axle_y) within 1.5 % in frequency and 10 % in
   decay of the same run's contact_force (a damped sine fitted over 12-30 ms; the frozen branches' error, docs/squeal.md
-  3.1); on printer_pick.yaml "not run" with roller's reason (-sheet_mass);
+  3.1), and the same run read for a growing line as without a CEA (rollerreport.run_lines) agrees with it (a line grows
+  iff an oscillating eigenvalue has Re > 0); on printer_pick.yaml, whose CEA roller refuses (-sheet_mass), run by that
+  reading of its own run, roller's reason first in its evidence;
 - the ripple swept over the band and the CEA's modes: its case at 873 Hz within 5 % of the 0.51 s run's line;
 - kicks about the steady state (disturbances.csv, 15 kicks against the motor of 0.1-150 % of its rate, the reduced
   model): every run finished and read, the stick-slip mechanism's evidence says what they found; the kicked runs that
@@ -42,6 +44,7 @@ from rollertest import EXE, SOURCE, Checker, chromium_probe, fit_maxwell_decay, 
 
 sys.path.insert(0, os.path.join(SOURCE, "scripts"))
 from rollerref import forced as ref_forced  # noqa: E402
+from rollerreport import run_lines  # noqa: E402
 
 c = Checker("report_printer")
 RIPPLE = 873.0
@@ -191,8 +194,14 @@ for name in ("printer_roller", "printer_pick"):
 
     # flutter
     fl = mech["flutter"]
+    sc = json.load(open(os.path.join(out, "scene.json")))
+    rl = run_lines.read(out, sc, s=sc.get("seconds_per_unit", 1.0))  # the run read for a growing line, as without a CEA
+    grow = run_lines.growing(rl, sc.get("seconds_per_unit", 1.0))
     if name == "printer_pick":
-        c.check(fl["status"].startswith("not run") and "-sheet_mass" in fl["status"], f"{name}: flutter {fl['status'][:160]}")
+        c.check(fl["status"] == "run" and fl.get("method", "").startswith("the scene's own run") and "-sheet_mass" in fl["evidence"][0]
+                and fl["squeals"] == bool(grow) and len(rl["lines"]) >= 4,
+                f"{name}: flutter {fl['status']} by {fl.get('method')} (the CEA refused: {fl['evidence'][0][-60:]}), squeals {fl['squeals']}: "
+                f"{len(rl['lines'])} lines followed, growing {grow}")
     else:
         with open(os.path.join(out, "modes.csv"), newline="") as f:
             modes = list(csv.DictReader(f))
@@ -202,6 +211,12 @@ for name in ("printer_roller", "printer_pick"):
         cf = mon["contact_force"][w]
         s_fe, w_fe, _ = fit_maxwell_decay(tm[w] - tm[w][0], cf - cf.mean(), [0.0])  # a damped sine and a constant
         c.check(fl["status"] == "run" and (not fl["squeals"] or worst > 0), f"{name}: flutter {fl['status']}, squeals {fl['squeals']}; the largest Re of {len(modes)} eigenvalues {worst:+.4g}")
+        # the reading without a CEA (the pick's) against the CEA where both exist: a line grows in the run iff an
+        # oscillating eigenvalue has Re > 0
+        osc = max(float(m["re"]) for m in modes if float(m["im"]) > 0)
+        c.check(bool(grow) == (osc > 0) and len(rl["lines"]) >= 4, f"{name}: the run read for a growing line: {len(rl['lines'])} lines "
+                f"followed, growing {grow}, the least stable {rl['lines'][0]['frequency']:.1f} Hz at {rl['lines'][0]['growth_rate']:+.3g} /s; "
+                f"the CEA's least stable oscillating mode {osc:+.4g} /s")
         c.check(abs(float(b["im"]) / w_fe - 1) < 0.015 and abs(float(b["re"]) / s_fe - 1) < 0.10,
                 f"{name}: the CEA's bounce {float(b['re']):.2f} + {float(b['im']) / (2 * math.pi):.2f} Hz i against the run's contact_force "
                 f"{s_fe:.2f}, {w_fe / (2 * math.pi):.2f} Hz ({100 * (float(b['re']) / s_fe - 1):+.1f} %, {100 * (float(b['im']) / w_fe - 1):+.2f} %)")

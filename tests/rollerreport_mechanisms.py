@@ -8,8 +8,9 @@ mechanisms, heard.write_cycle; docs/squeal.md 9.4) on synthetic monitor CSVs, no
 - the report of that folder: verdict "squeals" by stick-slip; without modes.csv flutter "not run" (the 1-DOF closed
   form named "not a substitute"); with a modes.csv of the axle's columns (axle_y, hub_phi) flutter run by it, stable,
   the drive's mode (the largest hub_phi) beside the 1-DOF closed form, the stick-slip "bistable" by the CEA; with the
-  CEA refused (roller's PETSc error for -rubber maxwell, parsed by rollerreport.run.Steps from a log) flutter "not run"
-  with roller's reason, the part not counted as failed; squeal.wav as long as the simulated span times the time scale, its pitch
+  CEA refused (roller's PETSc error for -sheet_mass, parsed by rollerreport.run.Steps from a log) flutter read from the
+  scene's own run instead (rollerreport.run_lines: roller's reason first in its evidence; the stick-slip cycle's lines
+  left out, no line grows: squeals False), the part not counted as failed; squeal.wav as long as the simulated span times the time scale, its pitch
   (measured here by the autocorrelation of its last two thirds) within 2 % of the cycle's, its envelope sustained (the
   RMS of the last two spans of four periods within 10 %), full scale the stated 94 dB SPL; the friction force's dipole against its
   closed form cos(phi) w F W / (4 pi c d);
@@ -33,7 +34,7 @@ import wave
 import numpy as np
 
 from rollertest import SOURCE, Checker
-from rollerreport import cycle, mechanisms, onedof, propensity, radiation, run  # noqa: E402
+from rollerreport import cycle, mechanisms, onedof, propensity, radiation, run, run_lines  # noqa: E402
 from rollerref import stickslip  # noqa: E402
 
 c = Checker("rollerreport_mechanisms")
@@ -153,9 +154,14 @@ r = subprocess.run([sys.executable, "-m", "rollerreport", d], capture_output=Tru
 out3 = json.load(open(os.path.join(d, "report.json"))) if r.returncode == 0 else {}
 fl3 = {m["kind"]: m for m in out3.get("mechanisms", [])}.get("flutter", {})
 why = "-sheet_mass with -modes: the steady state takes the sheet's speed -sheet_speed (the force balance of a moving sheet is the transient's)"
-c.check(rec.get("refused") is True and rec["error"].endswith(why) and fl3.get("status") == f"not run: roller -modes refused the scene: {why}"
-        and fl3.get("squeals") is None and "not a substitute" in fl3["evidence"][0] and out3["squeals_by"] == ["stick-slip"],
-        f"the CEA refused: {fl3.get('status')} (the part refused, not failed: {rec.get('refused')})")
+# the CEA refused (a sheet with its own mass): flutter read from the scene's own run instead (rollerreport.run_lines),
+# the stick-slip cycle's lines left out (stick-slip's, not a growing mode): no line grows
+c.check(rec.get("refused") is True and rec["error"].endswith(why) and fl3.get("status") == "run"
+        and fl3.get("method", "").startswith("the scene's own run") and fl3["evidence"][0] == f"no CEA: roller -modes refused the scene: {why}"
+        and "none grows" in fl3["evidence"][1] and fl3.get("squeals") is False and "not a substitute" in fl3["evidence"][2]
+        and out3["squeals_by"] == ["stick-slip"],
+        f"the CEA refused: flutter {fl3.get('status')} by {fl3.get('method')}, squeals {fl3.get('squeals')}: "
+        f"{(fl3.get('evidence') or ['', ''])[1][-160:]} (the part refused, not failed: {rec.get('refused')})")
 os.remove(os.path.join(d, "commands.json"))
 
 tt = np.arange(20000) / 20000.0
@@ -273,4 +279,52 @@ for grow, want in ((G0, True), (0.0, False)):
     rg = mechanisms.run_growth(dg, F0, G0)
     c.check(rg is not None and rg["confirmed"] is want and (abs(rg["growth_rate"] / G0 - 1) < 0.05 if want else abs(rg["growth_rate"]) < 0.05 * G0),
             f"run_growth: a line growing at {grow} /s measured at {rg['growth_rate'] if rg else math.nan:+.3f} /s, confirmed {rg['confirmed'] if rg else None}")
+    # without a CEA (rollerreport.run_lines): the same run read for any line that grows; the ripple's left out
+    rl = run_lines.read(dg, {"ripple": {"frequency": 873.0}})
+    top = next((x for x in rl["lines"] if abs(x["frequency"] / F0 - 1) < 0.01), {}) if rl else {}
+    c.check(all(abs(x["frequency"] / 873 - 1) > 0.03 for x in rl["lines"]) and top.get("grows") is want
+            and len(run_lines.growing(rl)) == int(want)
+            and (abs(top["growth_rate"] / G0 - 1) < 0.1 if want else abs(top["growth_rate"]) < 0.1 * G0),
+            f"run_lines: the line at {top.get('frequency', math.nan):.1f} Hz ({top.get('column')}) at "
+            f"{top.get('growth_rate', math.nan):+.2f} /s against {grow} /s, grows {top.get('grows')}; the ripple's 873 Hz left out; "
+            f"lines that grow: {run_lines.growing(rl)} (of {len(rl['lines'])} followed)")
+
+# a clamped scene's starts (rollerreport.divergent): the map's divergent cells (a real positive eigenvalue in
+# sweep.csv) and the scene's own, each series classified: chatter (the stick count changing at most steps, the force
+# holding), stick-slip (a saw-tooth, stuck then slipping whole every period), growing, settled
+from rollerreport import divergent  # noqa: E402
+
+dd = tempfile.mkdtemp(prefix="rollerreport_starts_")
+V0, MU0 = 0.2356, 0.8
+cells = [(V0, MU0, 3537.0), (0.0, 0.8, 11198.0), (V0, 0.4, 8054.0), (0.1, 0.4, 2000.0), (0.0, 0.4, -94.0)]
+with open(os.path.join(dd, "sweep.csv"), "w") as f:
+    f.write("case,sheet_speed,friction,re,im,frequency,growth_rate,order,wave,error\n")
+    for i, (v, mu, g) in enumerate(cells):
+        f.write(f"{i},{v!r},{mu!r},-30,3000,3000,-30,0,standing,1e-9\n{i},{v!r},{mu!r},{g!r},0,0,{g!r},1,standing,1e-9\n")
+scene_c = {"sheet_speed": V0, "friction": MU0, "surface_speed": V0 / 0.99}
+sp = divergent.plan({"ts_max_time": "0.01", "obstacle_speed": "0.025", "obstacle_depth": "7.5e-5"}, scene_c, os.path.join(dd, "sweep.csv"))
+divergent.write_cases(dd, sp)
+os.makedirs(os.path.join(dd, "divergent"))
+with open(os.path.join(dd, divergent.RUNS), "w") as f:
+    f.write("case,friction,sheet_speed,status\n" + "".join(f"{i},0,0,ok\n" for i in range(len(sp["cases"]))))
+ts = np.arange(0, 0.01, 5e-6)
+ph = (2000 * ts) % 1.0
+rng = np.random.default_rng(5)
+series = [(-30 + 0.01 * rng.standard_normal(len(ts)), 10 + (np.arange(len(ts)) % 2)),  # chatter
+          (-30 + 5 * ph, np.where(ph < 0.6, 8, 0)),  # stick-slip at 2 kHz
+          (-30 + 0.5 * np.exp(300 * (ts - 0.005)) * np.sin(2 * math.pi * 1500 * ts), 8 + 0 * ts),  # growing
+          (-30 + 0.01 * np.exp(-500 * ts) * np.sin(2 * math.pi * 1500 * ts), 8 + 0 * ts)]  # settled
+for i, (q, st) in enumerate(series):
+    write_csv(os.path.join(dd, "divergent", f"series.case{i}.csv"), {"t": ts, "friction_force": q, "contact_force": 100 + 0 * ts, "stick_nodes": st})
+ds = divergent.classify(dd, sp, 1.0)
+rows = divergent.read(dd)["rows"]
+mech = mechanisms.stick_slip(dict(starts=divergent.read(dd), scene=scene_c, seconds_per_unit=1.0))
+long_plan = divergent.plan({"ts_max_time": "0.01", "obstacle_speed": "0.025", "obstacle_depth": "7.5e-5"}, scene_c, os.path.join(dd, "sweep.csv"), 100.0)
+c.check([x["map_case"] for x in sp["cases"]] == [0, 1, 2, 3] and sp["t_min"] == 0.005
+        and abs(long_plan["t_end"] - (0.003 + divergent.SETTLE / 100.0)) < 1e-15 and long_plan["t_min"] == 0.5 * long_plan["t_end"] and [r["outcome"] for r in rows] == ["chatter", "stick-slip", "growing", "settled"]
+        and ds["scene"] == "chatter" and ds["squeak"] == [1, 2] and abs(float(rows[1]["cycle_frequency_hz"]) / 2000 - 1) < 0.01
+        and abs(float(rows[0]["friction_ratio"]) - 0.3) < 1e-3 and mech["status"] == "run" and mech["squeals"] is False
+        and any("2 of the map's 3 other divergent cells squeak" in e for e in mech["evidence"]),
+        f"starts: the scene and its map's 3 other divergent cells (the stable one left out) read as {[r['outcome'] for r in rows]}, "
+        f"the stick-slip cycle at {float(rows[1]['cycle_frequency_hz']):.1f} Hz; the mechanism {mech['status']}, squeals {mech['squeals']}")
 c.close()

@@ -19,6 +19,9 @@ full sliding, creep 1; the scene's friction and 0.4) on 2 ranks. Reads what the 
 - report.json has SPEC section 10's keys (verdict, mechanisms flutter / stick-slip / forced, spl_db, listener,
   wav_seconds, wav_source, propensity); report.html links only files of the folder;
 - spectrogram.png is a PNG, the animation (vibration.gif) a GIF of several frames;
+- the starts (rollerreport.divergent, on the reduced model): the scene's own start and one per divergent cell of
+  sweep.csv, each classified; run to at least 4 decay times of the CEA's least stable mode; the stick-slip mechanism
+  run by the scene's; the scene's start ends at the CEA's steady state (-Q/P over its last half within 5 %);
 - the same command again reuses every part (journal.json) and writes the same report.json numbers."""
 import csv
 import json
@@ -83,7 +86,7 @@ for name, scene, creeps, mus, extra, gtol, audible in SCENES:
     env = dict(os.environ, PYTHONPATH=os.path.join(SOURCE, "scripts"))
     r = subprocess.run(cmd, env=env, capture_output=True, text=True)
     steps = json.load(open(os.path.join(out, "commands.json"))) if os.path.exists(os.path.join(out, "commands.json")) else []
-    c.check(r.returncode == 0 and [s["step"] for s in steps] == ["cea", "map", "transient", "transient_base", "report"]
+    c.check(r.returncode == 0 and [s["step"] for s in steps] == ["cea", "map", "transient", "transient_base", "basis", "divergent_runs", "report"]
             and all(s["returncode"] == 0 for s in steps),
             f"{name}: the driver ran " + ", ".join(f"{s['step']} ({s['seconds']} s{', ' + s['error'] if s['error'] else ''})" for s in steps)
             + (f"; exit {r.returncode}: {r.stdout.strip()[-400:]} {r.stderr.strip()[-400:]}" if r.returncode else ""))
@@ -133,6 +136,25 @@ for name, scene, creeps, mus, extra, gtol, audible in SCENES:
             f"{name}: sweep.csv holds {len(cases)} cases (4), at the scene's point the largest growth {g_map:.6g} (CEA {sigma:.6g}); "
             f"map.png {size}")
 
+    # the starts (rollerreport.divergent): the scene's own start from rest and every divergent cell's of the map, on the
+    # reduced model until the CEA's least stable mode has died out; the scene's ends at the CEA's steady state
+    div = sorted({int(row["case"]) for row in rows if float(row["im"]) == 0 and float(row["growth_rate"]) > 0})
+    with open(os.path.join(out, "divergent.csv")) as f:
+        starts = list(csv.DictReader(f))
+    st = json.load(open(os.path.join(out, "divergent.json")))
+    decay = -max(float(m["growth_rate"]) for m in modes)
+    ss = {m["kind"]: m for m in rep.get("mechanisms", [])}.get("stick-slip", {})
+    mapped = sorted(int(x["map_case"]) for x in starts if x["map_case"] != "")
+    c.check(starts and starts[0]["scene"] == "1" and mapped == div and all(x["status"] == "ok" for x in starts)
+            and all(x["outcome"] in ("stick-slip", "growing", "irregular", "chatter", "settled") for x in starts)
+            and st["t_end"] >= min(4.0 / decay, 20 * float(sc.get("ts_max_time", st["t_end"]))) and ss.get("squeals") == (starts[0]["outcome"] in ("stick-slip", "growing", "irregular")),
+            f"{name}: the starts: the scene's and the map's divergent cells {div} ({mapped} run), to t = {st['t_end']:.4g} "
+            f"(4 decay times of the least stable mode {4.0 / decay:.4g}): {[(x['map_case'], x['outcome']) for x in starts]}; "
+            f"stick-slip {ss.get('status')}, squeals {ss.get('squeals')}")
+    q_p, q_cea = float(starts[0]["friction_ratio"]), st["steady_friction_ratio"]
+    c.check(abs(q_p / q_cea - 1) < 0.05, f"{name}: the scene's start ends at the CEA's steady state: -Q/P {q_p:.4f} over its "
+            f"last half against {q_cea:.4f} ({100 * (q_p / q_cea - 1):+.2f} %, 5 %)")
+
     # the sound: the simulated span, the mode's line
     with wave.open(os.path.join(out, "squeal.wav"), "rb") as wf:
         ok = wf.getnchannels() == 1 and wf.getsampwidth() == 2 and wf.getframerate() == 44100
@@ -157,7 +179,7 @@ for name, scene, creeps, mus, extra, gtol, audible in SCENES:
     mech = rep.get("mechanisms", [])
     lis, prop = rep.get("listener", {}), rep.get("propensity", {})
     c.check(rep.get("verdict") in ("squeals", "does not squeal") and [m["kind"] for m in mech] == ["flutter", "stick-slip", "forced"]
-            and mech[0]["status"] == "run" and mech[0]["squeals"] == (sigma > 0) and all(m["status"].startswith("not run") for m in mech[1:])
+            and mech[0]["status"] == "run" and mech[0]["squeals"] == (sigma > 0) and mech[1]["status"] == "run" and mech[2]["status"].startswith("not run")
             and math.isfinite(rep.get("spl_db", math.nan)) and lis.get("distance_m") == 1.0 and lis.get("width_m", 0) > 0
             and set(src) >= {"file", "column", "t0", "t1", "seconds_per_unit"} and set(prop) >= {"cases", "fraction", "by_mechanism", "ranges"},
             f"{name}: report.json: verdict {rep.get('verdict')}, mechanisms " + "; ".join(f"{m['kind']}: {m['status'][:40]}" for m in mech)

@@ -12,6 +12,8 @@ Modules:
 - propensity_fe: the propensity's cases on the finite elements (each case's CEA and its reduced start, -sweep_cases);
 - ripple_sweep: the forced response against the ripple's frequency (a -sweep_cases map of reduced runs);
 - disturbances: kicks of growing size about the steady state (a coexisting stick-slip cycle and the smallest kick to it);
+- divergent: a clamped scene's start from rest and its map's divergent cells' (full transients, classified);
+- run_lines: flutter read from the scene's own run where roller -modes refuses the scene (a line that grows);
 - tables: a study's STEM.csv and STEM.json, written and read alike;
 - radiation: the sound pressure at a listener from the roller's surface velocity (2-D cylinder, finite width);
 - sound: the WAV of the simulated time at a stated level, the loudest line, A-weighting, the spectrogram;
@@ -20,4 +22,4 @@ Modules:
 - spectrum, squeal_fit: the spectra and the whirl fits the tests and rollerplots use too.
 """
 __all__ = ["spectrum", "squeal_fit", "lines", "sound", "radiation", "animation", "mechanisms", "cycle", "onedof",
-           "propensity", "propensity_fe", "ripple_sweep", "disturbances", "tables", "journal", "page", "report", "run"]
+           "propensity", "propensity_fe", "ripple_sweep", "disturbances", "divergent", "run_lines", "tables", "journal", "page", "report", "run"]

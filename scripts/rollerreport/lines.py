@@ -30,19 +30,22 @@ def mesh_passing(h5):
     return abs(omega) * n / (2 * math.pi) if omega and n else None
 
 
-def notch(t, y, f_m, keep=None, width=0.1):
+def notch(t, y, f_m, keep=None, width=0.1, f_max=None):
     """y - mean(y) without the lines k f_m, k = 1, 2, ... (|f - k f_m| < width f_m), except a harmonic within
-    width f_m of `keep` (the seeded mode's frequency: never removed). Filtered as its even extension (y then y
-    reversed), so that a growing or decaying series does not ring where the FFT wraps around."""
+    width f_m of `keep` (the seeded mode's frequency: never removed), and without what lies above f_max (when given).
+    Filtered as its even extension (y then y reversed), so that a growing or decaying series does not ring where the
+    FFT wraps around."""
     y = np.asarray(y, float) - np.mean(y)
-    if not f_m:
+    if not f_m and not f_max:
         return y
     n = len(y)
     F = np.fft.rfft(np.concatenate([y, y[::-1]]))  # the even extension: no jump where the FFT wraps around
     f = np.fft.rfftfreq(2 * n, t[1] - t[0])
-    for k in range(1, int(f[-1] / f_m) + 2):
+    for k in range(1, int(f[-1] / f_m) + 2) if f_m else ():
         if keep is None or abs(keep - k * f_m) >= width * f_m:
             F[np.abs(f - k * f_m) < width * f_m] = 0
+    if f_max:
+        F[f > f_max] = 0
     return np.fft.irfft(F, 2 * n)[:n]
 
 

@@ -39,6 +39,8 @@ def flutter(ctx):
             f"not a substitute: the 1-DOF closed form (rollerref.stickslip.linear_stability) of the scene's drive alone "
             f"(no rubber modes, no mode coupling) has steady sliding {'stable' if lin['stable'] else 'UNSTABLE'}, growth "
             f"rate {lin['growth_rate']:+.4g} per unit time at {lin['frequency']:.4g} cycles per unit time"]
+        if ctx.get("cea_error") and ctx.get("run_lines"):
+            return flutter_from_run(ctx, ev)
         if ctx.get("cea_error"):
             return not_run("flutter", f"roller -modes refused the scene: {ctx['cea_error']}", ev)
         return not_run("flutter", "no CEA (modes.csv missing or its run failed)", ev)
@@ -83,6 +85,20 @@ def flutter(ctx):
             else "an upper bound: the sound within 20 % of the pitch has no line at it (its loudest at "
             f"{snd.get('mode_line_hz', 0):.1f} Hz): the mode hardly moves the surface normally (a torsional mode moves it "
             "tangentially)") + "; " + (snd.get("level_note") or ""), "evidence": ev}
+
+
+def flutter_from_run(ctx, ev):
+    """Flutter without a CEA (roller -modes refused the scene: a sheet with its own mass): the scene's own run read for
+    a line that grows (rollerreport.run_lines); squeals when one does."""
+    from . import run_lines
+
+    r, s = ctx["run_lines"], ctx.get("seconds_per_unit", 1.0)
+    grow = [x for x in r["lines"] if x["grows"]]
+    top = (grow or r["lines"] or [None])[0]
+    return {"kind": "flutter", "status": "run", "method": "the scene's own run (no CEA)", "squeals": bool(grow),
+            "frequency_hz": top["frequency"] / s if top else None, "growth_rate_per_s": top["growth_rate"] / s if top else None,
+            "limit_cycle_amplitude": None, "spl_db": None, "spl_note": "the run's sound is the WAV's (its loudest line)",
+            "evidence": [f"no CEA: roller -modes refused the scene: {ctx['cea_error']}"] + run_lines.sentences(r, s) + ev}
 
 
 def run_growth(folder, f, g, columns=("contact_force", "friction_force", "hub_rate")):
@@ -171,6 +187,8 @@ def stick_slip(ctx):
     if v.get("diverges"):
         ev.append(f"CEA: the scene's steady state diverges (real eigenvalue {v['real_growth_rate']:+.4g})")
     cyc = ctx.get("stick_slip_cycle")
+    if cyc is None and (ctx.get("starts") or {}).get("status") == "run":
+        return clamped_starts(ctx, ev)
     if cyc is None:
         return not_run("stick-slip", NEEDS["stick-slip"][1], ev)
     s = ctx.get("seconds_per_unit", 1.0)
@@ -207,6 +225,28 @@ def stick_slip(ctx):
             "periods_used": cyc["periods_used"], "spl_db": snd.get("spl_db"),
             "disturbances": {k: dist.get(k) for k in ("steady", "coexists", "smallest_kick", "largest_settled", "onedof", "file")} if dist.get("status") == "run" else None,
             "spl_note": snd.get("level_note") if snd else None, "evidence": ev}
+
+
+def clamped_starts(ctx, ev):
+    """Stick-slip on a clamped hub: the scene's own start from rest (case 0 of rollerreport.divergent) squeaks when it
+    reaches a stick-slip cycle, a growing oscillation or an irregular vibration of the friction force; the map's
+    divergent cells' starts beside it as evidence."""
+    from . import divergent
+
+    d = ctx["starts"]
+    row = d["rows"][0]
+    s = ctx.get("seconds_per_unit", 1.0)
+    ev = ev + divergent.lines(d, ctx.get("scene", {}))
+    others = [r for r in d["rows"][1:] if r["outcome"] in divergent.SQUEAKS]
+    if others:
+        ev.append(f"{len(others)} of the map's {len(d['rows']) - 1} other divergent cells squeak by their starts")
+    f = float(row["cycle_frequency_hz"]) if row["outcome"] == "stick-slip" else math.nan
+    return {"kind": "stick-slip", "status": "run", "squeals": row["outcome"] in divergent.SQUEAKS,
+            "frequency_hz": f if math.isfinite(f) else None, "growth_rate_per_s": float(row["cycle_growth_rate"]) / s
+            if row["outcome"] == "growing" else None, "limit_cycle_amplitude": float(row["cycle_amplitude"])
+            if row["outcome"] == "stick-slip" else None, "limit_cycle_column": "friction_force", "outcome": row["outcome"],
+            "spl_db": None, "spl_note": "not computed: the starts of a clamped scene are not radiated (the WAV is the seeded "
+            "transient's)", "evidence": ev}
 
 
 def forced_response(folder, scene):

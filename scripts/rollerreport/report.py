@@ -31,7 +31,7 @@ import os
 
 import numpy as np
 
-from . import heard, journal, lines, mechanisms, page
+from . import divergent, heard, journal, lines, mechanisms, page, run_lines
 
 FIXED = {"case", "re", "im", "frequency", "growth_rate", "order", "wave", "error"}
 
@@ -466,15 +466,15 @@ def write(folder, parts=PARTS):
                 r["creep"] = repr(1.0 - num(r.pop("sheet_speed")) / num(scene["surface_speed"]))
             xname = "creep"
         scene_x = num(scene.get(xname, scene.get("creep")), None)  # e.g. "sheet_speed" when that is swept
-        xname, yname, onset, divergent = sweep_map(rows, j("map.png"), scene_x, num(scene.get("friction"), None),
+        xname, yname, onset, diverging = sweep_map(rows, j("map.png"), scene_x, num(scene.get("friction"), None),
                                                    scene.get("name", ""), scene.get("units") == "si")
         out["files"].append("map.png")
         out["friction_onset"] = onset
-        out["divergent"] = [{xname: x, yname: y, "growth_rate": g} for x, y, g in divergent]
+        out["divergent"] = [{xname: x, yname: y, "growth_rate": g} for x, y, g in diverging]
         body += ["## Map", "", "![map](map.png)", "",
                  f"- friction at onset of squeal (scene's {xname}): {onset if onset is not None else 'none in the map'}"]
         body += [f"- **diverges** (a real positive eigenvalue: unstable without a pitch, stick-slip) at {xname} {x:.4g}, "
-                 f"{yname} {y:.4g}: {g:+.4g}" for x, y, g in divergent] + [""]
+                 f"{yname} {y:.4g}: {g:+.4g}" for x, y, g in diverging] + [""]
     else:
         out["missing"].append("sweep.csv")
     snd = None
@@ -532,6 +532,11 @@ def write(folder, parts=PARTS):
                  "at the listener with the frame's time.", ""]
     elif not os.path.exists(j("transient.h5")):
         out["missing"].append("transient.h5")
+    starts = divergent.read(folder)
+    if starts:
+        out["starts"] = {k: x for k, x in starts.items() if k != "rows"}
+        out["files"].append("divergent.csv")
+        body += ["## The starts: the scene's and the divergent cells'", ""] + [f"- {x}" for x in divergent.lines(starts, scene)] + [""]
     # the mechanisms and the verdict (SPEC section 10)
     forced_r = mechanisms.forced_response(folder, scene)
     stuck = steady_stick_nodes(folder)  # the CEA's steady state rolling with a stick zone: the 1-DOF's sliding is not it
@@ -539,11 +544,13 @@ def write(folder, parts=PARTS):
                divergent=out.get("divergent", []), seconds_per_unit=s_unit, stick_slip_cycle=cyc, steady_stuck=stuck,
                stick_slip_sound=snd if heard_cycle else None, onedof=scene.get("onedof"), forced_response=forced_r,
                forced_sound=forced_level(folder, scene, s_unit, forced_r["frequency"]) if forced_r else None,
-               ripple_sweep=_json(j("ripple_sweep.json")), disturbances=_json(j("disturbances.json")))
+               ripple_sweep=_json(j("ripple_sweep.json")), disturbances=_json(j("disturbances.json")), starts=starts)
     if "friction_onset" in out:
         ctx["friction_onset"] = out["friction_onset"]
     if "cea_error" in out:
         ctx["cea_error"] = out["cea_error"]
+        cycle_f = [cyc["frequency"]] if cyc and cyc.get("sustained") else []  # a limit cycle's lines are stick-slip's
+        ctx["run_lines"] = run_lines.read(folder, scene, s=s_unit, also=cycle_f) if scene.get("axle") else None
     out["mechanisms"] = mechanisms.evaluate(ctx)
     out["verdict"], out["verdict_complete"] = mechanisms.verdict_word(out["mechanisms"])
     out["spl_db"] = snd["spl_db"] if snd else None
@@ -568,6 +575,8 @@ def write(folder, parts=PARTS):
         md.append(f"| {m['kind']} | {m['status']} | {dict([(True, 'yes'), (False, 'no')]).get(m['squeals'], '-')} | "
                   f"{f(m['frequency_hz'], '.1f')} | {f(m['growth_rate_per_s'], '.4g')} | {f(m['spl_db'], '.1f')} |")
     md += [""] + body
+    md += [x for m in out["mechanisms"] if m.get("method") for x in (
+        f"## Flutter read from {m['method']}", "", *(f"- {e}" for e in m["evidence"][:2]), "")]
     if cyc is not None:
         md += stick_slip_lines(cyc, s_unit, scene, stuck)
     if snd:

@@ -9,12 +9,16 @@
    degree are given again: the accurate default mesh follows -ts_max_time), dt and duration from the mode's
    frequency (--steps-per-period, --periods); then the same run unseeded (transient_base.csv), so that the report
    fits the seed's own response;
-4. scene.json from the scene (units, Kelvin-Voigt tau, friction, creep, the audio time and length scales, the
+4. the starts (a clamped scene): its start from rest and every divergent cell's of the map (a real positive
+   eigenvalue), one `-sweep -sweep_cases` map on the reduced model (the CEA's mesh; its basis), each run until the
+   CEA's least stable mode has died out and classified (rollerreport.divergent);
+5. scene.json from the scene (units, Kelvin-Voigt tau, friction, creep, the audio time and length scales, the
    listener);
-5. the report (rollerreport.report: report.md, report.json, report.html, map.png, squeal.wav, spectrogram.png,
+6. the report (rollerreport.report: report.md, report.json, report.html, map.png, squeal.wav, spectrogram.png,
    vibration.gif), with every step's command (commands.json) so that each can be run again.
 
-Each part (cea, map, transient, transient_base, sound, animation) is journalled (journal.json: its inputs' hash, its
+Each part (cea, map, transient, transient_base, basis, divergent_runs, divergent, sound, animation; an axle scene's own)
+is journalled (journal.json: its inputs' hash, its
 outputs, its cost): a re-run reuses a part whose inputs are unchanged and whose outputs are there, so a run after a
 crash, or with another map, does not redo the rest; --parts runs some alone, --fresh redoes all.
 
@@ -141,6 +145,14 @@ def leading_row(path):
     rows = report.read_rows(path)
     mode = report.leading_mode(rows)
     return rows.index(mode), mode
+
+
+def modes_parameter(modes_h5, name):
+    """A value of the CEA's /parameters (modes.h5)."""
+    import h5py
+
+    with h5py.File(modes_h5, "r") as f:
+        return float(np.asarray(f["parameters"].attrs[name]).ravel()[0])
 
 
 def mesh_options(modes_h5, extra):
@@ -306,12 +318,13 @@ OUTPUTS = ("modes.csv", "modes.h5", "modes.xmf", "steady.csv", "sweep.csv", "tra
            "vibration.gif", "vibration.mp4", "mesh.h5", "mesh.xmf", "stickslip.h5", "stickslip.xmf", "basis.h5", "propensity_basis.h5", "propensity_cases.csv",
            "propensity_table.json", "propensity_runs.csv", "propensity_cea.csv", "propensity.json", "propensity.csv", "propensity.png",
            "ripple_sweep_cases.csv", "ripple_sweep_runs.csv", "ripple_sweep.csv", "ripple_sweep.json", "ripple_sweep.png",
-           "disturbances_cases.csv", "disturbances_runs.csv", "disturbances.csv", "disturbances.json", "disturbances.png")
+           "disturbances_cases.csv", "disturbances_runs.csv", "disturbances.csv", "disturbances.json", "disturbances.png",
+           "divergent_cases.csv", "divergent_runs.csv", "divergent.csv", "divergent.json")
 # PETSc's message for PETSC_ERR_SUP: what roller refuses as not carried (e.g. -modes with -rubber maxwell or
 # -sheet_mass): the part is "not run" with roller's reason, and the driver does not count it as failed
 REFUSED = "No support for this operation"
 ROLLER_PARTS = ("cea", "map", "transient", "transient_base", "mesh", "basis", "stickslip", "forced", "ripple_sweep_runs",
-                "ripple_sweep", "disturbances_runs", "disturbances", "propensity_table",
+                "ripple_sweep", "disturbances_runs", "disturbances", "divergent_runs", "divergent", "propensity_table",
                 "propensity_basis", "propensity_cea", "propensity_runs", "propensity")
 
 
@@ -361,6 +374,9 @@ def parse(argv):
     p.add_argument("--disturbance-periods", type=float, default=40, help="axle scenes: kicks of growing size about the "
                    "steady state (rollerreport.disturbances), each run this many periods of the drive's mode after the kick, "
                    "one -sweep map on the reduced model (default 40, 0: none)")
+    p.add_argument("--starts", type=int, choices=(0, 1), default=1, help="clamped scenes: the scene's start from rest and "
+                   "its map's divergent cells' run on the reduced model until the CEA's least stable mode has died out, and "
+                   "classified (rollerreport.divergent; default 1, 0: none)")
     p.add_argument("--forced-options", default="", help="axle scenes: roller options of the forced run besides the "
                    "ripple, e.g. '-theta_start 0 -drive_ramp 0 -nip_ramp 60' (a start sliding)")
     p.add_argument("--model", choices=("full", "rom"), default="full", help="axle scenes: the heard runs (the start from "
@@ -424,6 +440,7 @@ def main(argv=None):
                      inputs=[j("modes.h5")]):
             steps.run("transient_base", *base_command(seeded), outputs=["transient_base.csv", "surface_base.csv", "transient_base.h5",
                                                                         "transient_base.xmf"], inputs=[j("modes.h5")])
+    divergent_part(steps, base, opts, scene, a, extra, out)
     return report_step(steps, scene, out, src, only)
 
 
@@ -567,6 +584,53 @@ def disturbances_part(steps, base, opts, scene, a, extra, out, inputs):
     steps.journal = journal.Journal(out)
     steps.journal.run("disturbances", digest, ["disturbances.json", "disturbances.csv", "disturbances.png"], go,
                       what=f"kicks of growing size about the steady state ({len(p['kicks'])} runs; docs/squeal.md 9.5)")
+
+
+def divergent_part(steps, base, opts, scene, a, extra, out):
+    """A clamped scene's starts (rollerreport.divergent): its own start from rest and its map's divergent cells', one
+    -sweep -sweep_cases map on the reduced model (the CEA's mesh, its basis: part basis) and --ranks, each run until the
+    CEA's least stable oscillating mode has died out (part divergent_runs), then each read (part divergent); none with
+    --starts 0 or without the scene's -ts_max_time."""
+    from . import divergent
+
+    j = lambda f: os.path.join(out, f)  # noqa: E731
+    rows = report.read_rows(j("modes.csv")) if os.path.exists(j("modes.csv")) else []
+    osc = [report.num(r["growth_rate"]) for r in rows if report.num(r.get("im")) > 0]
+    decay = -max(osc) if osc and max(osc) < 0 else None
+    p = divergent.plan(opts, scene, j("sweep.csv"), decay) if a.starts else None
+    if p is None:
+        return
+    divergent.write_cases(out, p)
+    os.makedirs(j("divergent"), exist_ok=True)
+    mesh = mesh_options(j("modes.h5"), extra) if os.path.exists(j("modes.h5")) else []
+    # the scene's own step (the CEA's /parameters dt: from the scene's -ts_max_time), not the longer run's (whose
+    # accuracy rule would shorten it, and raise the reduced model's cutoff with it)
+    step = ["-ts_dt", repr(modes_parameter(j("modes.h5"), "dt"))] if mesh and "-ts_dt" not in extra and "ts_dt" not in opts else []
+    basis_part(steps, base + mesh + step + ["-ts_max_time", repr(p["t_end"])], extra, j("basis.h5"), "basis")
+    # no more ranks than cases: a -sweep rank without a case finds the command line's options unused and stops with
+    # an error of its own (roller's RollerOptionsCheck after RollerSweep, src/app/main.c), though the map is written
+    ranks = min(a.ranks, len(p["cases"]))
+    steps.run("divergent_runs", divergent.command(base + mesh + step, extra, out, p, ranks, a.mpiexec, j("basis.h5")),
+              f"the scene's start from rest and its map's {len(p['cases']) - 1} other divergent cells' (a real positive "
+              f"eigenvalue), each run to t = {p['t_end']:.5g} on the reduced model (docs/squeal.md 9.6)",
+              outputs=[divergent.RUNS], inputs=[j(divergent.CASES), j("basis.h5")], ranks=ranks)
+    if steps.only is not None and "divergent" not in steps.only:
+        return
+    src = [os.path.join(os.path.dirname(__file__), f) for f in ("divergent.py", "cycle.py", "propensity_fe.py", "lines.py")]
+    digest = journal.inputs_hash({"part": "divergent", "plan": p}, src + [j(divergent.RUNS), j("steady.csv"), j("transient.h5")])
+
+    def go():
+        if not os.path.exists(j(divergent.RUNS)):
+            return False, {"error": "the starts' map is missing (logs/divergent_runs.log)"}
+        from .lines import mesh_passing
+
+        f_m = mesh_passing(j("transient.h5")) if os.path.exists(j("transient.h5")) else None
+        r = divergent.classify(out, p, scene.get("seconds_per_unit", 1.0), f_m)
+        return True, {"result": {"scene": r["scene"], "squeak": r["squeak"]}}
+
+    steps.journal = journal.Journal(out)
+    steps.journal.run("divergent", digest, ["divergent.json", "divergent.csv"], go,
+                      what=f"the starts read: stick-slip, growing, chatter or settled ({len(p['cases'])} runs; docs/squeal.md 9.6)")
 
 
 def basis_part(steps, base, extra, path, name):
