@@ -12,8 +12,8 @@ its last half (after the press) on the friction force:
 
 - stick-slip: rollerreport.cycle.detect with stick_nodes finds a sustained cycle that sticks and slips whole in every
   period;
-- growing: the friction force's oscillation, a clean one of at least GROWING_SIZE of its mean, still grows (as a
-  propensity case's, rollerreport.propensity_fe);
+- growing: the friction force's oscillation, a clean one of at least 1 % of its mean, still grows
+  (rollerreport.propensity_fe.grows, as a propensity case's hub rate);
 - irregular: the friction force in the audible band (below 20 kHz and an eighth of the step's rate: not the reduced
   contact's ringing near a quarter of it), less the mesh-passing lines (rollerreport.lines.notch: the
   discretization's), keeps a fluctuation of at least IRREGULAR of its mean over the window's last quarter, not DECAYED against its first quarter,
@@ -35,7 +35,6 @@ from . import cycle, propensity_fe, tables
 
 CASES, RUNS, SERIES = "divergent_cases.csv", "divergent_runs.csv", os.path.join("divergent", "series.csv")
 CHATTER = 1.0 / 3  # the fraction of steps whose stick count changes above which the patch chatters
-GROWING_SIZE = 0.01  # a growing oscillation's half peak-to-peak, at least this fraction of the mean friction force
 NAMES = {"sheet_speed", "friction"}  # the map's swept options a case sets (rollerreport.run.map_command)
 IRREGULAR = 0.01  # the last quarter's standard deviation of the friction force, against its mean
 DECAYED = 0.5  # ... and against the first quarter's: below this fraction, the fluctuation is dying out
@@ -102,10 +101,8 @@ def command(base, extra, folder, p, ranks, mpiexec, basis):
 
 
 def read_series(path):
-    """(t, friction_force, contact_force, stick_nodes) of a case's series, row 0 (before the first contact solve) left out."""
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))[1:]
-    return tuple(np.array([float(r[c]) for r in rows]) for c in ("t", "friction_force", "contact_force", "stick_nodes"))
+    """(t, friction_force, contact_force, stick_nodes) of a case's series (propensity_fe.read_series)."""
+    return propensity_fe.read_series(path, ("t", "friction_force", "contact_force", "stick_nodes"))
 
 
 def verdict(series, t_min, f_m=None, seconds_per_unit=1.0):
@@ -125,17 +122,14 @@ def verdict(series, t_min, f_m=None, seconds_per_unit=1.0):
     fluct = float(np.std(qm)) / max(abs(mean), 1e-300)
     f_line, a_line = math.nan, math.nan
     if len(qm) > 8:  # the fluctuation's loudest line over the window (Hann), its amplitude against the mean
-        y = vib
-        F = np.abs(np.fft.rfft(y * np.hanning(len(y)))) * 4.0 / len(y)
-        fr = np.fft.rfftfreq(len(y), (t[m][-1] - t[m][0]) / (len(y) - 1))
+        F = np.abs(np.fft.rfft(vib * np.hanning(len(vib)))) * 4.0 / len(vib)
+        fr = np.fft.rfftfreq(len(vib), (t[m][-1] - t[m][0]) / (len(vib) - 1))
         k = 1 + int(np.argmax(F[1:])) if len(F) > 1 else 0
         f_line, a_line = float(fr[k]), float(F[k]) / max(abs(mean), 1e-300)
     quarter = len(qm) // 4
     first, last = (float(np.std(vib[:quarter])), float(np.std(vib[-quarter:]))) if quarter > 1 else (0.0, 0.0)
     sustained = last / max(abs(mean), 1e-300) >= IRREGULAR and last >= DECAYED * first
-    grows = (math.isfinite(cyc["growth_rate"]) and cyc["growth_rate"] * cyc["period"] > propensity_fe.GROWING_PER_PERIOD
-             and cyc.get("period_spread", 1.0) < cycle.PERIOD_SPREAD and cyc["amplitude"] > GROWING_SIZE * abs(cyc["level"]))
-    outcome = ("stick-slip" if cyc["stick_slip"] else "growing" if grows else "irregular" if sustained else
+    outcome = ("stick-slip" if cyc["stick_slip"] else "growing" if propensity_fe.grows(cyc) else "irregular" if sustained else
                "chatter" if changes > CHATTER else "settled")
     return outcome, {"cycle": cyc, "friction_ratio": abs(mean) / max(float(np.mean(pm)), 1e-300), "stick_changes": changes,
                      "stick_mean": float(np.mean(sm)), "stick_min": int(np.min(sm)), "stick_max": int(np.max(sm)),

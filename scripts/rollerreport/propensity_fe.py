@@ -86,11 +86,19 @@ def cea_verdict(rows):
     return kind, g, w
 
 
-def read_series(path):
-    """A case's series: (t, hub_rate, stick_nodes), row 0 (the state before the first contact solve) left out."""
+def read_series(path, columns=("t", "hub_rate", "stick_nodes")):
+    """A case's series: its columns as arrays, row 0 (the state before the first contact solve) left out."""
     with open(path, newline="") as f:
         rows = list(csv.DictReader(f))[1:]
-    return tuple(np.array([float(r[c]) for r in rows]) for c in ("t", "hub_rate", "stick_nodes"))
+    return tuple(np.array([float(r[c]) for r in rows]) for c in columns)
+
+
+def grows(cyc):
+    """A cycle.detect result that still grows: a clean oscillation (its periods within cycle.PERIOD_SPREAD) of a visible
+    size (GROWING_SIZE of the series' mean: not the node passing's ripple of a settled run) whose envelope grows by more
+    than GROWING_PER_PERIOD a period."""
+    return bool(math.isfinite(cyc["growth_rate"]) and cyc["growth_rate"] * cyc["period"] > GROWING_PER_PERIOD
+                and cyc.get("period_spread", 1.0) < cycle.PERIOD_SPREAD and cyc["amplitude"] > GROWING_SIZE * abs(cyc["level"]))
 
 
 def transient_verdict(path, t_min, series=None):
@@ -98,11 +106,7 @@ def transient_verdict(path, t_min, series=None):
     cycle.detect dict)."""
     t, hub, stick = series if series is not None else read_series(path)
     cyc = cycle.detect(t, hub, stick, t_min=t_min)
-    # growing: a clean oscillation (its periods within cycle.PERIOD_SPREAD) of a visible size (GROWING_SIZE of the hub's
-    # mean rate: not the node passing's ripple of a settled run) whose envelope still grows
-    grows = (math.isfinite(cyc["growth_rate"]) and cyc["growth_rate"] * cyc["period"] > GROWING_PER_PERIOD
-             and cyc.get("period_spread", 1.0) < cycle.PERIOD_SPREAD and cyc["amplitude"] > GROWING_SIZE * abs(cyc["level"]))
-    return ("stick-slip" if cyc["stick_slip"] else "growing" if grows else "settled"), cyc
+    return ("stick-slip" if cyc["stick_slip"] else "growing" if grows(cyc) else "settled"), cyc
 
 
 def classify(folder, opts, cases, with_cea):

@@ -24,23 +24,24 @@ AUDIBLE = 20000.0  # Hz: the lines followed lie below
 COLUMNS = ("contact_force", "friction_force", "hub_rate", "axle_y")
 
 
-def _amplitude(t, y, f):
-    """The largest Hann amplitude of y within the band of f (at least one bin either side)."""
+def spectrum(t, y):
+    """(frequencies, amplitudes) of y less its mean, Hann-windowed, zero padded 4 times."""
     y = y - np.mean(y)
     n = len(y)
-    F = np.abs(np.fft.rfft(y * np.hanning(n), 4 * n)) * 4.0 / n
-    fr = np.fft.rfftfreq(4 * n, (t[-1] - t[0]) / (n - 1))
-    band = np.abs(fr - f) <= max(BAND * f, 1.0 / (t[-1] - t[0]))
+    return np.fft.rfftfreq(4 * n, (t[-1] - t[0]) / (n - 1)), np.abs(np.fft.rfft(y * np.hanning(n), 4 * n)) * 4.0 / n
+
+
+def _amplitude(fr, F, f, span):
+    """The largest amplitude of a window's spectrum (fr, F; the window `span` long) within the band of f (at least one
+    bin either side)."""
+    band = np.abs(fr - f) <= max(BAND * f, 1.0 / span)
     return float(F[band].max()) if band.any() else 0.0
 
 
 def peaks(t, y, fmin, fmax, exclude, near, count=PEAKS):
     """The `count` loudest maxima of y's spectrum in [fmin, fmax] (each the largest within `near` of itself), none whose
     band (BAND f) comes within `near` of an excluded frequency's, none within BAND of a louder one: [frequency]."""
-    y = y - np.mean(y)
-    n = len(y)
-    F = np.abs(np.fft.rfft(y * np.hanning(n), 4 * n))
-    fr = np.fft.rfftfreq(4 * n, (t[-1] - t[0]) / (n - 1))
+    fr, F = spectrum(t, y)
     # a line is the largest within `near` of itself (the skirt of a louder or a growing line, whose own local maxima are
     # the window's ripples, is not a line of its own)
     h = max(1, int(round(near / (fr[1] - fr[0]))))
@@ -77,15 +78,16 @@ def read(folder, scene, name="stickslip.csv", s=1.0, also=()):
     exclude = [k * float(f) for f in [rip] + list(also) if f and math.isfinite(f) for k in range(1, HARMONICS + 1)]
     edges = t0 + win * np.arange(WINDOWS + 1)
     mids = 0.5 * (edges[:-1] + edges[1:])
+    cut = [(t >= a) & (t < b) for a, b in zip(edges[:-1], edges[1:])]
     lines = []
     for c in COLUMNS:
         if c not in d or not np.any(d[c][m] != d[c][m][0]):
             continue
+        windows = [(spectrum(t[w], d[c][w]), t[w][-1] - t[w][0]) for w in cut]  # each window's spectrum, once a column
         # in the audible band and below a quarter of the step's rate (the contact's step-scale ringing is no sound);
         # a band that a ripple harmonic's main lobe in a window reaches (its 2 bins, the band's 1 more) is the ripple's
         for f in peaks(t[m], d[c][m], MIN_PERIODS / win, min(AUDIBLE * s, 0.25 / (t[1] - t[0])), exclude, 3.0 / win):
-            cut = [(t >= a) & (t < b) for a, b in zip(edges[:-1], edges[1:])]
-            amps = np.array([_amplitude(t[w], d[c][w], f) for w in cut])
+            amps = np.array([_amplitude(fr, F, f, span) for (fr, F), span in windows])
             if not amps.max() > 0:
                 continue
             use = amps > FLOOR * amps.max()
