@@ -11,6 +11,7 @@ sheet pressed in by t = 0.5 (-obstacle_speed 0.05) and run to t = 4; the rows ar
     the killed run's) and ends with the uninterrupted map's CSV; a run with another scene refuses the journals and
     leaves them; no journal remains after a complete map;
   - the job array's way: slices 0,2 and 1,2 merged by scripts/rollertools/merge_sweep.py are the map;
+  - one case on 2 ranks (a sub-communicator without a case) exits 0 with its row (it stopped with an error before);
   - a case whose run fails (the VI contact solver held to one Newton step, an error at the first step) is a row with
     status failed and NaN results, and the map goes on;
   - the physics of Coulomb friction: where the whole contact slips (stick fraction < 0.05) the mean friction force
@@ -85,6 +86,13 @@ same = all(without_wall("table.csv")[1 + i].split(",", 1)[1] == without_wall("np
 c.check(len(tab) == 3 and list(tab[0].keys()) == COLUMNS and same, "-sweep_cases: the table's 3 cases, each row = the product map's row of its values (but for case and wall_time)")
 with open("single.csv", "rb") as f1, open("series.case1.csv", "rb") as f2:
     c.check(f1.read() == f2.read(), f"-sweep_monitor_csv: case 1's series.case1.csv = the single run's -monitor_csv (mu {table[1][0]}, sheet_speed {table[1][1]}), byte for byte")
+# fewer cases than sub-communicators: the rank without a case takes rank 0's use of the options (a rank that solved
+# nothing used none of them, and the options check would stop it alone after the map was written)
+with open("one.csv", "w") as f:
+    f.write("case,friction,sheet_speed\n" + f"0,{table[1][0]!r},{table[1][1]!r}\n")
+one = run(SCENE + ["-sweep", "one_case.csv", "-sweep_cases", "one.csv"], nproc=2, check=False)
+c.check(one[0] == 0 and os.path.exists("one_case.csv") and without_wall("one_case.csv")[1].split(",", 1)[1] == without_wall("table.csv")[2].split(",", 1)[1],
+        f"one case on 2 ranks: exit {one[0]} ({(one[1] + one[2]).strip()[-200:]}), its row = the table's of the same values")
 with open("misspelt.csv", "w") as f:
     f.write("friction,sheet_sped\n0.3,0.05\n")
 bad = run(SCENE + ["-sweep", "misspelt.csv.out", "-sweep_cases", "misspelt.csv"], check=False)

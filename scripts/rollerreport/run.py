@@ -607,13 +607,10 @@ def divergent_part(steps, base, opts, scene, a, extra, out):
     # accuracy rule would shorten it, and raise the reduced model's cutoff with it)
     step = ["-ts_dt", repr(modes_parameter(j("modes.h5"), "dt"))] if mesh and "-ts_dt" not in extra and "ts_dt" not in opts else []
     basis_part(steps, base + mesh + step + ["-ts_max_time", repr(p["t_end"])], extra, j("basis.h5"), "basis")
-    # no more ranks than cases: a -sweep rank without a case finds the command line's options unused and stops with
-    # an error of its own (roller's RollerOptionsCheck after RollerSweep, src/app/main.c), though the map is written
-    ranks = min(a.ranks, len(p["cases"]))
-    steps.run("divergent_runs", divergent.command(base + mesh + step, extra, out, p, ranks, a.mpiexec, j("basis.h5")),
+    steps.run("divergent_runs", divergent.command(base + mesh + step, extra, out, p, a.ranks, a.mpiexec, j("basis.h5")),
               f"the scene's start from rest and its map's {len(p['cases']) - 1} other divergent cells' (a real positive "
               f"eigenvalue), each run to t = {p['t_end']:.5g} on the reduced model (docs/squeal.md 9.6)",
-              outputs=[divergent.RUNS], inputs=[j(divergent.CASES), j("basis.h5")], ranks=ranks)
+              outputs=[divergent.RUNS], inputs=[j(divergent.CASES), j("basis.h5")], ranks=a.ranks)
     if steps.only is not None and "divergent" not in steps.only:
         return
     src = [os.path.join(os.path.dirname(__file__), f) for f in ("divergent.py", "cycle.py", "propensity_fe.py", "lines.py")]

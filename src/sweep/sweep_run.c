@@ -216,6 +216,53 @@ static PetscErrorCode WaitIdle(MPI_Comm comm)
   PetscFunctionReturn(0);
 }
 
+/* The options' use as rank 0's: a rank whose sub-communicator solved no case (fewer cases than sub-communicators) used
+   none of the scene's options, and main's check (RollerOptionsCheck) would refuse them there alone: the map written,
+   that rank's exit an error. Every option rank 0 used (not in its list of those left) is marked used on every rank, so
+   that each rank's list of unused options is at most rank 0's. */
+static PetscErrorCode ShareOptionsUse(MPI_Comm comm)
+{
+  PetscMPIInt rank;
+  PetscInt    n, len = 0;
+  char      **names, **values, *left = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
+  if (!rank) {
+    for (PetscInt i = 0; i < n; ++i) {
+      size_t l;
+
+      PetscCall(PetscStrlen(names[i], &l));
+      len += (PetscInt)l + 2;
+    }
+  }
+  PetscCallMPI(MPI_Bcast(&len, 1, MPIU_INT, 0, comm));
+  PetscCall(PetscCalloc1(len + 2, &left));
+  if (!rank) { /* " name1 name2 ... ": each name between blanks */
+    left[0] = ' ';
+    for (PetscInt i = 0; i < n; ++i) {
+      PetscCall(PetscStrlcat(left, names[i], len + 2));
+      PetscCall(PetscStrlcat(left, " ", len + 2));
+    }
+  }
+  PetscCallMPI(MPI_Bcast(left, (PetscMPIInt)(len + 2), MPI_CHAR, 0, comm));
+  for (PetscInt i = 0; rank && i < n; ++i) {
+    char      item[256], option[256];
+    char     *found;
+    PetscBool has;
+
+    PetscCall(PetscSNPrintf(item, sizeof(item), " %s ", names[i]));
+    PetscCall(PetscStrstr(left, item, &found));
+    if (found) continue; /* unused on rank 0 too: the check names it */
+    PetscCall(PetscSNPrintf(option, sizeof(option), "-%s", names[i]));
+    PetscCall(PetscOptionsHasName(NULL, NULL, option, &has)); /* a query marks it used */
+  }
+  PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
+  PetscCall(PetscFree(left));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode RollerSweep(MPI_Comm comm)
 {
   RollerSweepPlan    plan;
@@ -264,6 +311,7 @@ PetscErrorCode RollerSweep(MPI_Comm comm)
   if (!plan.quiet && complete)
     PetscCall(
       PetscPrintf(comm, "sweep: %" PetscInt_FMT " cases (slice %" PetscInt_FMT ",%" PetscInt_FMT "; %" PetscInt_FMT " from the journals) on %" PetscInt_FMT " subcomms -> %s, %.2f s\n", nrun, plan.slice[0], plan.slice[1], ndone, plan.nsub, plan.csv, MPI_Wtime() - t0));
+  PetscCall(ShareOptionsUse(comm));
   PetscCall(PetscFree(done));
   PetscCall(PetscSubcommDestroy(&psub));
   PetscCall(RollerSweepRowsDestroy(&rows));
