@@ -8,13 +8,39 @@
 #include "rom/rom.h"
 #include "model/axle.h"
 
-/* The modes: nev from -rom_modes, or from the cutoff by the two-dimensional Weyl law N(w) ~ w^2 fitted to a first
-   solve, repeated until the last converged eigenvalue passes w_cut^2. */
+/* The first guess of the number of modes below w: the two-dimensional Weyl law of the elastic body,
+   N(w) = A w^2 / (4 pi) (1/c_s^2 + 1/c_p^2) (A the area = 1^T M 1 / 2 of the unit-density mass: the free dofs'),
+   raised by 15 % and 10 modes for its boundary terms (the free rim adds more modes than the clamped shaft removes; the
+   printer: about 230 by the law, 243 found). */
+static PetscErrorCode WeylCount(Roller ctx, PetscReal w, PetscInt *nev)
+{
+  const PetscReal mu = ctx->material.mu, lp2 = ctx->material.lambda + 2.0 * mu, rho = ctx->material.density;
+  Vec             one, Mone;
+  PetscScalar     area;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatCreateVecs(ctx->ops.M, &one, &Mone));
+  PetscCall(VecSet(one, 1.0));
+  PetscCall(MatMult(ctx->ops.M, one, Mone));
+  PetscCall(VecSum(Mone, &area));
+  PetscCall(VecDestroy(&one));
+  PetscCall(VecDestroy(&Mone));
+  area *= 0.5;
+  *nev = (PetscInt)PetscCeilReal(1.15 * PetscRealPart(area) * w * w / (4.0 * PETSC_PI) * (rho / mu + rho / lp2)) + 10;
+  PetscFunctionReturn(0);
+}
+
+/* The modes: nev from -rom_modes, or from the cutoff by the Weyl law (WeylCount), repeated with the law fitted to the
+   last solve (N(w) ~ w^2) until the last converged eigenvalue passes w_cut^2. Krylov-Schur's projected dimension is
+   at most 120 (-rom_eps_mpd to change): with hundreds of modes the default (ncv = 2 nev, mpd = ncv) spends most of the
+   solve orthogonalizing against the whole basis (the printer's 243 modes with this first guess: the set-up's CPU 66 s
+   -> 38 s, docs/performance.md). */
 static PetscErrorCode ModesSolve(Roller ctx, RollerRom rom, EPS *eps, PetscInt *nkeep)
 {
   ST              st;
   KSP             ksp;
-  PetscInt        nev = rom->modes_req > 0 ? rom->modes_req : 40, nconv, N;
+  PetscInt        nev = rom->modes_req, nconv, N, mpd = PETSC_DEFAULT;
+  PetscBool       mpd_set;
   PetscReal       lam_last;
   const PetscReal lam_cut = ctx->material.density * rom->w_cut * rom->w_cut; /* ops.M is the unit density's: lambda = rho w^2 */
 
@@ -33,9 +59,11 @@ static PetscErrorCode ModesSolve(Roller ctx, RollerRom rom, EPS *eps, PetscInt *
   PetscCall(STGetKSP(st, &ksp));
   PetscCall(RollerDirectSolverDefaults(ksp, PCCHOLESKY));
   PetscCall(EPSSetFromOptions(*eps));
+  PetscCall(PetscOptionsGetInt(NULL, "rom_", "-eps_mpd", &mpd, &mpd_set));
+  if (nev <= 0) PetscCall(WeylCount(ctx, rom->w_cut, &nev));
   for (PetscInt pass = 0;; ++pass) {
     nev = PetscMin(nev, N - 1);
-    PetscCall(EPSSetDimensions(*eps, nev, PETSC_DEFAULT, PETSC_DEFAULT));
+    PetscCall(EPSSetDimensions(*eps, nev, PETSC_DEFAULT, mpd_set ? mpd : nev > 120 ? 120 : PETSC_DEFAULT));
     PetscCall(EPSSolve(*eps));
     PetscCall(EPSGetConverged(*eps, &nconv));
     PetscCheck(nconv > 0, ctx->comm, PETSC_ERR_CONV_FAILED, "-rom: no mode of the clamped roller converged (asked for %" PetscInt_FMT ")", nev);
