@@ -10,10 +10,9 @@ import shutil
 import struct
 import subprocess
 import sys
-import tempfile
 
 import rollerreport_data as D
-from rollertest import Checker, chromium_probe
+from rollertest import Checker, chromium_probe, scratch
 
 def width(path):
     with open(path, "rb") as f:
@@ -28,7 +27,7 @@ def width(path):
 c = Checker("report_page")
 browser = shutil.which("chromium") or shutil.which("chromium-browser")
 c.check(browser is not None, f"chromium on the PATH ({browser}; scripts/install-deps.sh installs Debian's chromium)")
-d = tempfile.mkdtemp(prefix="report_page_")
+d = scratch("report_page_")
 D.make(d, t_end=60.0)
 r = subprocess.run([sys.executable, "-m", "rollerreport", d], capture_output=True, text=True)
 c.check(r.returncode == 0 and os.path.exists(os.path.join(d, "report.html")), f"python3 -m rollerreport writes report.html ({r.stderr.strip()[-300:]})")

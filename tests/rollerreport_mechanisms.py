@@ -28,12 +28,11 @@ import math
 import os
 import subprocess
 import sys
-import tempfile
 import wave
 
 import numpy as np
 
-from rollertest import SOURCE, Checker
+from rollertest import SOURCE, Checker, scratch
 from rollerreport import cycle, mechanisms, onedof, propensity, radiation, run, run_lines  # noqa: E402
 from rollerref import stickslip  # noqa: E402
 
@@ -59,7 +58,7 @@ rate = np.interp(t, res.t, res.u[:, 0])
 stuck = np.interp(t, res.t, (res.mode[:, 0] == 0).astype(float)) > 0.5
 force = np.interp(t, res.t, res.F[:, 0])
 ripple = 0.03 * ref["rate_amplitude"] * np.sin(2 * math.pi * 0.47 * t)  # the node passing's ripple
-d = tempfile.mkdtemp(prefix="rollerreport_mech_")
+d = scratch("rollerreport_mech_")
 cols = {"step": np.arange(len(t) + 1), "t": np.concatenate([[0.0], t]), "friction_force": np.concatenate([[0.0], -force]),
         "stick_nodes": np.concatenate([[0], np.where(stuck, 11, 0)]), "slip_nodes": np.concatenate([[11], np.where(stuck, 0, 11)]),
         "hub_rate": np.concatenate([[0.0], rate + ripple]), "R": 0.0 * np.concatenate([[0.0], t])}
@@ -176,7 +175,7 @@ f_r, A_r = 0.03, 2.9e-4
 hub = w + A_r * np.sin(2 * math.pi * f_r * t + 0.4) + 3e-4 * np.exp(-0.0079 * t) * np.sin(2 * math.pi * 0.0503 * t)  # 1-DOF's
 amp, ph = cycle.lock_in(t[t > 100], hub[t > 100], f_r, free=[(0.0503, -0.0079)])
 c.check(abs(amp / A_r - 1) < 0.005 and abs(ph - 0.4) < 0.01, f"lock-in at the ripple: {amp:.5g} ({A_r}), phase {ph:.4f} (0.4)")
-df = tempfile.mkdtemp(prefix="rollerreport_forced_")
+df = scratch("rollerreport_forced_")
 write_csv(os.path.join(df, "forced.csv"), {"step": np.arange(len(t)), "t": t, "hub_rate": hub, "stick_nodes": 0 * t})
 scf = dict(sc, ripple={"amplitude": 1e-3, "frequency": f_r, "one_dof": {"rate_amplitude": A_r / 1.01}})
 json.dump(scf, open(os.path.join(df, "scene.json"), "w"))
@@ -201,7 +200,7 @@ kin = dict(opts, sheet_speed="0.99", omega="2.0", r_outer="0.5")
 hi = propensity.case_options(kin, dict(mid_sample, surface_speed_m_per_s=0.36))
 c.check(abs(hi["omega"] / 2.0 - 0.36 / math.sqrt(0.12 * 0.36)) < 1e-12 and abs(hi["sheet_speed"] / hi["omega"] - 0.99 / 2.0) < 1e-12,
         f"a kinematic sheet's speed follows the surface speed, the creep kept: omega {hi['omega']:.5g}, sheet_speed {hi['sheet_speed']:.5g}")
-dp = tempfile.mkdtemp(prefix="rollerreport_prop_")
+dp = scratch("rollerreport_prop_")
 pr = propensity.run(opts, dp, n=8, seed=3)
 rows = open(os.path.join(dp, "propensity.csv")).read().splitlines()
 c.check(pr["cases"] == 8 and len(rows) == 9 and pr["fraction"] == pr["squeaking"] / 8 and pr["confidence_95"][0] <= pr["fraction"] <= pr["confidence_95"][1]
@@ -213,7 +212,7 @@ c.check(pr["cases"] == 8 and len(rows) == 9 and pr["fraction"] == pr["squeaking"
 # oscillating CEA mode (flutter), case 2 decaying with a stable CEA (quiet), case 3 a failed run
 from rollerreport import propensity_fe  # noqa: E402
 
-dq = tempfile.mkdtemp(prefix="rollerreport_prop_fe_")
+dq = scratch("rollerreport_prop_fe_")
 cases = propensity.sample(opts, 4, 5)
 names = propensity_fe.write_cases(dq, cases)
 os.makedirs(os.path.join(dq, "propensity"))
@@ -243,7 +242,7 @@ c.check((first["class"], first["mechanism"], first["squeaks"]) == ("forced stick
 # motor's rate, a stick-slip cycle from it (stuck at the bottom of every period, slipping whole otherwise)
 from rollerreport import disturbances  # noqa: E402
 
-dk = tempfile.mkdtemp(prefix="rollerreport_kicks_")
+dk = scratch("rollerreport_kicks_")
 plan = disturbances.plan(opts, periods=12)
 disturbances.write_cases(dk, plan)
 os.makedirs(os.path.join(dk, "disturbances"))
@@ -268,7 +267,7 @@ c.check(ks["steady"] == "settled" and ks["coexists"] and ks["smallest_kick"]["ki
 
 # the CEA's unstable mode against the scene's own run (mechanisms.run_growth): a line at f growing at g is confirmed,
 # the same line steady (beside a louder steady line elsewhere) is not
-dg = tempfile.mkdtemp(prefix="run_growth_")
+dg = scratch("run_growth_")
 tt = np.arange(0, 0.5, 5e-6)
 F0, G0 = 1158.6, 64.7
 for grow, want in ((G0, True), (0.0, False)):
@@ -294,7 +293,7 @@ for grow, want in ((G0, True), (0.0, False)):
 # holding), stick-slip (a saw-tooth, stuck then slipping whole every period), growing, settled
 from rollerreport import divergent  # noqa: E402
 
-dd = tempfile.mkdtemp(prefix="rollerreport_starts_")
+dd = scratch("rollerreport_starts_")
 V0, MU0 = 0.2356, 0.8
 cells = [(V0, MU0, 3537.0), (0.0, 0.8, 11198.0), (V0, 0.4, 8054.0), (0.1, 0.4, 2000.0), (0.0, 0.4, -94.0)]
 with open(os.path.join(dd, "sweep.csv"), "w") as f:

@@ -22,14 +22,13 @@ import os
 import shutil
 import subprocess
 import sys
-import tempfile
 import wave
 
 import numpy as np
 from scipy.special import h1vp, hankel1
 
 import rollerreport_data as D
-from rollertest import SOURCE, Checker
+from rollertest import SOURCE, Checker, scratch
 from rollerreport import lines, mechanisms, radiation, report, run, sound  # noqa: E402
 
 c = Checker("rollerreport_unit")
@@ -92,7 +91,7 @@ aw = radiation.a_weighting_db([10**1.5, 100.0, 1000.0, 10000.0])  # the exact fr
 c.check(np.allclose(aw, [-39.4, -19.1, 0.0, -2.5], atol=0.06), f"A-weighting at 31.6, 100, 1k, 10k Hz: {np.round(aw, 2)} (IEC 61672: -39.4, -19.1, 0, -2.5)")
 
 # ---- a squealing synthetic roller
-d = tempfile.mkdtemp(prefix="rollerreport_")
+d = scratch("rollerreport_")
 t = D.make(d)
 r = subprocess.run([sys.executable, "-m", "rollerreport", d], capture_output=True, text=True)
 c.check(r.returncode == 0, f"python3 -m rollerreport exits 0 ({r.stderr.strip()[-400:]})")
@@ -165,7 +164,7 @@ c.check(r2.returncode == 0 and jr["sound"]["reused"] and jr["animation"]["reused
         "a second report reuses the sound and the animation (journal.json: reused; squeal.wav untouched; the same spl_db)")
 
 # a quiet roller sounds quiet: the same transient 10 times smaller, the same reference
-dq = tempfile.mkdtemp(prefix="rollerreport_quiet_")
+dq = scratch("rollerreport_quiet_")
 D.make(dq, r_amp=1e-5)
 rq = subprocess.run([sys.executable, "-m", "rollerreport", dq, "--parts", "sound"], capture_output=True, text=True)
 oq = json.load(open(os.path.join(dq, "report.json"))) if rq.returncode == 0 else {"spl_db": math.nan, "sound": {}}
@@ -195,7 +194,7 @@ c.check(column == "alpha" and abs(fj["frequency"] / 418.9 - 1) < 0.01 and abs(fj
         f"the jam: fitted on the {column} (alpha): {fj['frequency']:.2f} Hz (418.9), {fj['growth_rate']:.2f} /s (-27.7)")
 
 # the seed's response (docs/squeal.md 4.4.4): a decaying mode beside the start's line and noise, both in the unseeded run
-d3 = tempfile.mkdtemp(prefix="rollerreport_base_")
+d3 = scratch("rollerreport_base_")
 for name in ("scene.json", "sweep.csv", "transient.h5"):
     shutil.copy(os.path.join(d, name), d3)
 f3, s3 = 0.177, -0.0205
@@ -214,7 +213,7 @@ c.check(fit3.get("response") is True and abs(fit3["frequency"] / f3 - 1) < 0.01 
         f"{fit3.get('column')}; the seeded run alone gives {alone['frequency']:.4f} (the start's line)")
 
 # a real positive eigenvalue: a divergence, unstable without a pitch, evidence for stick-slip (not run)
-dr = tempfile.mkdtemp(prefix="rollerreport_real_")
+dr = scratch("rollerreport_real_")
 json.dump({"name": "worn", "units": "si", "kelvin_voigt_tau": 4e-6, "friction": 1.2, "creep": 0.01}, open(os.path.join(dr, "scene.json"), "w"))
 D.write_csv(os.path.join(dr, "modes.csv"), D.COLS[1:], [[-51.6, 0, 0, -51.6, 0, "standing"], [11683.0, 0, 0, 11683.0, 6, "standing"],
                                                        [-21.9, 2 * math.pi * 490.7, 490.7, -21.9, 0, "standing"]])

@@ -82,6 +82,18 @@ class Checker:
         sys.exit(1 if self.failed or not self.passed else 0)
 
 
+def scratch(prefix):
+    """A temporary folder for a test's files, removed when the test's process exits (passed or failed: what failed is in
+    its output)."""
+    import atexit
+    import shutil
+    import tempfile
+
+    d = tempfile.mkdtemp(prefix=prefix)
+    atexit.register(shutil.rmtree, d, True)
+    return d
+
+
 def maxwell_branches(h5path):
     """The generalized Maxwell rubber's branches (relaxation times tau_i, weights g_i) from a run's HDF5 parameters."""
     import h5py
