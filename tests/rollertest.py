@@ -54,6 +54,16 @@ def energy_defect(d):
     return float(np.abs(bal).max() / np.abs(d["energy"]).max())
 
 
+def friction_line(d, t0=0.003):
+    """Frequency and level (dB) of the friction force's largest spectral line after t0 (Hann window, mean removed)."""
+    feed = d["t"] > t0
+    x = d["friction_force"][feed] - d["friction_force"][feed].mean()
+    s = np.abs(np.fft.rfft(x * np.hanning(len(x))))
+    f = np.fft.rfftfreq(len(x), d["t"][1] - d["t"][0])
+    k = 1 + int(np.argmax(s[1:]))
+    return f[k], 20 * np.log10(s[k])
+
+
 def rel_max_error(d, ref, q):
     """max over d's times of |d[q] - ref[q]| (ref interpolated in t), relative to max |ref[q]|."""
     return float(np.abs(d[q] - np.interp(d["t"], ref["t"], ref[q])).max() / np.abs(ref[q]).max())

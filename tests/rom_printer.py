@@ -10,7 +10,7 @@ step's frequency error reaches -ts_phase_error, 9.9 kHz here, and the two static
 About 10 min of CPU (the full 30 ms, 75 s; the reduced model's modes)."""
 import numpy as np
 
-from rollertest import SOURCE, Checker, energy_defect, read_csv, run
+from rollertest import SOURCE, Checker, energy_defect, friction_line, read_csv, run
 
 c = Checker("rom_printer")
 SCENE = ["-options_file", f"{SOURCE}/jobs/printer_roller_kelvin_voigt.yaml", "-ts_max_time", "0.03", "-quiet"]
@@ -24,18 +24,7 @@ for col, tol in (("contact_force", 0.01), ("friction_force", 0.02)):
     err = abs(fb - fa) / abs(fa)
     c.check(err < tol, f"mean {col} over the feeding: reduced {fb:.4g}, full {fa:.4g} N/m: within {100 * err:.2f} % (< {100 * tol:.0f} %)")
 
-
-def line(d):
-    """Frequency (Hz) and level (dB) of the friction force's largest line over the feeding."""
-    x = d["friction_force"][feed] - d["friction_force"][feed].mean()
-    dt = d["t"][1] - d["t"][0]
-    s = np.abs(np.fft.rfft(x * np.hanning(len(x))))
-    f = np.fft.rfftfreq(len(x), dt)
-    k = 1 + int(np.argmax(s[1:]))
-    return f[k], 20 * np.log10(s[k])
-
-
-(f_a, l_a), (f_b, l_b) = line(a), line(b)
+(f_a, l_a), (f_b, l_b) = friction_line(a), friction_line(b)
 c.check(abs(f_b - f_a) / f_a < 0.01, f"the friction force's largest line: reduced {f_b:.1f} Hz, full {f_a:.1f} Hz (within 1 %)")
 c.check(abs(l_b - l_a) < 2.0, f"its level: reduced {l_b:.1f} dB, full {l_a:.1f} dB (within 2 dB)")
 defect = energy_defect(b)
