@@ -17,9 +17,12 @@ import time
 
 import h5py
 
-from rollertest import EXE, Checker, run
+from rollertest import EXE, Checker, run, scratch
 
 KILLS = int(os.environ.get("ROLLER_CRASH_KILLS", "50"))
+# a run killed while it meshes leaves gmsh's temporary folder behind (nothing can remove it on a SIGKILL): PETSc's
+# temporary directory (PetscGetTmp, the generated mesh's) in a folder removed when the test exits
+os.environ["PETSC_TMP"] = scratch("hard_crash-tmp-")
 BASE = ["-mesh_h", "0.05", "-degree", "1", "-ts_dt", "0.0125", "-coriolis_velocity", "backward", "-ts_max_time", "6", "-quiet",
         "-obstacle", "-obstacle_speed", "0.05", "-obstacle_depth", "0.01", "-damping", "1"]
 OUT = ["-monitor_csv", "crash.csv", "-output", "crash.h5", "-output_every", "5", "-checkpoint", "crash_ck.h5", "-checkpoint_every", "1"]

@@ -94,6 +94,7 @@ PetscErrorCode RollerMeshGenerate(Roller ctx, PetscBool verbose, char dir[], cha
       int ierr_finalize;
       gmshFinalize(&ierr_finalize);
     }
+    if (ierr) PetscCall(PetscRMTree(dir)); /* nothing left behind by a mesh that failed */
   }
   PetscCallMPI(MPI_Bcast(&ierr, 1, MPI_INT, 0, ctx->comm));
   PetscCheck(!ierr, ctx->comm, PETSC_ERR_LIB, "gmsh failed (error %d) to mesh the annulus r_inner %g, r_outer %g at -mesh_h %g (-mesh_h_contact %g, -mesh_contact_layer %g); rerun with -mesh_gmsh_verbose", ierr, (double)mesh->r_inner, (double)mesh->r_outer,
