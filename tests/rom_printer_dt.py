@@ -12,6 +12,8 @@ docs/performance.md "Reduced-order transient", "both models against their own ti
   rolling carries them in and out (omega r_outer over the P2 node spacing of Gamma_C, within 15 %) with fewer than
   0.5 reversals a ms.
 About 7 min of CPU."""
+import os
+
 from rollertest import SOURCE, Checker, friction_line, read_csv, run
 
 c = Checker("rom_printer_dt")
@@ -67,4 +69,6 @@ for k in (1, 2):
     flips, reversals = const[k]["contact_flips"][feed].sum() / span, const[k]["contact_reversals"][feed].sum() / span
     c.check(abs(flips / rolling - 1) < 0.15, f"printer at constant mu, reduced, {step(k)}: {flips:.2f} contact state changes a ms, rolling carries {rolling:.2f} (within 15 %)")
     c.check(reversals < 0.5, f"printer at constant mu, reduced, {step(k)}: {reversals:.2f} reversals a ms (< 0.5: no flutter)")
+for basis in ("kv_basis.h5", "printer_basis.h5"):  # 90 MB each; the CSVs stay for a look
+    os.remove(basis)
 c.close()
