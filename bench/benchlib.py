@@ -28,16 +28,17 @@ os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
 os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
 
 
-def command(args, nproc=1, launcher=False):
-    """The command line; under mpiexec when nproc > 1 or launcher (mpiexec -n 1: the same start-up as a parallel run)."""
-    cmd = [EXE] + [str(a) for a in args]
+def command(args, nproc=1, launcher=False, exe=None):
+    """The command line of `exe` (default EXE); under mpiexec when nproc > 1 or launcher (mpiexec -n 1: the same start-up
+    as a parallel run)."""
+    cmd = [exe or EXE] + [str(a) for a in args]
     if nproc > 1 or launcher:
         cmd = [MPIEXEC, "-n", str(nproc)] + cmd
     return cmd
 
 
-def run(args, nproc=1, csv=False, logview=True, cwd=ROOT, launcher=False):
-    """Run roller with the options `args`; return a dict (see the module docstring)."""
+def run(args, nproc=1, csv=False, logview=True, cwd=ROOT, launcher=False, exe=None):
+    """Run roller (or another executable `exe`) with the options `args`; return a dict (see the module docstring)."""
     with tempfile.TemporaryDirectory() as tmp:
         extra = ["-quiet"]
         lv = os.path.join(tmp, "log.txt")
@@ -45,7 +46,7 @@ def run(args, nproc=1, csv=False, logview=True, cwd=ROOT, launcher=False):
             extra += ["-log_view", ":" + lv]
         if csv:
             extra += ["-monitor_csv", os.path.join(tmp, "run.csv")]
-        cmd = command(list(args) + extra, nproc, launcher)
+        cmd = command(list(args) + extra, nproc, launcher, exe)
         out = open(os.path.join(tmp, "stdout"), "w+")
         # Peak memory through /usr/bin/time: the rusage of a child forked from this (large) Python process
         # counts the pages it shared with it before exec, so wait4's ru_maxrss would report Python's size.

@@ -19,6 +19,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import benchlib  # noqa: E402
 from benchlib import stage  # noqa: E402
+from rollerreport import run  # noqa: E402 (benchlib imports rollertest, which puts scripts/ on the path)
 
 ROOT = benchlib.ROOT
 # jobs/printer_roller.yaml gives its mesh_h and ts_dt (the 10 ms run's): -ts_max_time 1 keeps them. A scene without
@@ -29,23 +30,10 @@ SCENE = os.path.join(ROOT, "jobs", "printer_roller.yaml")
 
 def dt_of(scene, options):
     """The scene's -ts_dt: its options', else its YAML file's."""
-    if "-ts_dt" in options:
-        return float(options[options.index("-ts_dt") + 1])
-    with open(scene) as f:
-        for line in f:
-            if line.startswith("ts_dt:"):
-                return float(line.split(":")[1])
-    raise SystemExit(f"{scene}: no ts_dt (give it in --scene-options)")
-
-
-def timed(exe, args):
-    """benchlib.run with another executable."""
-    keep = benchlib.EXE
-    benchlib.EXE = exe
-    try:
-        return benchlib.run(args)
-    finally:
-        benchlib.EXE = keep
+    dt = run.scene_options(scene, options).get("ts_dt")
+    if dt is None:
+        raise SystemExit(f"{scene}: no ts_dt (give it in --scene-options)")
+    return float(dt)
 
 
 def main():
@@ -64,7 +52,7 @@ def main():
         full.append(benchlib.run(scene + ["-ts_max_time", 0.01]))
         red.append(benchlib.run(rom_args))
         if o.reference:
-            ref.append(timed(o.reference, rom_args))
+            ref.append(benchlib.run(rom_args, exe=o.reference))
     cf, cr = statistics.median(r["cpu"] for r in full), statistics.median(r["cpu"] for r in red)
     steps_t = round(o.max_time / dt_of(o.scene, o.scene_options.split()))
     setup = statistics.median(stage(r, "Roller setup") for r in red)

@@ -15,11 +15,10 @@ import platform
 import sys
 import tempfile
 
-import numpy as np
-
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import benchlib  # noqa: E402
 from benchlib import stage  # noqa: E402
+from rollertest import friction_line  # noqa: E402
 
 ROOT = benchlib.ROOT
 SCENE = ["-options_file", os.path.join(ROOT, "jobs", "printer_roller_kelvin_voigt.yaml"), "-mesh_h", "0.000773335", "-ts_dt", "5.63063e-06"]
@@ -27,11 +26,8 @@ SCENE = ["-options_file", os.path.join(ROOT, "jobs", "printer_roller_kelvin_voig
 
 def measures(d):
     feed = d["t"] > 0.003
-    x = d["friction_force"][feed] - d["friction_force"][feed].mean()
-    s = np.abs(np.fft.rfft(x * np.hanning(len(x))))
-    f = np.fft.rfftfreq(len(x), d["t"][1] - d["t"][0])
-    k = 1 + int(np.argmax(s[1:]))
-    return {"N": d["contact_force"][feed].mean(), "T": d["friction_force"][feed].mean(), "f": f[k], "L": 20 * np.log10(s[k])}
+    f, level = friction_line(d)
+    return {"N": d["contact_force"][feed].mean(), "T": d["friction_force"][feed].mean(), "f": f, "L": level}
 
 
 def setup_cpu(r):

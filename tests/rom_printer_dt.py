@@ -15,6 +15,7 @@ About 7 min of CPU."""
 import os
 
 from rollertest import SOURCE, Checker, friction_line, read_csv, run
+from rollerreport import run as run_scene  # noqa: E402
 
 c = Checker("rom_printer_dt")
 KV = ["-options_file", f"{SOURCE}/jobs/printer_roller_kelvin_voigt.yaml", "-mesh_h", "0.000773335"]
@@ -60,7 +61,7 @@ c.check(abs(lb - la) < 2.0, f"printer: its level, reduced {lb:.2f} dB, full {la:
 const = {k: csv_of(f"printer_rom_const_{k}", PRINTER, 5.63e-06 / k, ROM + ["-rom_input", "printer_basis.h5", "-friction_static", "0.8"]) for k in (1, 2)}
 g1, g2 = mean(const[1], "friction_force"), mean(const[2], "friction_force")
 c.check(abs(g2 - g1) < 0.01 * abs(g1), f"printer at constant mu, reduced: mean friction force {g1:.5g} N/m at dt, {g2:.5g} at dt/2: within {100 * abs(g2 / g1 - 1):.2f} % (< 1 %)")
-yaml = dict(line.split(":", 1) for line in open(PRINTER[1]) if ":" in line and not line.startswith("#"))
+yaml = run_scene.scene_options(PRINTER[1], [])
 # nodes in and out of the patch a ms: the rim's speed omega r_outer over the P2 node spacing mesh_h_contact / 2
 rolling = 2 * float(yaml["omega"]) * float(yaml["r_outer"]) / (float(yaml["mesh_h_contact"]) / 2) / 1000
 for k in (1, 2):
