@@ -81,11 +81,48 @@ void RollerContactReducedWindow(Roller ctx, RollerContact c)
   c->nodes.gather.wstamp++; /* the cached gathers were of another window */
 }
 
+/* u = Phi q at the window's nodes (all nodes outside a step): four nodes' eight rows a pass over q, each row's sum in
+   the order of q's entries (the same sums as one row at a time, with eight independent chains instead of two). */
+static void GatherRows(RollerContact c, const PetscScalar qa[], PetscScalar u[])
+{
+  const PetscInt nq = c->nodes.nq, nw = c->nodes.nwin, blk = 4;
+
+  for (PetscInt k0 = 0; k0 < nw; k0 += blk) {
+    const PetscInt   nb = PetscMin(blk, nw - k0);
+    const PetscReal *p[2 * 4];
+    PetscReal        s[2 * 4] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+
+    for (PetscInt b = 0; b < blk; ++b) { /* a short block repeats its last node (computed, not stored) */
+      const PetscInt k = k0 + PetscMin(b, nb - 1), i = c->nodes.windowed ? c->nodes.win[k] : k;
+
+      p[2 * b]     = c->nodes.phi + (size_t)(2 * i) * nq;
+      p[2 * b + 1] = p[2 * b] + nq;
+    }
+    for (PetscInt j = 0; j < nq; ++j) {
+      const PetscReal qj = PetscRealPart(qa[j]);
+
+      s[0] += p[0][j] * qj;
+      s[1] += p[1][j] * qj;
+      s[2] += p[2][j] * qj;
+      s[3] += p[3][j] * qj;
+      s[4] += p[4][j] * qj;
+      s[5] += p[5][j] * qj;
+      s[6] += p[6][j] * qj;
+      s[7] += p[7][j] * qj;
+    }
+    for (PetscInt b = 0; b < nb; ++b) {
+      const PetscInt k = k0 + b, i = c->nodes.windowed ? c->nodes.win[k] : k;
+
+      u[2 * i]     = s[2 * b];
+      u[2 * i + 1] = s[2 * b + 1];
+    }
+  }
+}
+
 /* red = Phi q at the window's nodes (all nodes outside a step), 0 at the others; a gather of the same Vec, unchanged,
    within the same window is the cached one's copy. */
 PetscErrorCode RollerContactReducedGather(RollerContact c, Vec q, Vec red)
 {
-  const PetscInt            nq = c->nodes.nq;
   RollerContactGatherCache *gc = &c->nodes.gather;
   const PetscScalar        *qa;
   PetscScalar              *u;
@@ -118,18 +155,7 @@ PetscErrorCode RollerContactReducedGather(RollerContact c, Vec q, Vec red)
   PetscCall(VecGetArrayRead(c->nodes.gather.qall, &qa));
   PetscCall(VecGetArray(red, &u));
   if (c->nodes.windowed) PetscCall(PetscArrayzero(u, 2 * c->nodes.nc));
-  for (PetscInt k = 0; k < c->nodes.nwin; ++k) {
-    const PetscInt   i  = c->nodes.windowed ? c->nodes.win[k] : k;
-    const PetscReal *p0 = c->nodes.phi + (size_t)(2 * i) * nq, *p1 = p0 + nq;
-    PetscReal        s0 = 0.0, s1 = 0.0;
-
-    for (PetscInt j = 0; j < nq; ++j) {
-      s0 += p0[j] * PetscRealPart(qa[j]);
-      s1 += p1[j] * PetscRealPart(qa[j]);
-    }
-    u[2 * i]     = s0;
-    u[2 * i + 1] = s1;
-  }
+  GatherRows(c, qa, u);
   slot     = gc->next; /* kept for the next reads of this level in this window (round robin) */
   gc->next = (gc->next + 1) % ROLLER_GATHER_CACHE;
   if (!gc->val[slot]) PetscCall(PetscMalloc1(2 * c->nodes.nc, &gc->val[slot]));

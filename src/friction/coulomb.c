@@ -92,13 +92,13 @@ static PetscErrorCode SolveStates(PetscInt m, const PetscReal G[], const PetscRe
         if (cw->idx_t[b] >= 0) cw->R[row + (size_t)cw->idx_t[b] * k] += gt;
       }
     }
-  { /* LAPACK's LU directly (a PETSc Mat made and destroyed for each of these small systems cost more than its solve) */
+  { /* LAPACK's LU (lu.c: its factors, without the reference BLAS's overhead on 40 unknowns) and its solve directly (a
+       PETSc Mat made and destroyed for each of these small systems cost more than its solve) */
     PetscBLASInt nb, one = 1, info;
 
     PetscCall(PetscBLASIntCast(k, &nb));
     PetscCall(PetscArraycpy(cw->sol, cw->rhs, k));
-    PetscCallBLAS("LAPACKgetrf", LAPACKgetrf_(&nb, &nb, cw->R, &nb, cw->piv, &info));
-    PetscCheck(info >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "Coulomb's states: LAPACK getrf argument %d illegal", (int)-info);
+    PetscCall(RollerDenseLUFactor(nb, cw->R, cw->piv, &info));
     PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_MAT_LU_ZRPVT, "Coulomb's states: the system of %" PetscInt_FMT " unknowns is singular (zero pivot %d)", k, (int)info);
     PetscCallBLAS("LAPACKgetrs", LAPACKgetrs_("N", &nb, &one, cw->R, &nb, cw->piv, cw->sol, &nb, &info));
     PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "Coulomb's states: LAPACK getrs info %d", (int)info);
