@@ -62,10 +62,7 @@ static PetscErrorCode SolveFreeSet(RollerContactLCP *cd, PetscInt m, const Petsc
 /* w = G lam + d */
 void RollerContactLCPSlack(RollerContactLCP *cd, PetscInt m, const PetscReal lam[], PetscReal w[])
 {
-  for (PetscInt a = 0; a < m; ++a) w[a] = cd->d[a];
-  for (PetscInt b = 0; b < m; ++b)
-    if (lam[b] != 0.0)
-      for (PetscInt a = 0; a < m; ++a) w[a] += cd->G[a + (size_t)b * m] * lam[b];
+  RollerDenseSlack(m, cd->G, cd->d, lam, w);
 }
 
 /* The LCP  lam >= 0, w = G lam + d >= 0, lam . w = 0 with G symmetric positive definite.

@@ -3,7 +3,8 @@
      law.c      the friction coefficient mu(|v|) of the slip speed and its derivative: the exponential weakening or the
                 monotone interpolant of -friction_table
      coulomb.c  Coulomb's law of one step on given dense data (the semismooth Newton method)
-     lu.c       the LU factorization of its small systems (LAPACK's, bit for bit, without the reference's overhead)
+     dense.c    the small dense kernels of the friction and contact solves: the LU of their systems (LAPACK's, bit for
+                bit, without the reference's overhead), the slack G x + d
    The contact layer builds their data from the Gamma_C nodes (the slips, the condensed G and d; contact_friction*.c)
    and runs the fixed points and fallbacks about them; the steady state and the squeal linearization of -modes
    (modes/steady*.c, modes/squeal.c) take mu(v) and its slope from law.c. */
@@ -30,8 +31,10 @@ PETSC_INTERN PetscErrorCode RollerFrictionTableDestroy(RollerFrictionTable *);
    (*its). */
 PETSC_INTERN PetscErrorCode RollerFrictionCoulombNewton(PetscInt, const PetscReal[], const PetscReal[], const RollerObstacle *, PetscReal, PetscReal[], PetscReal[], PetscInt, PetscInt *, PetscBool *);
 
-/* lu.c: LAPACK's dgetrf of an n x n column-major A (pivots 1-based; *info > 0: the first zero pivot), bit for bit, without
-   its reference implementation's overhead on small systems (below its block size 64; LAPACK's own from there). */
+/* dense.c: LAPACK's dgetrf of an n x n column-major A (pivots 1-based; *info > 0: the first zero pivot), bit for bit, without
+   its reference implementation's overhead on small systems (below its block size 64; LAPACK's own from there); the slack
+   w = G x + d (G n x n, column-major) over the nonzero entries of x, each entry's sum in the order of x's entries. */
 PETSC_INTERN PetscErrorCode RollerDenseLUFactor(PetscBLASInt, PetscReal[], PetscBLASInt[], PetscBLASInt *);
+PETSC_INTERN void           RollerDenseSlack(PetscInt, const PetscReal[], const PetscReal[], const PetscReal[], PetscReal[]);
 
 #endif

@@ -1,4 +1,4 @@
-static const char help[] = "Unit test: the LU factorization of Coulomb's small systems (friction/lu.c) is LAPACK's dgetrf bit for bit\n"
+static const char help[] = "Unit test: the LU factorization of Coulomb's small systems (friction/dense.c) is LAPACK's dgetrf bit for bit\n"
                            "(factors, pivots, the first zero pivot) on random systems of 1 to 100 unknowns, with zero entries,\n"
                            "entries over seven decades, diagonally dominant and not, singular ones, and the systems' solves\n"
                            "reach round-off.\n";
@@ -40,10 +40,10 @@ int main(int argc, char **argv)
     PetscCall(PetscArraycpy(C, A, (size_t)n * n));
     PetscCallBLAS("LAPACKgetrf", LAPACKgetrf_(&n, &n, A, &n, p, &info_a));
     PetscCall(RollerDenseLUFactor(n, B, q, &info_b));
-    PetscCheck(info_a == info_b, PETSC_COMM_SELF, PETSC_ERR_PLIB, "n = %d (trial %" PetscInt_FMT "): LAPACK's info %d, lu.c's %d", (int)n, trial, (int)info_a, (int)info_b);
-    for (PetscInt k = 0; k < n; ++k) PetscCheck(p[k] == q[k], PETSC_COMM_SELF, PETSC_ERR_PLIB, "n = %d (trial %" PetscInt_FMT "): pivot %" PetscInt_FMT " LAPACK's %d, lu.c's %d", (int)n, trial, k, (int)p[k], (int)q[k]);
+    PetscCheck(info_a == info_b, PETSC_COMM_SELF, PETSC_ERR_PLIB, "n = %d (trial %" PetscInt_FMT "): LAPACK's info %d, dense.c's %d", (int)n, trial, (int)info_a, (int)info_b);
+    for (PetscInt k = 0; k < n; ++k) PetscCheck(p[k] == q[k], PETSC_COMM_SELF, PETSC_ERR_PLIB, "n = %d (trial %" PetscInt_FMT "): pivot %" PetscInt_FMT " LAPACK's %d, dense.c's %d", (int)n, trial, k, (int)p[k], (int)q[k]);
     for (PetscInt k = 0; k < (PetscInt)n * n; ++k)
-      PetscCheck(memcmp(&A[k], &B[k], sizeof(PetscReal)) == 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "n = %d (trial %" PetscInt_FMT "): factor entry %" PetscInt_FMT " LAPACK's %.17g, lu.c's %.17g", (int)n, trial, k, (double)A[k], (double)B[k]);
+      PetscCheck(memcmp(&A[k], &B[k], sizeof(PetscReal)) == 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "n = %d (trial %" PetscInt_FMT "): factor entry %" PetscInt_FMT " LAPACK's %.17g, dense.c's %.17g", (int)n, trial, k, (double)A[k], (double)B[k]);
     if (!info_b) { /* the solve through the factors: the residual of C x = b against |C| |x| */
       PetscReal res = 0.0, scale = 0.0;
 
@@ -65,7 +65,7 @@ int main(int argc, char **argv)
     PetscCall(PetscFree2(p, q));
   }
   PetscCheck(checked > 1000, PETSC_COMM_SELF, PETSC_ERR_PLIB, "only %" PetscInt_FMT " of the systems solved to round-off", checked);
-  PetscCall(PetscPrintf(PETSC_COMM_SELF, "lu.c: LAPACK's factors and pivots bit for bit on 1200 systems (%" PetscInt_FMT " solved to round-off)\n", checked));
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "dense.c: LAPACK's factors and pivots bit for bit on 1200 systems (%" PetscInt_FMT " solved to round-off)\n", checked));
   PetscCall(PetscRandomDestroy(&r));
   PetscCall(PetscFinalize());
   return 0;

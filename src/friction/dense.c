@@ -1,11 +1,16 @@
-/* The LU factorization with partial pivoting of the small dense systems of Coulomb's semismooth Newton method
-   (coulomb.c: about 40 unknowns, several a step). Below LAPACK's block size (64) its dgetrf is the recursive dgetrf2
+/* The small dense kernels of a step's contact and friction solves (coulomb.c, contact/contact_lcp.c: about 40
+   unknowns, several times a step), the reference BLAS's arithmetic in the same order without its overhead.
+
+   The slack w = G x + d: G's columns of the nonzero entries of x added in their order, four a pass over w (each
+   entry's sum in the order of one column at a time).
+
+   The LU factorization with partial pivoting of Coulomb's systems. Below LAPACK's block size (64) its dgetrf is the recursive dgetrf2
    (Toledo's algorithm: the left half of the columns factored, the row interchanges, a triangular solve and a matrix
    product to the right half, the right half factored), whose reference implementation spends more in its calls of
    dtrsm, dgemm and dlaswp on blocks of a few columns than in the arithmetic. This is that recursion with the three
    operations written out as the reference BLAS computes them, entry by entry in the same order (the pivot column
    scaled by the reciprocal of the pivot above the safe minimum), so the factors and the pivots are LAPACK's bit for
-   bit (tests/unit/test_lu.c compares them); from the block size up it calls LAPACK. */
+   bit (tests/unit/lu.c compares them); from the block size up it calls LAPACK. */
 #include "friction/friction.h"
 #include <float.h>
 #include <petscblaslapack.h>
@@ -101,4 +106,35 @@ PetscErrorCode RollerDenseLUFactor(PetscBLASInt n, PetscReal A[], PetscBLASInt p
   if (n >= 64) PetscCallBLAS("LAPACKgetrf", LAPACKgetrf_(&n, &n, A, &n, piv, info));
   else if (n > 0) Factor(n, n, A, n, piv, info);
   PetscFunctionReturn(0);
+}
+
+void RollerDenseSlack(PetscInt n, const PetscReal G[], const PetscReal d[], const PetscReal x[], PetscReal w[])
+{
+  PetscInt b = 0;
+
+  for (PetscInt a = 0; a < n; ++a) w[a] = d[a];
+  while (b < n) {
+    const PetscReal *col[4];
+    PetscReal        xb[4];
+    PetscInt         nb = 0;
+
+    for (; b < n && nb < 4; ++b)
+      if (x[b] != 0.0) {
+        col[nb] = G + (size_t)b * n;
+        xb[nb++] = x[b];
+      }
+    if (nb == 4)
+      for (PetscInt a = 0; a < n; ++a) {
+        PetscReal t = w[a];
+
+        t += col[0][a] * xb[0];
+        t += col[1][a] * xb[1];
+        t += col[2][a] * xb[2];
+        t += col[3][a] * xb[3];
+        w[a] = t;
+      }
+    else
+      for (PetscInt k = 0; k < nb; ++k)
+        for (PetscInt a = 0; a < n; ++a) w[a] += col[k][a] * xb[k];
+  }
 }
