@@ -155,39 +155,6 @@ PetscErrorCode RollerContactResidualKeep(RollerContact c, Vec v, PetscReal **r)
   PetscFunctionReturn(0);
 }
 
-/* r += R (ci f) over the nonzero entries of f (2 nc), in their order: four of R's columns a pass over r, each entry's
-   sum in the same order as one column at a time. */
-static void AddColumns(RollerContact c, const PetscReal f[], PetscReal ci, PetscReal r[])
-{
-  const PetscInt n = 2 * c->nodes.nc;
-  PetscInt       j = 0;
-
-  while (j < n) {
-    const PetscReal *col[4];
-    PetscReal        a[4];
-    PetscInt         nb = 0;
-
-    for (; j < n && nb < 4; ++j)
-      if (f[j] != 0.0) {
-        col[nb] = c->nodes.residual.R + (size_t)j * n;
-        a[nb++] = ci * f[j];
-      }
-    if (nb == 4)
-      for (PetscInt k = 0; k < n; ++k) {
-        PetscReal t = r[k];
-
-        t += col[0][k] * a[0];
-        t += col[1][k] * a[1];
-        t += col[2][k] * a[2];
-        t += col[3][k] * a[3];
-        r[k] = t;
-      }
-    else
-      for (PetscInt b = 0; b < nb; ++b)
-        for (PetscInt k = 0; k < n; ++k) r[k] += col[b][k] * a[b];
-  }
-}
-
 /* The residual r = R f_C of the solve's multipliers, kept for its solution xi (the Vec keeps it as it moves
    through the levels; a Vec without one has none); with the branches r = R h/C + R f_C/C and the level's a, b_i, w_i. */
 PetscErrorCode RollerContactReducedResidual(RollerContact c, const RollerContactResult *res, Vec xi)
@@ -207,7 +174,9 @@ PetscErrorCode RollerContactReducedResidual(RollerContact c, const RollerContact
     f[0] = res->lambda[i] * c->step.normal[0] + lt * c->step.tangent[0];
     f[1] = res->lambda[i] * c->step.normal[1] + lt * c->step.tangent[1];
   }
-  AddColumns(c, r + n, ci, r);
+  if (!c->nodes.residual.fc) PetscCall(PetscMalloc1(n, &c->nodes.residual.fc));
+  for (PetscInt k = 0; k < n; ++k) c->nodes.residual.fc[k] = ci * r[n + k];
+  RollerDenseMultAdd(n, c->nodes.residual.R, r, c->nodes.residual.fc, r); /* r += R f_C/C */
   RollerContactResidualBranchesUpdate(c, r);
   PetscFunctionReturn(0);
 }
@@ -301,6 +270,7 @@ PetscErrorCode RollerContactResidualDestroy(RollerContact c)
   PetscFunctionBeginUser;
   PetscCall(PetscFree(c->nodes.residual.R));
   PetscCall(PetscFree(c->nodes.residual.wc));
+  PetscCall(PetscFree(c->nodes.residual.fc));
   PetscCall(PetscFree(c->nodes.residual.u0));
   PetscCall(PetscFree(c->nodes.residual.hist));
   for (PetscInt k = 0; k < c->nodes.residual.nslot; ++k) PetscCall(PetscFree(c->nodes.residual.slot[k]));

@@ -4,7 +4,7 @@
                 monotone interpolant of -friction_table
      coulomb.c  Coulomb's law of one step on given dense data (the semismooth Newton method)
      dense.c    the small dense kernels of the friction and contact solves: the LU of their systems (LAPACK's, bit for
-                bit, without the reference's overhead), the slack G x + d
+                bit, without the reference's overhead), the products d + G x
    The contact layer builds their data from the Gamma_C nodes (the slips, the condensed G and d; contact_friction*.c)
    and runs the fixed points and fallbacks about them; the steady state and the squeal linearization of -modes
    (modes/steady*.c, modes/squeal.c) take mu(v) and its slope from law.c. */
@@ -32,9 +32,9 @@ PETSC_INTERN PetscErrorCode RollerFrictionTableDestroy(RollerFrictionTable *);
 PETSC_INTERN PetscErrorCode RollerFrictionCoulombNewton(PetscInt, const PetscReal[], const PetscReal[], const RollerObstacle *, PetscReal, PetscReal[], PetscReal[], PetscInt, PetscInt *, PetscBool *);
 
 /* dense.c: LAPACK's dgetrf of an n x n column-major A (pivots 1-based; *info > 0: the first zero pivot), bit for bit, without
-   its reference implementation's overhead on small systems (below its block size 64; LAPACK's own from there); the slack
-   w = G x + d (G n x n, column-major) over the nonzero entries of x, each entry's sum in the order of x's entries. */
+   its reference implementation's overhead on small systems (below its block size 64; LAPACK's own from there); w = d + G x
+   (G n x n, column-major; w may be d) over the nonzero entries of x, each entry's sum in the order of x's entries. */
 PETSC_INTERN PetscErrorCode RollerDenseLUFactor(PetscBLASInt, PetscReal[], PetscBLASInt[], PetscBLASInt *);
-PETSC_INTERN void           RollerDenseSlack(PetscInt, const PetscReal[], const PetscReal[], const PetscReal[], PetscReal[]);
+PETSC_INTERN void           RollerDenseMultAdd(PetscInt, const PetscReal[], const PetscReal[], const PetscReal[], PetscReal[]);
 
 #endif
