@@ -88,7 +88,7 @@ cases = [
     (["-rubber", "maxwell", "-maxwell_tau", "-1", "-maxwell_weight", "0.5"], "-maxwell_tau", "-1"),
     (["-rubber", "maxwell", "-maxwell_tau", "1", "-maxwell_weight", "0"], "-maxwell_weight", "> 0"),
     (["-rubber", "maxwell", "-maxwell_tau", "1", "-maxwell_weight", "0.5", "-rubber_loss_factor", "0.1"], "-rubber maxwell", "not both"),
-    (["-rubber", "maxwell", "-maxwell_tau", "1", "-maxwell_weight", "0.5", "-viscosity", "0.01"], "-viscosity", "-rubber maxwell"),
+    (["-rubber", "maxwell", "-rubber_loss_factor", "0.1", "-rubber_band", "100,5000", "-viscosity", "1e-5"], "-viscosity", "half of -rubber_loss_factor"),
     (["-rubber", "maxwell", "-maxwell_tau", "1", "-maxwell_weight", "0.5", "-ts_scheme", "composed"], "-ts_scheme composed", "-rubber maxwell"),
     # issue 36: -friction_table, each error naming the option and the offending entry
     (["-obstacle", "-friction_table", "0:1"], "-friction_table", "1 point"),

@@ -121,10 +121,11 @@ def maxwell_modulus(s, tau, g):
     return 1 + np.sum(g * s * tau / (1 + s * tau))
 
 
-def maxwell_oscillator_roots(w0, tau, g):
-    """The roots of (s^2 + w0^2) prod(1 + s tau_j) + w0^2 sum_i g_i s tau_i prod_{j != i}(1 + s tau_j): an oscillator of
-    relaxed frequency w0 on the Maxwell modulus. Returns the root with positive imaginary part and the real (creep) roots."""
-    poly = np.poly1d([1.0, 0.0, w0 * w0])
+def maxwell_oscillator_roots(w0, tau, g, tau_kv=0.0):
+    """The roots of (s^2 + w0^2 (1 + s tau_kv)) prod(1 + s tau_j) + w0^2 sum_i g_i s tau_i prod_{j != i}(1 + s tau_j): an
+    oscillator of relaxed frequency w0 on the Maxwell modulus (with a Kelvin-Voigt term tau_kv beside the branches).
+    Returns the root with positive imaginary part and the real (creep) roots."""
+    poly = np.poly1d([1.0, w0 * w0 * tau_kv, w0 * w0])
     for t in tau:
         poly *= np.poly1d([t, 1.0])
     for i, t in enumerate(tau):

@@ -121,7 +121,7 @@ void RollerDenseMultAdd(PetscInt n, const PetscReal G[], const PetscReal d[], co
 
     for (; b < n && nb < 4; ++b)
       if (x[b] != 0.0) {
-        col[nb] = G + (size_t)b * n;
+        col[nb]  = G + (size_t)b * n;
         xb[nb++] = x[b];
       }
     if (nb == 4)

@@ -26,7 +26,7 @@ PetscErrorCode RollerMaterialSetFromOptions(Roller ctx)
   PetscCall(PetscOptionsReal("-density", "Density rho", NULL, m->density, &m->density, NULL));
   PetscCall(PetscOptionsEnum("-rubber", "The rubber's damping: kelvin_voigt (-viscosity) or maxwell, a generalized Maxwell solid of deviatoric branches, fitted (-rubber_loss_factor, -rubber_band) or given (-maxwell_tau, -maxwell_weight) (docs/model.md section 1.1)", "RollerRubber", RollerRubbers,
                              (PetscEnum)m->rubber, (PetscEnum *)&m->rubber, NULL));
-  PetscCall(PetscOptionsReal("-viscosity", "Kelvin-Voigt damping tau of the rubber, sigma = C:(eps + tau eps_t) (time)", NULL, m->viscosity, &m->viscosity, NULL));
+  PetscCall(PetscOptionsReal("-viscosity", "Kelvin-Voigt damping tau of the rubber, sigma = C:(eps + tau eps_t) (time); with -rubber maxwell a term beside the branches, the loss w tau growing above their band", NULL, m->viscosity, &m->viscosity, NULL));
   PetscCall(PetscOptionsReal("-rubber_loss_factor", "-rubber maxwell: the loss factor eta = G''/G' the branches are fitted to, flat over -rubber_band (in (0, 1])", NULL, m->loss_factor, &m->loss_factor, &given[0]));
   PetscCall(PetscOptionsRealArray("-rubber_band", "-rubber maxwell: the band F1,F2 of the fitted loss factor, cycles per unit time (Hz in SI scenes)", NULL, m->band, &nband, &given[1]));
   PetscCall(PetscOptionsRealArray("-maxwell_tau", "-rubber maxwell: the branches' relaxation times T1,... (at most 16; instead of the fit)", NULL, tau, &ntau, &given[2]));

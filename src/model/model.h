@@ -23,9 +23,9 @@ PETSC_INTERN PetscErrorCode RollerLameFromYoung(PetscReal, PetscReal, PetscReal 
 PETSC_INTERN PetscErrorCode RollerMaterialSetConstants(Roller, PetscDS); /* (lambda, mu), set once */
 
 /* rubber.c: the generalized Maxwell solid (-rubber maxwell, docs/model.md section 1.1) */
-PETSC_INTERN void           RollerRubberModulus(PetscInt, const PetscReal[], const PetscReal[], PetscReal, PetscReal, PetscReal *, PetscReal *);      /* n, tau, g, s = sr + i si -> G*(s)/mu */
-PETSC_INTERN void           RollerRubberInstantaneous(const RollerMaterial *, PetscReal *, PetscReal *);                                              /* lambda, mu of the unrelaxed solid */
-PETSC_INTERN PetscErrorCode RollerRubberFit(PetscReal, PetscReal, PetscReal, PetscReal, PetscInt, PetscInt *, PetscReal[], PetscReal[], PetscReal *); /* eta, f1, f2, tol, nmax -> n, tau, g, err */
+PETSC_INTERN void           RollerRubberModulus(PetscInt, const PetscReal[], const PetscReal[], PetscReal, PetscReal, PetscReal *, PetscReal *);                 /* n, tau, g, s = sr + i si -> G*(s)/mu */
+PETSC_INTERN void           RollerRubberInstantaneous(const RollerMaterial *, PetscReal *, PetscReal *);                                                         /* lambda, mu of the unrelaxed solid */
+PETSC_INTERN PetscErrorCode RollerRubberFit(PetscReal, PetscReal, PetscReal, PetscReal, PetscReal, PetscInt, PetscInt *, PetscReal[], PetscReal[], PetscReal *); /* eta, tau_kv, f1, f2, tol, nmax -> n, tau, g, err */
 PETSC_INTERN PetscErrorCode RollerRubberSetUp(Roller, const PetscBool[4], PetscInt, PetscInt, const PetscReal[], PetscInt, const PetscReal[]);
 PETSC_INTERN PetscErrorCode RollerRubberView(Roller, PetscInt, const PetscReal[], const char *const[]); /* -ts_view, with G', eta at nw angular frequencies */
 

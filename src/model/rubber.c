@@ -29,8 +29,9 @@ void RollerRubberModulus(PetscInt n, const PetscReal tau[], const PetscReal g[],
   }
 }
 
-/* The largest relative error of the loss factor against eta over CHECK_POINTS log-spaced angular frequencies of [w1, w2]. */
-static PetscReal LossFactorError(PetscInt n, const PetscReal tau[], const PetscReal g[], PetscReal eta, PetscReal w1, PetscReal w2)
+/* The largest relative error of the loss factor against eta over CHECK_POINTS log-spaced angular frequencies of [w1, w2]
+   (with a Kelvin-Voigt term tau_kv beside the branches: G''/mu + w tau_kv). */
+static PetscReal LossFactorError(PetscInt n, const PetscReal tau[], const PetscReal g[], PetscReal tau_kv, PetscReal eta, PetscReal w1, PetscReal w2)
 {
   PetscReal err = 0.0;
 
@@ -39,7 +40,7 @@ static PetscReal LossFactorError(PetscInt n, const PetscReal tau[], const PetscR
     PetscReal       re, im;
 
     RollerRubberModulus(n, tau, g, 0.0, w, &re, &im);
-    err = PetscMax(err, PetscAbsReal(im / (re * eta) - 1.0));
+    err = PetscMax(err, PetscAbsReal((im + w * tau_kv) / (re * eta) - 1.0));
   }
   return err;
 }
@@ -134,10 +135,11 @@ static PetscErrorCode NonNegativeLeastSquares(PetscInt m, PetscInt n, const Pets
 }
 
 /* The weights of n branches at the given times for the loss factor eta over [w1, w2]: G'' = eta G' is linear in g,
-     sum_i g_i (w tau_i - eta w^2 tau_i^2)/(1 + w^2 tau_i^2) = eta,
+     sum_i g_i (w tau_i - eta w^2 tau_i^2)/(1 + w^2 tau_i^2) = eta - w tau_kv
+   (a Kelvin-Voigt term tau_kv beside the branches carries w tau_kv of the loss factor),
    solved by non-negative least squares on FIT_POINTS log-spaced w, then again with each row weighted by 1/G'(w) of
    the last weights (so that the residual is the loss factor's relative error). */
-static PetscErrorCode FitWeights(PetscInt n, const PetscReal tau[], PetscReal eta, PetscReal w1, PetscReal w2, PetscReal g[])
+static PetscErrorCode FitWeights(PetscInt n, const PetscReal tau[], PetscReal tau_kv, PetscReal eta, PetscReal w1, PetscReal w2, PetscReal g[])
 {
   PetscReal A[FIT_POINTS * ROLLER_MAX_BRANCHES], b[FIT_POINTS], weight[FIT_POINTS];
 
@@ -152,7 +154,7 @@ static PetscErrorCode FitWeights(PetscInt n, const PetscReal tau[], PetscReal et
 
         A[i * FIT_POINTS + k] = weight[k] * (x - eta * x * x) / (1.0 + x * x);
       }
-      b[k] = weight[k] * eta;
+      b[k] = weight[k] * (eta - w * tau_kv);
     }
     PetscCall(NonNegativeLeastSquares(FIT_POINTS, n, A, b, g));
     for (PetscInt k = 0; k < FIT_POINTS; ++k) {
@@ -167,18 +169,19 @@ static PetscErrorCode FitWeights(PetscInt n, const PetscReal tau[], PetscReal et
 }
 
 /*
-  RollerRubberFit - the branches of a flat loss factor eta over the band [f1, f2] (cycles per unit time): n relaxation
+  RollerRubberFit - the branches of a flat loss factor eta over the band [f1, f2] (cycles per unit time), with a
+  Kelvin-Voigt term tau_kv beside them (0: none; its share w tau_kv must stay below eta over the band): n relaxation
   times log-spaced from 1/(c w2) to c/w1 (w = 2 pi f; one branch: 1/sqrt(w1 w2)), the margin c in [1, 10] the one of
   least error, the weights by FitWeights; n grows from 1 until the loss factor is within tol (relative) of eta on a
   dense grid of the band. Returns the branches with a positive weight (n <= nmax), their largest relative error err;
   n = 0 if no n <= nmax meets tol (err: the best reached).
 */
-PetscErrorCode RollerRubberFit(PetscReal eta, PetscReal f1, PetscReal f2, PetscReal tol, PetscInt nmax, PetscInt *n, PetscReal tau[], PetscReal g[], PetscReal *err)
+PetscErrorCode RollerRubberFit(PetscReal eta, PetscReal tau_kv, PetscReal f1, PetscReal f2, PetscReal tol, PetscInt nmax, PetscInt *n, PetscReal tau[], PetscReal g[], PetscReal *err)
 {
   const PetscReal w1 = 2 * PETSC_PI * f1, w2 = 2 * PETSC_PI * f2;
 
   PetscFunctionBeginUser;
-  PetscCheck(eta > 0 && f1 > 0 && f2 >= f1 && nmax >= 1 && nmax <= ROLLER_MAX_BRANCHES, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "RollerRubberFit: eta %g > 0, 0 < f1 %g <= f2 %g, nmax %" PetscInt_FMT " in [1, %d]", (double)eta, (double)f1, (double)f2, nmax, ROLLER_MAX_BRANCHES);
+  PetscCheck(eta > 0 && f1 > 0 && f2 >= f1 && nmax >= 1 && nmax <= ROLLER_MAX_BRANCHES && tau_kv >= 0 && w2 * tau_kv < eta, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "RollerRubberFit: eta %g > 0, 0 < f1 %g <= f2 %g, nmax %" PetscInt_FMT " in [1, %d], 0 <= 2 pi f2 tau_kv %g < eta", (double)eta, (double)f1, (double)f2, nmax, ROLLER_MAX_BRANCHES, (double)(w2 * tau_kv));
   *n   = 0;
   *err = PETSC_MAX_REAL;
   for (PetscInt nb = 1; nb <= nmax && *n == 0; ++nb) {
@@ -189,8 +192,8 @@ PetscErrorCode RollerRubberFit(PetscReal eta, PetscReal f1, PetscReal f2, PetscR
       PetscReal       e;
 
       for (PetscInt i = 0; i < nb; ++i) t[i] = nb > 1 ? lo * PetscPowReal(hi / lo, (PetscReal)i / (nb - 1)) : 1.0 / PetscSqrtReal(w1 * w2);
-      PetscCall(FitWeights(nb, t, eta, w1, w2, w));
-      e = LossFactorError(nb, t, w, eta, w1, w2);
+      PetscCall(FitWeights(nb, t, tau_kv, eta, w1, w2, w));
+      e = LossFactorError(nb, t, w, tau_kv, eta, w1, w2);
       if (e < best) {
         best = e;
         PetscCall(PetscArraycpy(bt, t, nb));
@@ -239,7 +242,6 @@ PetscErrorCode RollerRubberSetUp(Roller ctx, const PetscBool given[4], PetscInt 
     for (PetscInt i = 0; i < 4; ++i) PetscCheck(!given[i], ctx->comm, PETSC_ERR_ARG_INCOMP, "%s: a parameter of the generalized Maxwell solid, needs -rubber maxwell (the rubber is %s)", names[i], RollerRubbers[m->rubber]);
     PetscFunctionReturn(0);
   }
-  PetscCheck(m->viscosity == 0, ctx->comm, PETSC_ERR_ARG_INCOMP, "-viscosity %g: Kelvin-Voigt's damping, not used by -rubber maxwell (its damping is the branches': -rubber_loss_factor, -rubber_band or -maxwell_tau, -maxwell_weight)", (double)m->viscosity);
   PetscCheck(!((given[0] || given[1]) && (given[2] || given[3])), ctx->comm, PETSC_ERR_ARG_INCOMP, "-rubber maxwell: give either the fit (-rubber_loss_factor ETA -rubber_band F1,F2) or the branches (-maxwell_tau T1,... -maxwell_weight g1,...), not both");
   if (given[0] || given[1]) {
     PetscCheck(given[0] && given[1], ctx->comm, PETSC_ERR_ARG_WRONG, "-rubber maxwell: the fit needs both -rubber_loss_factor ETA and -rubber_band F1,F2 (%s is missing)", given[0] ? "-rubber_band" : "-rubber_loss_factor");
@@ -247,7 +249,9 @@ PetscErrorCode RollerRubberSetUp(Roller ctx, const PetscBool given[4], PetscInt 
     PetscCheck(nband == 2, ctx->comm, PETSC_ERR_USER_INPUT, "-rubber_band: %" PetscInt_FMT " value%s given, needs two frequencies F1,F2 (cycles per unit time)", nband, nband == 1 ? "" : "s");
     RollerCheckOption(ctx->comm, "-rubber_band", m->band[0], m->band[0] > 0, "> 0 (F1 of F1,F2, cycles per unit time)");
     RollerCheckOption(ctx->comm, "-rubber_band", m->band[1], m->band[1] >= m->band[0] && m->band[1] <= 1e6 * m->band[0], ">= F1 and <= 1e6 F1 (F2 of F1,F2)");
-    PetscCall(RollerRubberFit(m->loss_factor, m->band[0], m->band[1], tol, ROLLER_MAX_BRANCHES, &m->nbranch, m->tau, m->g, &m->fit_error));
+    PetscCheck(2 * PETSC_PI * m->band[1] * m->viscosity < 0.5 * m->loss_factor, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-viscosity %g with -rubber maxwell: the Kelvin-Voigt term's loss factor at the band's high end, 2 pi F2 tau = %g, must stay below half of -rubber_loss_factor %g (the branches carry the rest of it over the band)",
+               (double)m->viscosity, (double)(2 * PETSC_PI * m->band[1] * m->viscosity), (double)m->loss_factor);
+    PetscCall(RollerRubberFit(m->loss_factor, m->viscosity, m->band[0], m->band[1], tol, ROLLER_MAX_BRANCHES, &m->nbranch, m->tau, m->g, &m->fit_error));
     PetscCheck(m->nbranch > 0, ctx->comm, PETSC_ERR_ARG_OUTOFRANGE, "-rubber_loss_factor %g -rubber_band %g,%g: no Prony series of at most %d branches keeps the loss factor within %g %% of it over the band (best: %.3g %%); narrow the band", (double)m->loss_factor,
                (double)m->band[0], (double)m->band[1], ROLLER_MAX_BRANCHES, (double)(100 * tol), (double)(100 * m->fit_error));
     PetscFunctionReturn(0);
@@ -283,6 +287,8 @@ PetscErrorCode RollerRubberView(Roller ctx, PetscInt nw, const PetscReal w[], co
   PetscCall(PetscPrintf(ctx->comm, "roller: branches (shear modulus g mu over the relaxed mu = %g, relaxation time tau):", (double)m->mu));
   for (PetscInt i = 0; i < m->nbranch; ++i) PetscCall(PetscPrintf(ctx->comm, " g %.4g tau %.4g;", (double)m->g[i], (double)m->tau[i]));
   PetscCall(PetscPrintf(ctx->comm, " instantaneous shear modulus %g = %.4g mu (the bulk's stays elastic)\n", (double)(m->mu * (1 + sum)), (double)(1 + sum)));
+  if (m->viscosity > 0)
+    PetscCall(PetscPrintf(ctx->comm, "roller: beside them the Kelvin-Voigt term -viscosity %g (sigma += tau C:eps_t): its loss factor w tau is 0.01 at f = %g and 1 at f = %g (cycles per unit time; in the loss factors below)\n", (double)m->viscosity, (double)(0.01 / (2 * PETSC_PI * m->viscosity)), (double)(1.0 / (2 * PETSC_PI * m->viscosity))));
   for (PetscInt pass = 0; pass < 2; ++pass) {
     const PetscInt k = pass == 0 ? (m->loss_factor > 0 ? 2 : 0) : nw;
 
@@ -291,6 +297,7 @@ PetscErrorCode RollerRubberView(Roller ctx, PetscInt nw, const PetscReal w[], co
       PetscReal       re, im;
 
       RollerRubberModulus(m->nbranch, m->tau, m->g, 0.0, wj, &re, &im);
+      im += wj * m->viscosity; /* the Kelvin-Voigt term's G''/mu */
       PetscCall(PetscPrintf(ctx->comm, "roller:   at %s f = %g (w %g): shear storage modulus G' = %.4g mu = %g, loss factor G''/G' %.4g\n", pass == 0 ? (j == 0 ? "the band's low end" : "the band's high end") : what[j], (double)(wj / (2 * PETSC_PI)), (double)wj, (double)re, (double)(re * m->mu), (double)(im / re)));
     }
   }

@@ -209,7 +209,8 @@ PetscBool RollerBranchRelaxationBand(Roller ctx, PetscReal band[2])
 /*
   RollerBranchLossFactor - the rubber's loss factor for the displacement shape x = xr + i xi at the angular frequency
   w: Im(x^H K*(i w) x)/Re(x^H K*(i w) x), K*(i w) = K + sum_i g_i K_d i w tau_i/(1 + i w tau_i) the complex stiffness
-  (K the relaxed elastic one, K_d the branches'; with Kelvin-Voigt K (1 + i w tau): w tau). The deviatoric share of the
+  (K the relaxed elastic one, K_d the branches'; with Kelvin-Voigt K (1 + i w tau): w tau; -viscosity beside the
+  branches adds its i w tau K to K*). The deviatoric share of the
   shape's strain energy sets it: a torsional (isochoric) shape has the shear loss factor G''/G' itself.
 */
 PetscErrorCode RollerBranchLossFactor(Roller ctx, Vec xr, Vec xi, PetscReal w, PetscReal *eta)
@@ -238,6 +239,6 @@ PetscErrorCode RollerBranchLossFactor(Roller ctx, Vec xr, Vec xi, PetscReal w, P
   k = PetscRealPart(a[0] + a[1]); /* x^H K x of a symmetric K */
   d = PetscRealPart(a[2] + a[3]);
   RollerRubberModulus(m->nbranch, m->tau, m->g, 0.0, w, &re, &im);
-  if (k + d * (re - 1.0) > 0) *eta = d * im / (k + d * (re - 1.0));
+  if (k + d * (re - 1.0) > 0) *eta = (d * im + w * m->viscosity * k) / (k + d * (re - 1.0)); /* (with -viscosity: its w tau K) */
   PetscFunctionReturn(0);
 }
