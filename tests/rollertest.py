@@ -55,7 +55,8 @@ def energy_defect(d):
 
 
 def friction_line(d, t0=0.003):
-    """Frequency and level (dB) of the friction force's largest spectral line after t0 (Hann window, mean removed)."""
+    """Frequency and level (dB of the unnormalized DFT: compare runs of the same step only) of the friction force's largest
+    spectral line after t0 (Hann window, mean removed)."""
     feed = d["t"] > t0
     x = d["friction_force"][feed] - d["friction_force"][feed].mean()
     s = np.abs(np.fft.rfft(x * np.hanning(len(x))))
