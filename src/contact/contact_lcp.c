@@ -62,7 +62,7 @@ static PetscErrorCode SolveFreeSet(RollerContactLCP *cd, PetscInt m, const Petsc
 /* w = G lam + d */
 void RollerContactLCPSlack(RollerContactLCP *cd, PetscInt m, const PetscReal lam[], PetscReal w[])
 {
-  RollerDenseMultAdd(m, cd->G, cd->d, lam, w);
+  RollerDenseMultAdd(m, cd->G, cd->d, 1.0, lam, w);
 }
 
 /* The LCP  lam >= 0, w = G lam + d >= 0, lam . w = 0 with G symmetric positive definite.

@@ -34,7 +34,6 @@ typedef struct {
   PetscReal        kappa, g[ROLLER_MAX_BRANCHES], rho[ROLLER_MAX_BRANCHES]; /* rho_i = dt/tau_i (the midpoint rule over 2 dt) */
   PetscReal        cinv;                                                    /* 1/C: the flexibility of a step's force, R/C */
   PetscReal       *hist;                                                    /* 2 nc */
-  PetscReal       *fc;                                                      /* 2 nc: a step's f_C/C (scratch) */
   const PetscReal *from;                                                    /* the slot of the level two back (NULL: at rest) */
 } RollerContactResidual;
 

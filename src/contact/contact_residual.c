@@ -174,9 +174,7 @@ PetscErrorCode RollerContactReducedResidual(RollerContact c, const RollerContact
     f[0] = res->lambda[i] * c->step.normal[0] + lt * c->step.tangent[0];
     f[1] = res->lambda[i] * c->step.normal[1] + lt * c->step.tangent[1];
   }
-  if (!c->nodes.residual.fc) PetscCall(PetscMalloc1(n, &c->nodes.residual.fc));
-  for (PetscInt k = 0; k < n; ++k) c->nodes.residual.fc[k] = ci * r[n + k];
-  RollerDenseMultAdd(n, c->nodes.residual.R, r, c->nodes.residual.fc, r); /* r += R f_C/C */
+  RollerDenseMultAdd(n, c->nodes.residual.R, r, ci, r + n, r); /* r += R f_C/C */
   RollerContactResidualBranchesUpdate(c, r);
   PetscFunctionReturn(0);
 }
@@ -270,7 +268,6 @@ PetscErrorCode RollerContactResidualDestroy(RollerContact c)
   PetscFunctionBeginUser;
   PetscCall(PetscFree(c->nodes.residual.R));
   PetscCall(PetscFree(c->nodes.residual.wc));
-  PetscCall(PetscFree(c->nodes.residual.fc));
   PetscCall(PetscFree(c->nodes.residual.u0));
   PetscCall(PetscFree(c->nodes.residual.hist));
   for (PetscInt k = 0; k < c->nodes.residual.nslot; ++k) PetscCall(PetscFree(c->nodes.residual.slot[k]));

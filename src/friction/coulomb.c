@@ -178,7 +178,7 @@ PetscErrorCode RollerFrictionCoulombNewton(PetscInt m, const PetscReal G[], cons
     RollerFrictionRange(law, range);
     PetscCall(PetscMalloc1(2 * m, &kv));
   }
-  RollerDenseMultAdd(2 * m, G, d, x, cw.w);
+  RollerDenseMultAdd(2 * m, G, d, 1.0, x, cw.w);
   for (*its = 1; *its <= maxit; ++*its) {
     PetscReal phi0, ref = 0.0, alpha = 1.0;
 
@@ -186,7 +186,7 @@ PetscErrorCode RollerFrictionCoulombNewton(PetscInt m, const PetscReal G[], cons
     if (!States(m, G, mu, x, cw.w, &cw) && full && (!kv || (*its > 1 && dmu <= 1e-10 * range[1]))) {
       for (PetscInt a = 0; a < m; ++a)
         if (cw.state[a] == 2) x[m + a] = cw.sign[a] * mu[a] * x[a];
-      RollerDenseMultAdd(2 * m, G, d, x, cw.w);
+      RollerDenseMultAdd(2 * m, G, d, 1.0, x, cw.w);
       *converged = LawsHold(m, mu, x, cw.w, d, &cw);
       break;
     }
@@ -198,18 +198,18 @@ PetscErrorCode RollerFrictionCoulombNewton(PetscInt m, const PetscReal G[], cons
     PetscCall(PetscArraycpy(cw.x0, x, 2 * m));
     PetscCall(SolveStates(m, G, d, mu, *its > 1 ? kv : NULL, &cw, x));
     PetscCall(PetscArraycpy(cw.x1, x, 2 * m));
-    RollerDenseMultAdd(2 * m, G, d, x, cw.w);
+    RollerDenseMultAdd(2 * m, G, d, 1.0, x, cw.w);
     /* non-monotone Armijo backtracking against the largest of the last four merits (Grippo, Lampariello & Lucidi,
        SIAM J. Numer. Anal. 23, 1986: the active-set iteration's own full steps are kept while it makes progress
        over a few iterations); without a decrease in 10 halvings the full step */
     while (Merit(m, G, law, two_dt, mu, x, cw.w) > ref - 1e-4 * alpha * phi0 && alpha > 1e-3) {
       alpha *= 0.5;
       for (PetscInt a = 0; a < 2 * m; ++a) x[a] = cw.x0[a] + 0.5 * (x[a] - cw.x0[a]);
-      RollerDenseMultAdd(2 * m, G, d, x, cw.w);
+      RollerDenseMultAdd(2 * m, G, d, 1.0, x, cw.w);
     }
     if (alpha <= 1e-3) {
       PetscCall(PetscArraycpy(x, cw.x1, 2 * m));
-      RollerDenseMultAdd(2 * m, G, d, x, cw.w);
+      RollerDenseMultAdd(2 * m, G, d, 1.0, x, cw.w);
       alpha = 1.0;
     }
     full = (PetscBool)(alpha == 1.0);

@@ -1,9 +1,9 @@
 /* The small dense kernels of a step's contact and friction solves (coulomb.c, contact/contact_lcp.c: about 40
    unknowns, several times a step), the reference BLAS's arithmetic in the same order without its overhead.
 
-   w = d + G x (the slacks G x + d of Coulomb and the LCP, the reduced contact's residual R f_C): G's columns of the
-   nonzero entries of x added in their order, four a pass over w (each entry's sum in the order of one column at a
-   time); w may be d.
+   w = d + G (alpha x) (the slacks G x + d of Coulomb and the LCP, the reduced contact's residual r + R f_C/C): G's
+   columns of the nonzero entries of x, times alpha x_b, added in their order, four a pass over w (each entry's sum in
+   the order of one column at a time); w may be d.
 
    The LU factorization with partial pivoting of Coulomb's systems. Below LAPACK's block size (64) its dgetrf is the recursive dgetrf2
    (Toledo's algorithm: the left half of the columns factored, the row interchanges, a triangular solve and a matrix
@@ -109,7 +109,7 @@ PetscErrorCode RollerDenseLUFactor(PetscBLASInt n, PetscReal A[], PetscBLASInt p
   PetscFunctionReturn(0);
 }
 
-void RollerDenseMultAdd(PetscInt n, const PetscReal G[], const PetscReal d[], const PetscReal x[], PetscReal w[])
+void RollerDenseMultAdd(PetscInt n, const PetscReal G[], const PetscReal d[], PetscReal alpha, const PetscReal x[], PetscReal w[])
 {
   PetscInt b = 0;
 
@@ -122,7 +122,7 @@ void RollerDenseMultAdd(PetscInt n, const PetscReal G[], const PetscReal d[], co
     for (; b < n && nb < 4; ++b)
       if (x[b] != 0.0) {
         col[nb]  = G + (size_t)b * n;
-        xb[nb++] = x[b];
+        xb[nb++] = alpha * x[b];
       }
     if (nb == 4)
       for (PetscInt a = 0; a < n; ++a) {

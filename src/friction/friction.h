@@ -32,9 +32,9 @@ PETSC_INTERN PetscErrorCode RollerFrictionTableDestroy(RollerFrictionTable *);
 PETSC_INTERN PetscErrorCode RollerFrictionCoulombNewton(PetscInt, const PetscReal[], const PetscReal[], const RollerObstacle *, PetscReal, PetscReal[], PetscReal[], PetscInt, PetscInt *, PetscBool *);
 
 /* dense.c: LAPACK's dgetrf of an n x n column-major A (pivots 1-based; *info > 0: the first zero pivot), bit for bit, without
-   its reference implementation's overhead on small systems (below its block size 64; LAPACK's own from there); w = d + G x
+   its reference implementation's overhead on small systems (below its block size 64; LAPACK's own from there); w = d + G (alpha x)
    (G n x n, column-major; w may be d) over the nonzero entries of x, each entry's sum in the order of x's entries. */
 PETSC_INTERN PetscErrorCode RollerDenseLUFactor(PetscBLASInt, PetscReal[], PetscBLASInt[], PetscBLASInt *);
-PETSC_INTERN void           RollerDenseMultAdd(PetscInt, const PetscReal[], const PetscReal[], const PetscReal[], PetscReal[]);
+PETSC_INTERN void           RollerDenseMultAdd(PetscInt, const PetscReal[], const PetscReal[], PetscReal, const PetscReal[], PetscReal[]);
 
 #endif
