@@ -17,5 +17,6 @@ roller_test(rom_seeded rom_seeded.py LABELS long TIMEOUT 1800)
 # The agreement where the full model converges in the time step: the clamped Kelvin-Voigt printer at dt and dt/2 (its
 # friction force converged to 0.5 %, the reduced model's within 2 % at both), and on the issue's scene (where the full
 # model's friction force is not converged: docs/friction.md 5.4) the contact force, the ripple line and the reduced
-# model's own convergence and clean rolling at constant mu (about 7 min of CPU)
+# model's own convergence and clean rolling at constant mu; the issue's lines on that scene with -viscosity 3.2e-7
+# beside the branches, where the full model converges (about 12 min of CPU)
 roller_test(rom_printer_dt rom_printer_dt.py LABELS long TIMEOUT 3600)

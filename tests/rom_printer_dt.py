@@ -37,6 +37,14 @@ def csv_of(name, scene, dt, extra=()):
     return d
 
 
+def both_models(tag, scene, dt):
+    """The full and the reduced model (one basis for both steps) at dt and dt/2: ({k: full CSV}, {k: reduced CSV})."""
+    full = {k: csv_of(f"{tag}_full_{k}", scene, dt / k) for k in (1, 2)}
+    rom = {1: csv_of(f"{tag}_rom_1", scene, dt, ROM + ["-rom_output", f"{tag}_basis.h5"]),
+           2: csv_of(f"{tag}_rom_2", scene, dt / 2, ROM + ["-rom_input", f"{tag}_basis.h5"])}
+    return full, rom
+
+
 def step(k):
     return "dt" if k == 1 else f"dt/{k}"
 
@@ -46,9 +54,7 @@ def mean(d, col):
 
 
 # the clamped Kelvin-Voigt printer: a converged reference, and the reduced model against it at two steps
-full = {k: csv_of(f"kv_full_{k}", KV, DT / k) for k in (1, 2)}
-rom = {1: csv_of("kv_rom_1", KV, DT, ROM + ["-rom_output", "kv_basis.h5"]),
-       2: csv_of("kv_rom_2", KV, DT / 2, ROM + ["-rom_input", "kv_basis.h5"])}
+full, rom = both_models("kv", KV, DT)
 f1, f2 = mean(full[1], "friction_force"), mean(full[2], "friction_force")
 c.check(abs(f2 - f1) < 0.005 * abs(f1), f"Kelvin-Voigt printer, full model: mean friction force {f1:.5g} N/m at dt, {f2:.5g} at dt/2: converged to {100 * abs(f2 / f1 - 1):.3f} % (< 0.5 %)")
 for k in (1, 2):
@@ -77,9 +83,7 @@ for k in (1, 2):
     c.check(reversals < 0.5, f"printer at constant mu, reduced, {step(k)}: {reversals:.2f} reversals a ms (< 0.5: no flutter)")
 # the issue's scene with the Kelvin-Voigt term beside the branches: a converged reference, and the issue's lines on it
 HF = PRINTER + ["-viscosity", "3.2e-7"]
-hf = {k: csv_of(f"hf_full_{k}", HF, 5.63e-06 / k) for k in (1, 2)}
-hr = {1: csv_of("hf_rom_1", HF, 5.63e-06, ROM + ["-rom_output", "hf_basis.h5"]),
-      2: csv_of("hf_rom_2", HF, 5.63e-06 / 2, ROM + ["-rom_input", "hf_basis.h5"])}
+hf, hr = both_models("hf", HF, 5.63e-06)
 h1, h2 = mean(hf[1], "friction_force"), mean(hf[2], "friction_force")
 c.check(abs(h2 - h1) < 0.01 * abs(h1), f"printer with -viscosity 3.2e-7, full model: mean friction force {h1:.5g} N/m at dt, {h2:.5g} at dt/2: converged to {100 * abs(h2 / h1 - 1):.2f} % (< 1 %)")
 for k in (1, 2):
